@@ -1,0 +1,94 @@
+// The periodic-flight core: wing strips, rigid-wing inertia and tail assembled into the loads that
+// the wings and tail apply to the fuselage at P1 (structure.md 3.5, aero-mst.md 6.3, paper Eq. 2).
+//
+// Model vs data (style.md habit 1): FlightCoreModel is built once from a VehicleModel and never
+// changed; FlightCoreData is the per-thread workspace, sized once. evaluateLoads() does not
+// allocate.
+#pragma once
+
+#include <vector>
+
+#include "core/aero/mst_strip.hpp"
+#include "core/dynamics/flapping.hpp"
+#include "core/model/frames.hpp"
+#include "core/model/vehicle_model.hpp"
+#include "core/model/wing_geometry.hpp"
+#include "core/model/wing_inertia.hpp"
+
+namespace orni {
+
+/// Motion of the fuselage (B components). In tethered mode U, W, theta are held and Q = 0.
+struct BodyMotion {
+  Vec3 v_P1_B = Vec3::Zero();     ///< inertial velocity of P1 (U, 0, W)
+  Vec3 a_P1_B = Vec3::Zero();     ///< inertial acceleration of P1
+  double theta_rad = 0.0;         ///< pitch attitude (for the flight-path angle)
+  double Q_radps = 0.0;           ///< pitch rate
+  double Qdot_radps2 = 0.0;       ///< pitch acceleration
+};
+
+/// Loads on the fuselage about P1 at one instant, resolved in the flight-path frame:
+/// FV perpendicular to the flight velocity (up), FH along it (forward), M nose-up (paper Eq. 2).
+struct LoadSample {
+  double FV_N = 0, FH_N = 0, M_Nm = 0;              ///< total: wings (aero + inertial) + tail
+  double FV_wing_aero_N = 0, FH_wing_aero_N = 0, M_wing_aero_Nm = 0;
+  double FV_wing_inertial_N = 0, FH_wing_inertial_N = 0, M_wing_inertial_Nm = 0;
+  double FV_tail_N = 0, FH_tail_N = 0, M_tail_Nm = 0;
+  double power_aero_W = 0;    ///< aerodynamic input power of both wings (M19 generalised)
+  double power_hinge_W = 0;   ///< mechanical power at the two hinges (aero + wing inertia)
+  double separated_fraction = 0;  ///< area-weighted mean of (1 - f) over the strips
+  double tail_alpha_rad = 0;
+};
+
+/// Channels integrated as quadrature states for exact cycle means.
+constexpr int kQuadratureChannels = 5;  // FV, FH, M, power_aero, power_hinge
+
+struct FlightCoreModel {
+  VehicleModel vehicle;
+  std::vector<Strip> strips;
+  std::vector<aero::StripGeometry> strip_geometry;
+  aero::StripContext aero_context;
+  int aero_states_per_strip = 0;
+  WingMassBreakdown wing_mass;     ///< one wing
+  Vec3 p_P1P2_B = Vec3::Zero();    ///< hinge position
+  Vec3 p_P1P4_B = Vec3::Zero();    ///< tail aerodynamic centre
+  Vec3 e_c_W = Vec3::UnitX();      ///< chord direction TE->LE in W (incidence applied)
+  Vec3 n_W = -Vec3::UnitZ();       ///< upper-surface normal in W
+  double wing_area_both_m2 = 0.0;  ///< S of the pair (strip areas summed)
+  double mean_chord_m = 0.0;       ///< S / b
+
+  explicit FlightCoreModel(const VehicleModel& v);
+  int aeroStateCount() const {
+    return aero_states_per_strip * static_cast<int>(strips.size());
+  }
+};
+
+/// Per-thread workspace.
+struct FlightCoreData {
+  explicit FlightCoreData(const FlightCoreModel& model);
+  std::vector<double> separation_f;  ///< last f per strip (diagnostic)
+  std::vector<double> friction_cd;   ///< M11 Cd_f per strip at friction_speed_mps
+  double friction_speed_mps = -1.0;  ///< flight speed the friction cache belongs to
+};
+
+/// Everything that sets the operating condition besides the body motion.
+struct ControlInput {
+  double freq_hz = 0.0;
+  double tail_angle_rad = 0.0;
+};
+
+/// Loads on the fuselage at time t. `aero_states` holds FlightCoreModel::aeroStateCount() values;
+/// their derivatives go to `aero_state_derivatives` (null = not needed). Gravity is not included
+/// (a tared load cell; the free-flight equations add it). No allocation.
+void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const BodyMotion& body,
+                   const ControlInput& control, double t_s, const double* aero_states,
+                   double* aero_state_derivatives, LoadSample* out);
+
+/// Quasi-steady initial aero states at time t (aero-mst.md 9.3: no start-up transient).
+void initialAeroStates(const FlightCoreModel& model, const BodyMotion& body,
+                       const ControlInput& control, double t_s, double* aero_states);
+
+/// Body motion of the tethered (wind-tunnel / constrained) mode: level flight path at speed U with
+/// the body pitched by theta; U_B = U cos(theta), W_B = U sin(theta), Q = 0.
+BodyMotion tetheredBodyMotion(double speed_mps, double theta_rad);
+
+}  // namespace orni

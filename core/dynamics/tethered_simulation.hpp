@@ -1,0 +1,54 @@
+// Tethered (wind-tunnel / constrained-flight) simulation: the body is held at (theta, U), the
+// wings flap, and the constraint forces FV, FH and the moment about P1 are recorded, aerodynamic
+// plus inertial, as the paper's load cells measure them (paper section 2, Fig. 2; Fig. 9).
+//
+// Integrates the aerodynamic states (MST-TD lag and separation states) and five quadrature states
+// (the time integrals of FV, FH, M, aero power, hinge power) with ARKODE, cycle by cycle, and
+// detects the periodic steady state from the cycle-to-cycle change of the cycle means: the first
+// cycle from which on every channel's mean moves by less than steady_tol of its scale.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/simulation_options.hpp"
+
+namespace orni {
+
+struct CycleMeans {
+  double FV_N = 0, FH_N = 0, M_Nm = 0, power_aero_W = 0, power_hinge_W = 0;
+};
+
+/// Sampled time histories (uniform, SimulationOptions::samples_per_cycle per cycle).
+struct TimeHistory {
+  std::vector<double> t_s;
+  std::vector<double> delta_M_rad;
+  std::vector<LoadSample> loads;
+};
+
+enum class SimulationStatus { kOk, kNotConverged, kDiverged, kFailed };
+const char* toString(SimulationStatus s);
+
+struct SimulationSummary {
+  SimulationStatus status = SimulationStatus::kFailed;
+  std::string message;
+  int cycles_run = 0;
+  int steady_state_cycle = -1;   ///< first cycle whose means match the previous one (1-based)
+  double last_cycle_change = 0;  ///< scaled change of the last cycle means vs the one before
+  double last_state_change = 0;  ///< max change of the aero states over the last cycle
+  CycleMeans mean;               ///< means over the last simulated cycle
+  std::vector<CycleMeans> per_cycle;
+  long steps = 0;
+  long rhs_evaluations = 0;
+  long step_attempts = 0;
+
+  std::string BriefReport() const;
+};
+
+/// Run the tethered simulation at `point` (speed, frequency, theta, tail angle). `history` may be
+/// null (aero maps, trim); when given it receives the sampled histories of all cycles.
+SimulationSummary simulateTethered(const FlightCoreModel& model, const OperatingPoint& point,
+                                   const SimulationOptions& options, TimeHistory* history);
+
+}  // namespace orni

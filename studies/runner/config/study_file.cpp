@@ -1,0 +1,231 @@
+#include "studies/runner/config/study_file.hpp"
+
+#include <array>
+#include <limits>
+#include <memory>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include "core/model/frames.hpp"
+#include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+
+namespace orni::studies {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr std::array<std::pair<std::string_view, StudyKind>, 6> kKinds = {{
+    {"simulate", StudyKind::kSimulate},
+    {"modes", StudyKind::kModes},
+    {"aeromap", StudyKind::kAeromap},
+    {"trim", StudyKind::kTrim},
+    {"optimize", StudyKind::kOptimize},
+    {"sweep", StudyKind::kSweep},
+}};
+
+const std::vector<std::pair<std::string, FlightMode>> kModes = {{"tethered", FlightMode::kTethered},
+                                                                {"free", FlightMode::kFree}};
+
+std::vector<std::pair<std::string, StudyKind>> kindChoices() {
+  std::vector<std::pair<std::string, StudyKind>> c;
+  for (const auto& k : kKinds) c.emplace_back(std::string(k.first), k.second);
+  return c;
+}
+
+bool isRunNameChar(char c) {
+  return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_' ||
+         c == '-' || c == '.';
+}
+
+bool validRunName(const std::string& name) {
+  if (name.empty() || name[0] == '.') return false;
+  for (const char c : name)
+    if (!isRunNameChar(c)) return false;
+  return true;
+}
+
+/// The file stem as a valid run name (invalid characters become '_').
+std::string runNameFromStem(const fs::path& file) {
+  std::string name = file.stem().string();
+  for (char& c : name)
+    if (!isRunNameChar(c)) c = '_';
+  if (name.empty() || name[0] == '.') name = "run" + name;
+  return name;
+}
+
+/// Merges `from` into `into`: tables are merged key by key, everything else is replaced. Nodes are
+/// moved, so they keep their source (file and line) for messages.
+void mergeOverride(toml::table& into, toml::table& from) {
+  for (auto&& [key, node] : from) {
+    const std::string k(key.str());
+    toml::table* from_table = node.as_table();
+    toml::node* target = into.get(k);
+    if (from_table && target && target->is_table()) {
+      mergeOverride(*target->as_table(), *from_table);
+    } else {
+      into.insert_or_assign(k, std::move(node));
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view toString(StudyKind kind) {
+  for (const auto& k : kKinds)
+    if (k.second == kind) return k.first;
+  return "simulate";
+}
+
+std::optional<StudyKind> parseStudyKind(std::string_view text) {
+  for (const auto& k : kKinds)
+    if (k.first == text) return k.second;
+  return std::nullopt;
+}
+
+Study loadStudyFile(const fs::path& study_file) {
+  toml::table root = parseTomlFile(study_file);
+  const std::string study_name = displayPath(study_file);
+  auto study_ctx = std::make_shared<ReadContext>();
+  study_ctx->file = study_name;
+
+  TableReader top(root, std::string(), study_ctx,
+                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate"});
+  Study study;
+  study.study_path = study_file;
+  study.kind = top.requiredEnum("kind", kindChoices());
+  study.name = top.optionalString("name", runNameFromStem(study_file));
+  if (!validRunName(study.name))
+    throw top.valueError("name",
+                         "a run name of letters, digits, '_', '-' and '.' not starting with '.'",
+                         describeNode(*root.get("name")));
+
+  // The vehicle: a path relative to the study's folder, or an inline table.
+  toml::table vehicle_table;
+  ReadContext vehicle_ctx;
+  std::string vehicle_root_path;
+  const std::string vehicle_expected =
+      "a vehicle file path relative to the study's folder, or a [vehicle] table";
+  const toml::node* vehicle_node = top.take("vehicle");
+  const toml::node* source_node = top.take("vehicle_source");
+  if (!vehicle_node) throw top.missingError("vehicle", vehicle_expected);
+  if (const auto* s = vehicle_node->as_string()) {
+    if (source_node)
+      throw InputError::unknownKey(top.fileOf("vehicle_source"), top.lineOf("vehicle_source"),
+                                   "vehicle_source", "only allowed with an inline [vehicle] table");
+    const fs::path given = s->get();
+    const fs::path resolved = study_file.parent_path() / given;
+    std::error_code ec;
+    if (given.empty() || !fs::is_regular_file(resolved, ec))
+      throw top.valueError("vehicle",
+                           "the path of an existing vehicle file, relative to the study's folder",
+                           describeNode(*vehicle_node) + " (no file " +
+                               TomlWriter::stringText(displayPath(resolved)) + ")");
+    vehicle_table = parseTomlFile(resolved);
+    vehicle_ctx.file = displayPath(resolved);
+    vehicle_ctx.foreign_file = study_name;
+    vehicle_ctx.foreign_prefix = "override.";
+    study.vehicle_path = given;
+  } else if (toml::table* t = root.get("vehicle")->as_table()) {
+    vehicle_table = std::move(*t);
+    vehicle_ctx.file = study_name;
+    vehicle_root_path = "vehicle";
+    if (source_node) study.vehicle_path = top.requiredString("vehicle_source");
+  } else {
+    throw top.valueError("vehicle", vehicle_expected, describeNode(*vehicle_node));
+  }
+
+  if (const toml::node* o = top.take("override")) {
+    toml::table* ot = root.get("override")->as_table();
+    if (!ot)
+      throw top.valueError("override", "a table [override] of vehicle keys", describeNode(*o));
+    mergeOverride(vehicle_table, *ot);
+  }
+  study.vehicle = parseVehicleTable(vehicle_table, vehicle_ctx, vehicle_root_path);
+  study.point = study.vehicle.operating_point;
+
+  if (top.has("simulate") && study.kind != StudyKind::kSimulate)
+    throw InputError::unknownKey(top.fileOf("simulate"), top.lineOf("simulate"), "simulate",
+                                 "[simulate] is only allowed in a study of kind \"simulate\", "
+                                 "this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (std::optional<TableReader> sim = top.optionalTable(
+          "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
+                       "rel_tol", "abs_tol", "steady_tol", "samples_per_cycle"})) {
+    SimulationOptions& o = study.simulate;
+    OperatingPoint& p = study.point;
+    constexpr int kIntMin = std::numeric_limits<int>::min();
+    constexpr int kIntMax = std::numeric_limits<int>::max();
+    o.mode = sim->optionalEnum("mode", o.mode, kModes);
+    p.speed_mps = sim->optionalDouble("speed_mps", p.speed_mps, Range::positive());
+    p.freq_hz = sim->optionalDouble("freq_hz", p.freq_hz, Range::openClosed(0.0, 200.0));
+    if (auto d = sim->maybeDouble("theta_deg", Range::open(-90.0, 90.0)))
+      p.theta_rad = *d * orni::kDegToRad;
+    if (auto d = sim->maybeDouble("tail_angle_deg", Range::open(-90.0, 90.0)))
+      p.tail_angle_rad = *d * orni::kDegToRad;
+    o.cycles = sim->optionalInt("cycles", o.cycles, kIntMin, kIntMax);
+    o.rel_tol = sim->optionalDouble("rel_tol", o.rel_tol, Range::any());
+    o.abs_tol = sim->optionalDouble("abs_tol", o.abs_tol, Range::any());
+    o.steady_tol = sim->optionalDouble("steady_tol", o.steady_tol, Range::any());
+    o.samples_per_cycle =
+        sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
+    std::string why;
+    if (!o.IsValid(&why)) {
+      // IsValid says "<field> must be <condition>"; the fields are named like the keys.
+      const std::size_t space = why.find(' ');
+      const std::string key = why.substr(0, space);
+      const std::string must = " must be ";
+      std::string expected = why;
+      if (why.compare(space, must.size(), must) == 0)
+        expected = "a value " + why.substr(space + must.size());
+      const toml::node* n = sim->table().get(key);
+      throw sim->valueError(key, expected, n ? describeNode(*n) : std::string("the default"));
+    }
+    sim->finish();
+  }
+  top.finish();
+  return study;
+}
+
+Study studyFromVehicle(const fs::path& vehicle_file) {
+  Study study;
+  study.kind = StudyKind::kSimulate;
+  study.vehicle = loadVehicleFile(vehicle_file);
+  study.name = runNameFromStem(vehicle_file);
+  study.vehicle_path = vehicle_file;
+  study.point = study.vehicle.operating_point;
+  return study;
+}
+
+std::string resolvedStudyToml(const Study& study) {
+  TomlWriter out;
+  out.comment("Resolved study: every default filled in; units in the key suffixes.");
+  out.comment(
+      "The vehicle below includes the study's overrides; `ornithopter run` accepts this file.");
+  out.string("kind", toString(study.kind));
+  out.string("name", study.name);
+  if (!study.vehicle_path.empty())
+    out.string("vehicle_source", study.vehicle_path.generic_string(),
+               "the vehicle file as given; its resolved content is [vehicle]");
+  if (study.kind == StudyKind::kSimulate) {
+    const SimulationOptions& o = study.simulate;
+    const OperatingPoint& p = study.point;
+    out.header({"simulate"});
+    out.string("mode", o.mode == FlightMode::kFree ? "free" : "tethered");
+    out.number("speed_mps", p.speed_mps);
+    out.number("freq_hz", p.freq_hz);
+    out.scaled("theta_deg", p.theta_rad, orni::kDegToRad);
+    out.scaled("tail_angle_deg", p.tail_angle_rad, orni::kDegToRad);
+    out.integer("cycles", o.cycles);
+    out.number("rel_tol", o.rel_tol);
+    out.number("abs_tol", o.abs_tol);
+    out.number("steady_tol", o.steady_tol);
+    out.integer("samples_per_cycle", o.samples_per_cycle);
+  }
+  writeVehicleToml(study.vehicle, out, {"vehicle"});
+  return out.str();
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,165 @@
+// ornithopter: the command-line front end (architecture.md 3). Only main catches everything and
+// maps it to the exit code: 0 finished (whatever the physics verdict), 1 failed, 2 bad input.
+#include <CLI/CLI.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/frames.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/commands/simulate_command.hpp"
+#include "studies/runner/config/input_error.hpp"
+#include "studies/runner/config/study_file.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+
+namespace fs = std::filesystem;
+using namespace orni;
+using namespace orni::studies;
+
+namespace {
+
+constexpr int kExitOk = 0;
+constexpr int kExitFailed = 1;
+constexpr int kExitBadInput = 2;
+
+// A bad command-line value: reported like a file error, with "command line" as the file.
+struct CliError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+void requireRange(const char* flag, double v, double lo, double hi, bool lo_open,
+                  const char* expected) {
+  const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v < hi;
+  if (!ok)
+    throw CliError(std::string("command line: option ") + flag + ": expected " + expected +
+                   ", got " + std::to_string(v));
+}
+
+fs::path outputFolder(const std::string& out_opt, const Study& study, bool several) {
+  if (out_opt.empty()) return fs::path("results") / study.name;
+  return several ? fs::path(out_opt) / study.name : fs::path(out_opt);
+}
+
+int runStudy(const Study& study, const fs::path& out_dir) {
+  switch (study.kind) {
+    case StudyKind::kSimulate:
+      return runSimulateStudy(study, out_dir);
+    default:
+      std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
+                << toString(study.kind)
+                << "' is not available in this version yet (see the open issues)\n";
+      return kExitFailed;
+  }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"ornithopter: flexible flapping-wing flight simulation, aero maps, trim and design"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ornithopter " + versionString());
+
+  // simulate
+  auto* sim = app.add_subcommand("simulate", "Simulate a vehicle file (tethered or free flight)");
+  std::string sim_vehicle, sim_mode, sim_out;
+  std::optional<double> sim_speed, sim_freq, sim_theta, sim_tail;
+  std::optional<int> sim_cycles;
+  sim->add_option("VEHICLE", sim_vehicle, "Vehicle file (TOML)")->required();
+  sim->add_option("--mode", sim_mode, "tethered | free (default tethered)")
+      ->check(CLI::IsMember({"tethered", "free"}));
+  sim->add_option("--speed", sim_speed, "Flight / tunnel speed U (m/s)");
+  sim->add_option("--freq", sim_freq, "Flapping frequency f (Hz)");
+  sim->add_option("--theta", sim_theta, "Mean pitch attitude (deg)");
+  sim->add_option("--tail", sim_tail, "Tail elevation angle delta_T (deg)");
+  sim->add_option("--cycles", sim_cycles, "Flapping cycles to simulate");
+  sim->add_option("-o,--output", sim_out, "Output folder (default results/<vehicle name>)");
+
+  // run
+  auto* run = app.add_subcommand("run", "Run one or more study files (kind given inside)");
+  std::vector<std::string> run_files;
+  std::string run_out;
+  int run_jobs = 1;
+  run->add_option("STUDY", run_files, "Study files (TOML)")->required();
+  run->add_option("-o,--output", run_out, "Output folder (default results/<study name>)");
+  run->add_option("-j,--jobs", run_jobs, "Worker threads")->check(CLI::Range(1, 1024));
+
+  // plot
+  auto* plot = app.add_subcommand("plot", "(Re)draw the figures of a finished run");
+  std::string plot_dir;
+  plot->add_option("RUN_DIR", plot_dir, "Run output folder")->required();
+
+  // Later issues: listed so that --help shows the whole contract.
+  for (const char* name : {"modes", "aeromap", "trim", "optimize"}) {
+    auto* c = app.add_subcommand(name, std::string(name) + " (not available in this version)");
+    c->allow_extras();
+  }
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? kExitOk : kExitBadInput;
+  }
+
+  try {
+    if (sim->parsed()) {
+      Study study = studyFromVehicle(sim_vehicle);
+      if (!sim_mode.empty())
+        study.simulate.mode = sim_mode == "free" ? FlightMode::kFree : FlightMode::kTethered;
+      if (sim_speed) {
+        requireRange("--speed", *sim_speed, 0.0, 1e3, true, "a speed in m/s > 0");
+        study.point.speed_mps = *sim_speed;
+      }
+      if (sim_freq) {
+        requireRange("--freq", *sim_freq, 0.0, 200.0, true, "a frequency in Hz in (0, 200]");
+        study.point.freq_hz = *sim_freq;
+      }
+      if (sim_theta) {
+        requireRange("--theta", *sim_theta, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
+        study.point.theta_rad = *sim_theta * kDegToRad;
+      }
+      if (sim_tail) {
+        requireRange("--tail", *sim_tail, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
+        study.point.tail_angle_rad = *sim_tail * kDegToRad;
+      }
+      if (sim_cycles) {
+        requireRange("--cycles", *sim_cycles, 1.0, 100001.0, false,
+                     "a whole number of cycles in [1, 100000]");
+        study.simulate.cycles = *sim_cycles;
+      }
+      return runStudy(study, outputFolder(sim_out, study, false));
+    }
+    if (run->parsed()) {
+      // Load (and validate) every study first, so a typo in the last one fails before any work.
+      std::vector<Study> studies;
+      for (const std::string& f : run_files) studies.push_back(loadStudyFile(f));
+      int rc = kExitOk;
+      for (const Study& s : studies) {
+        const int r = runStudy(s, outputFolder(run_out, s, studies.size() > 1));
+        if (r != kExitOk) rc = r;
+      }
+      return rc;
+    }
+    if (plot->parsed()) {
+      const int n = redrawFigures(plot_dir);
+      std::cout << "redrew " << n << " figure(s) in " << plot_dir << "\n";
+      return kExitOk;
+    }
+    std::cerr << "ornithopter: " << app.get_subcommands().front()->get_name()
+              << " is not available in this version yet (see the open issues)\n";
+    return kExitFailed;
+  } catch (const InputError& e) {
+    std::cerr << "ornithopter: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const CliError& e) {
+    std::cerr << "ornithopter: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const std::exception& e) {
+    std::cerr << "ornithopter: failed: " << e.what() << "\n";
+    return kExitFailed;
+  }
+}

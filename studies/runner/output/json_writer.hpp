@@ -1,0 +1,29 @@
+// A small ordered JSON builder for summary.json (deterministic key order and number text).
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace orni::studies {
+
+class JsonObject {
+ public:
+  JsonObject& set(const std::string& key, double value);
+  JsonObject& set(const std::string& key, int value);
+  JsonObject& set(const std::string& key, long value);
+  JsonObject& set(const std::string& key, bool value);
+  JsonObject& set(const std::string& key, const std::string& value);
+  JsonObject& set(const std::string& key, const char* value);
+  JsonObject& set(const std::string& key, const JsonObject& value);
+  JsonObject& set(const std::string& key, const std::vector<double>& values);
+  /// Pretty text with two-space indentation. Non-finite numbers are written as null (never NaN).
+  std::string toString(int indent = 0) const;
+
+ private:
+  std::vector<std::pair<std::string, std::string>> items_;  // key, already-encoded value
+};
+
+std::string jsonEscape(const std::string& s);
+
+}  // namespace orni::studies

@@ -1,0 +1,277 @@
+// Study files: kinds, [simulate], [override] merging (errors point at the study file), the study
+// behind `ornithopter simulate VEHICLE.toml`, and the resolved study round trip.
+#include <gtest/gtest.h>
+#include <toml++/toml.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/model/frames.hpp"
+#include "studies/runner/config/input_error.hpp"
+#include "studies/runner/config/study_file.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+
+namespace orni::studies {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path repo() { return fs::path(ORNI_SOURCE_DIR); }
+fs::path vehiclePath(const std::string& name) { return repo() / "studies" / "vehicles" / name; }
+
+/// A scratch folder per test, removed afterwards.
+class ConfigStudyFile : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / (std::string("orni_config_") + info->name());
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  /// Writes a study into the scratch folder; `vehicle` is inserted as an absolute path.
+  fs::path writeStudy(const std::string& name, const std::string& text) const {
+    const fs::path file = dir_ / name;
+    std::ofstream out(file);
+    out << text;
+    return file;
+  }
+  static std::string efw() { return vehiclePath("efw_magpie.toml").generic_string(); }
+
+  fs::path dir_;
+};
+
+TEST_F(ConfigStudyFile, KindNames) {
+  for (StudyKind k : {StudyKind::kSimulate, StudyKind::kModes, StudyKind::kAeromap,
+                      StudyKind::kTrim, StudyKind::kOptimize, StudyKind::kSweep}) {
+    const auto parsed = parseStudyKind(toString(k));
+    ASSERT_TRUE(parsed.has_value());
+    EXPECT_EQ(*parsed, k);
+  }
+  EXPECT_EQ(toString(StudyKind::kAeromap), "aeromap");
+  EXPECT_FALSE(parseStudyKind("simulation").has_value());
+}
+
+TEST_F(ConfigStudyFile, LoadsExampleStudy) {
+  const Study s = loadStudyFile(repo() / "studies" / "examples" / "rfw_theta20.toml");
+  EXPECT_EQ(s.kind, StudyKind::kSimulate);
+  EXPECT_EQ(s.name, "rfw_theta20");
+  EXPECT_EQ(s.vehicle_path, fs::path("../vehicles/rfw_tunnel.toml"));
+  EXPECT_EQ(s.vehicle.name, "rfw_tunnel");
+  EXPECT_DOUBLE_EQ(s.vehicle.aero.stall_width_rad, 2.0 * kDegToRad);
+  EXPECT_EQ(s.simulate.mode, FlightMode::kTethered);
+  EXPECT_EQ(s.simulate.cycles, 10);
+  EXPECT_DOUBLE_EQ(s.point.theta_rad, 20.0 * kDegToRad);
+  EXPECT_DOUBLE_EQ(s.point.speed_mps, 6.0);  // from the vehicle's operating point
+  EXPECT_DOUBLE_EQ(s.point.freq_hz, 4.0);
+  EXPECT_DOUBLE_EQ(s.vehicle.operating_point.theta_rad, 0.0);  // the vehicle is not changed
+}
+
+TEST_F(ConfigStudyFile, LoadsPaperStudies) {
+  const Study a = loadStudyFile(repo() / "studies" / "paper" / "fig2_rfw_theta0.toml");
+  const Study b = loadStudyFile(repo() / "studies" / "paper" / "fig2_rfw_theta20.toml");
+  EXPECT_EQ(a.name, "fig2_rfw_theta0");
+  EXPECT_DOUBLE_EQ(a.point.theta_rad, 0.0);
+  EXPECT_DOUBLE_EQ(b.point.theta_rad, 20.0 * kDegToRad);
+  for (const Study* s : {&a, &b}) {
+    EXPECT_DOUBLE_EQ(s->point.speed_mps, 6.0);
+    EXPECT_DOUBLE_EQ(s->point.freq_hz, 4.0);
+    EXPECT_EQ(s->simulate.cycles, 10);
+    EXPECT_EQ(s->simulate.mode, FlightMode::kTethered);
+  }
+}
+
+TEST_F(ConfigStudyFile, DefaultsAndNameFromStem) {
+  const fs::path f = writeStudy("my_trim.toml", "kind = \"trim\"\nvehicle = \"" + efw() + "\"\n");
+  const Study s = loadStudyFile(f);
+  EXPECT_EQ(s.kind, StudyKind::kTrim);
+  EXPECT_EQ(s.name, "my_trim");
+  EXPECT_EQ(s.point.theta_rad, s.vehicle.operating_point.theta_rad);
+  EXPECT_EQ(s.simulate.cycles, SimulationOptions{}.cycles);
+}
+
+TEST_F(ConfigStudyFile, OverridesApply) {
+  const fs::path f = writeStudy("ovr.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + R"("
+
+[override]
+tail.arm_m = 0.2
+aero.model = "delaurier1993"
+
+[override.wing]
+semispan_m = 0.3
+members = [{ name = "SPAR", material = "LE1", diameter_m = 0.002, start_xy_m = [0.0, 0.0], end_xy_m = [0.0, 0.3] }]
+
+[override.materials.NEW]
+youngs_modulus_gpa = 1.0
+poisson_ratio = 0.3
+density_kgpm3 = 900.0
+
+[simulate]
+mode = "free"
+speed_mps = 10
+cycles = 20
+rel_tol = 1e-7
+)");
+  const Study s = loadStudyFile(f);
+  const VehicleModel base = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  EXPECT_DOUBLE_EQ(s.vehicle.tail.arm_m, 0.2);
+  EXPECT_DOUBLE_EQ(s.vehicle.tail.area_m2, base.tail.area_m2);  // siblings kept
+  EXPECT_EQ(s.vehicle.aero.model, AeroModelKind::kDeLaurier1993);
+  EXPECT_DOUBLE_EQ(s.vehicle.aero.aspect_ratio, 5.58);
+  EXPECT_DOUBLE_EQ(s.vehicle.wing.semispan_m, 0.3);
+  EXPECT_DOUBLE_EQ(s.vehicle.wing.root_chord_m, 0.104);
+  ASSERT_EQ(s.vehicle.wing.members.size(), 1u);  // arrays are replaced
+  EXPECT_EQ(s.vehicle.wing.members[0].name, "SPAR");
+  EXPECT_EQ(s.vehicle.materials.size(), 5u);
+  EXPECT_DOUBLE_EQ(s.vehicle.findMaterial("NEW")->youngs_modulus_pa, 1e9);
+  EXPECT_EQ(s.simulate.mode, FlightMode::kFree);
+  EXPECT_EQ(s.simulate.cycles, 20);
+  EXPECT_DOUBLE_EQ(s.simulate.rel_tol, 1e-7);
+  EXPECT_DOUBLE_EQ(s.point.speed_mps, 10.0);
+  EXPECT_DOUBLE_EQ(s.point.freq_hz, 12.0);
+  EXPECT_DOUBLE_EQ(s.point.tail_angle_rad, 11.85 * kDegToRad);
+}
+
+InputError errorOfStudy(const fs::path& f) {
+  try {
+    (void)loadStudyFile(f);
+  } catch (const InputError& e) {
+    return e;
+  }
+  ADD_FAILURE() << f << " was accepted";
+  return InputError("", 0, "", "");
+}
+
+TEST_F(ConfigStudyFile, OverrideErrorsPointAtTheStudy) {
+  const fs::path f = writeStudy("bad_ovr.toml", "kind = \"simulate\"\nvehicle = \"" + efw() +
+                                                    "\"\n\n[override]\ntail.arm_m = -0.1\n");
+  const InputError e = errorOfStudy(f);
+  EXPECT_EQ(e.file(), f.string());
+  EXPECT_EQ(e.line(), 5);
+  EXPECT_EQ(e.key(), "override.tail.arm_m");
+  EXPECT_EQ(std::string(e.what()),
+            f.string() + ":5: key 'override.tail.arm_m': expected a number > 0, got -0.1");
+
+  const fs::path g = writeStudy("typo_ovr.toml", "kind = \"simulate\"\nvehicle = \"" + efw() +
+                                                     "\"\n[override.tail]\narm_mm = 0.1\n");
+  const InputError e2 = errorOfStudy(g);
+  EXPECT_EQ(e2.line(), 4);
+  EXPECT_EQ(std::string(e2.what()),
+            g.string() + ":4: unknown key 'override.tail.arm_mm' (did you mean 'arm_m'?)");
+}
+
+TEST_F(ConfigStudyFile, ErrorsInTheVehicleNameTheVehicle) {
+  // A fault in the vehicle file itself (vehicle path relative to the study) names the vehicle.
+  const fs::path bad_vehicle = dir_ / "v.toml";
+  {
+    std::ofstream out(bad_vehicle);
+    std::ifstream in(vehiclePath("efw_magpie.toml"));
+    out << in.rdbuf();
+    out << "\n[fuselage]\nlength_m = 0.18\n";
+  }
+  const fs::path f = writeStudy("s.toml", "kind = \"simulate\"\nvehicle = \"v.toml\"\n");
+  const InputError e = errorOfStudy(f);
+  EXPECT_EQ(fs::path(e.file()).filename(), "v.toml");
+  EXPECT_EQ(e.key(), "fuselage");
+}
+
+TEST_F(ConfigStudyFile, SimulateSectionRules) {
+  const fs::path a = writeStudy(
+      "a.toml", "kind = \"aeromap\"\nvehicle = \"" + efw() + "\"\n[simulate]\ncycles = 3\n");
+  const InputError ea = errorOfStudy(a);
+  EXPECT_EQ(ea.key(), "simulate");
+  EXPECT_EQ(ea.line(), 3);
+
+  const fs::path b = writeStudy("b.toml", "kind = \"simulate\"\nvehicle = \"" + efw() +
+                                              "\"\n[simulate]\nsamples_per_cycle = 4\n");
+  const InputError eb = errorOfStudy(b);
+  EXPECT_EQ(eb.key(), "simulate.samples_per_cycle");
+  EXPECT_EQ(std::string(eb.what()),
+            b.string() +
+                ":4: key 'simulate.samples_per_cycle': expected a value in [8, 100000], "
+                "got an integer 4");
+
+  const fs::path c = writeStudy(
+      "c.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n[simulate]\nrel_tol = 0.5\n");
+  EXPECT_EQ(errorOfStudy(c).key(), "simulate.rel_tol");
+
+  const fs::path d =
+      writeStudy("d.toml", "kind = \"simulate\"\nname = \"a/b\"\nvehicle = \"" + efw() + "\"\n");
+  EXPECT_EQ(errorOfStudy(d).key(), "name");
+}
+
+TEST_F(ConfigStudyFile, StudyFromVehicle) {
+  const Study s = studyFromVehicle(vehiclePath("efw_magpie.toml"));
+  EXPECT_EQ(s.kind, StudyKind::kSimulate);
+  EXPECT_EQ(s.name, "efw_magpie");
+  EXPECT_EQ(s.vehicle.name, "efw_magpie");
+  EXPECT_EQ(s.point.freq_hz, 12.0);
+  EXPECT_EQ(s.point.tail_angle_rad, s.vehicle.operating_point.tail_angle_rad);
+  EXPECT_EQ(s.simulate.cycles, SimulationOptions{}.cycles);
+  EXPECT_EQ(s.vehicle_path, vehiclePath("efw_magpie.toml"));
+}
+
+void expectSameStudy(const Study& a, const Study& b) {
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.vehicle_path, b.vehicle_path);
+  EXPECT_EQ(vehicleToToml(a.vehicle), vehicleToToml(b.vehicle));  // exact (writer test)
+  EXPECT_EQ(a.point.speed_mps, b.point.speed_mps);
+  EXPECT_EQ(a.point.freq_hz, b.point.freq_hz);
+  EXPECT_EQ(a.point.theta_rad, b.point.theta_rad);
+  EXPECT_EQ(a.point.tail_angle_rad, b.point.tail_angle_rad);
+  EXPECT_EQ(a.simulate.mode, b.simulate.mode);
+  EXPECT_EQ(a.simulate.cycles, b.simulate.cycles);
+  EXPECT_EQ(a.simulate.rel_tol, b.simulate.rel_tol);
+  EXPECT_EQ(a.simulate.abs_tol, b.simulate.abs_tol);
+  EXPECT_EQ(a.simulate.steady_tol, b.simulate.steady_tol);
+  EXPECT_EQ(a.simulate.samples_per_cycle, b.simulate.samples_per_cycle);
+}
+
+TEST_F(ConfigStudyFile, ResolvedStudyRoundTrips) {
+  const fs::path ovr = writeStudy("ovr.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + R"("
+[override]
+tail.arm_m = 0.14
+[simulate]
+mode = "free"
+theta_deg = 8.7
+steady_tol = 3e-5
+)");
+  const fs::path trim = writeStudy("t.toml", "kind = \"trim\"\nvehicle = \"" + efw() + "\"\n");
+  for (const fs::path& file : {repo() / "studies" / "examples" / "rfw_theta20.toml", ovr, trim}) {
+    SCOPED_TRACE(file.string());
+    const Study s = loadStudyFile(file);
+    const std::string text = resolvedStudyToml(s);
+
+    // The [vehicle] part alone reproduces the vehicle through parseVehicleTable.
+    const toml::table doc = toml::parse(std::string_view(text), std::string("resolved.toml"));
+    ASSERT_NE(doc.get_as<toml::table>("vehicle"), nullptr);
+    const VehicleModel v = parseVehicleTable(*doc.get_as<toml::table>("vehicle"), "resolved.toml");
+    EXPECT_EQ(vehicleToToml(v), vehicleToToml(s.vehicle));
+    EXPECT_EQ(v.tail.arm_m, s.vehicle.tail.arm_m);
+
+    // The whole document is itself a study that loads into the same Study.
+    const fs::path again = writeStudy("study.resolved.toml", text);
+    const Study back = loadStudyFile(again);
+    expectSameStudy(s, back);
+    EXPECT_EQ(resolvedStudyToml(back), text);
+  }
+}
+
+TEST_F(ConfigStudyFile, ResolvedStudyContents) {
+  const Study s = loadStudyFile(repo() / "studies" / "examples" / "rfw_theta20.toml");
+  const std::string text = resolvedStudyToml(s);
+  for (const char* expected :
+       {"kind = \"simulate\"\n", "name = \"rfw_theta20\"\n",
+        "vehicle_source = \"../vehicles/rfw_tunnel.toml\"", "[simulate]\n", "mode = \"tethered\"\n",
+        "theta_deg = 20.0\n", "cycles = 10\n", "samples_per_cycle = 100\n", "[vehicle]\n",
+        "[vehicle.wing]\n", "[[vehicle.wing.members]]\n", "[vehicle.materials.CFRP]\n",
+        "youngs_modulus_gpa = 135.0\n", "amplitude_deg = 33.06\n", "[vehicle.operating_point]\n"})
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+  EXPECT_EQ(text.find("[vehicle.body]"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace orni::studies
