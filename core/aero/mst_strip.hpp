@@ -90,10 +90,10 @@ struct SectionLoads {
   double dN_c2_N = 0.0;     ///< normal force acting at mid-chord (apparent mass + separated)
   double dFx_N = 0.0;       ///< chordwise force, + towards the LE, on the chord line
   double dM_couple_Nm = 0.0;  ///< pure couples dMac + dMa (nose-up +)
-  double dP_W = 0.0;        ///< aerodynamic input power (M19; positive = power into the air)
-                            ///< DeLaurier: M19 (flapping power, freestream excluded). MST-TD:
-                            ///< -(F.(v_P - v_air) + M_P.w_s), the power relative to the air,
-                            ///< = M19 - U*thrust for a steady freestream U.
+  double dP_W = 0.0;        ///< aerodynamic input power (positive = power into the air).
+                            ///< DeLaurier mode: M19 (flapping power, freestream excluded).
+                            ///< MST-TD: -(F.(v_P - v_air) + M_P.w_s), power relative to the
+                            ///< air, = M19 - U*thrust for a steady freestream U.
   // Diagnostics.
   double alpha_eff_rad = 0.0;  ///< effective (lagged) angle alpha' + thetabar or alpha'_t
   double alpha_le_rad = 0.0;   ///< stall-criterion angle at the LE (M14 / alpha_crit)

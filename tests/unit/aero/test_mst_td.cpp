@@ -412,6 +412,30 @@ TEST(AeroMstTd, ReversedFlowGivesFiniteOutputs) {
   EXPECT_GT(l.dFx_N, 0.0);
 }
 
+TEST(AeroMstTd, CachedFrictionCoefficientGivesSameLoads) {
+  AeroParameters params = hardSwitchParams();
+  params.skin_friction = true;
+  const StripContext ctx = makeContext(&params, 5.58);
+  StripGeometry g;
+  g.chord_m = 0.07;
+  g.width_m = 0.01;
+  PlanarKinematics p;
+  p.U = 7.0;
+  p.theta = p.thetabar = 0.1;
+  p.hdot = 1.0;
+  SectionKinematics s = toSection(p, 0.0);
+  const double states[2] = {0.05, 1.0};
+  const SectionLoads computed = evalMstTd(ctx, g, s, states, nullptr);
+  s.friction_coefficient = frictionCoefficient(7.0 * 0.07 / ctx.kinematic_viscosity_m2ps);
+  const SectionLoads cached = evalMstTd(ctx, g, s, states, nullptr);
+  EXPECT_EQ(cached.dFx_N, computed.dFx_N);
+  EXPECT_EQ(cached.dP_W, computed.dP_W);
+  AeroParameters no_friction = params;
+  no_friction.skin_friction = false;
+  const StripContext ctx_nf = makeContext(&no_friction, 5.58);
+  EXPECT_LT(computed.dFx_N, evalMstTd(ctx_nf, g, s, states, nullptr).dFx_N);  // friction drags
+}
+
 TEST(AeroMstTd, ZeroSpeedGivesFiniteStateDerivatives) {
   AeroParameters params = hardSwitchParams();
   params.stall_width_rad = 2.0 * kDeg;

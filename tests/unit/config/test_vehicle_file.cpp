@@ -172,8 +172,8 @@ TEST(ConfigVehicleFile, LoadsRfwTunnelWithDefaults) {
   const VehicleModel v = loadVehicleFile(vehiclePath("rfw_tunnel.toml"));
   EXPECT_EQ(v.name, "rfw_tunnel");
   EXPECT_EQ(v.wing.planform, Planform::kRectangular);
-  EXPECT_DOUBLE_EQ(v.wing.root_chord_m, 0.0968);
-  EXPECT_DOUBLE_EQ(v.wing.p3_aft_of_le_m, 0.5 * 0.0968);  // default
+  EXPECT_DOUBLE_EQ(v.wing.root_chord_m, 0.0967742);
+  EXPECT_DOUBLE_EQ(v.wing.p3_aft_of_le_m, 0.5 * 0.0967742);  // default
   EXPECT_EQ(v.wing.members.size(), 5u);
   EXPECT_DOUBLE_EQ(v.aero.aspect_ratio, 0.0);  // from the planform
   EXPECT_DOUBLE_EQ(v.aero.min_speed_mps, AeroParameters{}.min_speed_mps);

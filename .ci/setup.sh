@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Set up a fresh Debian 12 machine, build, and run: `bash .ci/setup.sh main` (the wind-tunnel
+# study of paper Fig. 2) or `bash .ci/setup.sh test` (every test). Idempotent: packages already
+# present are not reinstalled and the build folder is reused. Only Debian packages are downloaded.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+what="${1:-main}"
+jobs="$(nproc 2>/dev/null || echo 2)"
+build_dir="${ORNI_BUILD_DIR:-build}"
+werror="OFF"
+if [[ "${CI:-}" == "true" ]]; then werror="ON"; fi
+
+packages=(
+  build-essential cmake git pkg-config
+  libeigen3-dev libsundials-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libspectra-dev
+  libtomlplusplus-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
+)
+
+install_packages() {
+  local missing=()
+  for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if ((${#missing[@]} == 0)); then
+    echo "setup: all ${#packages[@]} Debian packages present"
+    return
+  fi
+  echo "setup: installing ${missing[*]}"
+  local sudo=""
+  if [[ "$(id -u)" != "0" ]]; then sudo="sudo"; fi
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"
+}
+
+build() {
+  cmake -S . -B "$build_dir" -DCMAKE_BUILD_TYPE=Release -DORNI_WARNINGS_AS_ERRORS="$werror" >/dev/null
+  cmake --build "$build_dir" -j "$jobs"
+}
+
+install_packages
+build
+case "$what" in
+  main)
+    # The wind-tunnel validation case of the paper (Fig. 2): RFW at theta 0 and 20 deg.
+    "$build_dir/studies/runner/ornithopter" run studies/paper/fig2_rfw_theta0.toml \
+      studies/paper/fig2_rfw_theta20.toml -o results/paper
+    echo "setup: figures and tables in results/paper/fig2_rfw_theta0 and results/paper/fig2_rfw_theta20"
+    ;;
+  test)
+    ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
+    ;;
+  *)
+    echo "usage: bash .ci/setup.sh [main|test]" >&2
+    exit 2
+    ;;
+esac
