@@ -33,7 +33,18 @@ FlightCoreModel::FlightCoreModel(const VehicleModel& v)
 }
 
 FlightCoreData::FlightCoreData(const FlightCoreModel& model)
-    : separation_f(model.strips.size(), 1.0), friction_cd(model.strips.size(), 0.0) {}
+    : separation_f(model.strips.size(), 1.0),
+      friction_cd(model.strips.size(), 0.0),
+      batch(static_cast<int>(model.strips.size())),
+      y_strip_m(static_cast<Eigen::Index>(model.strips.size())) {
+  for (std::size_t j = 0; j < model.strips.size(); ++j) {
+    const auto i = static_cast<Eigen::Index>(j);
+    batch.chord_m[i] = model.strip_geometry[j].chord_m;
+    batch.width_m[i] = model.strip_geometry[j].width_m;
+    batch.ref_aft_of_le_m[i] = model.strip_geometry[j].ref_aft_of_le_m;
+    y_strip_m[i] = model.strips[j].y_center_m;
+  }
+}
 
 BodyMotion tetheredBodyMotion(double speed_mps, double theta_rad) {
   BodyMotion b;
@@ -130,9 +141,11 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
   const Vec3 a_pitch_B = fr.e_c_B.cross(fr.n_B);
   if (flight_speed != data.friction_speed_mps) {  // M11 depends on U only: cache per speed
     data.friction_speed_mps = flight_speed;
-    for (std::size_t j = 0; j < model.strips.size(); ++j)
+    for (std::size_t j = 0; j < model.strips.size(); ++j) {
       data.friction_cd[j] = aero::frictionCoefficient(
           flight_speed * model.strip_geometry[j].chord_m / veh.air.kinematic_viscosity_m2ps);
+      data.batch.friction_coefficient[static_cast<Eigen::Index>(j)] = data.friction_cd[j];
+    }
   }
 
   // Rigid wing (structure level L0): every strip's leading-edge point is p_P1P2 + y e_span, so
@@ -170,31 +183,51 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
 
   Vec3 sum_F = Vec3::Zero(), sum_yF = Vec3::Zero(), sum_M_P = Vec3::Zero();
   double separated_area = 0.0, area = 0.0;
-  for (std::size_t j = 0; j < model.strips.size(); ++j) {
-    const aero::StripGeometry& g = model.strip_geometry[j];
-    const double y = model.strips[j].y_center_m;
-    aero::SectionLoads loads;
-    if (delaurier) {
-      pk.hdot = y * hdot1;
-      pk.hddot = y * hddot1;
-      loads = aero::evalDeLaurier1993(model.aero_context, g, pk);
-    } else {
-      k.v_P = v0 + y * v1;
-      k.a_P = a0 + y * a1;
-      k.friction_coefficient = data.friction_cd[j];
-      const std::size_t off = j * static_cast<std::size_t>(nstate);
-      loads = aero::evalMstTd(model.aero_context, g, k, aero_states + off,
-                              aero_state_derivatives ? aero_state_derivatives + off : nullptr);
+  if (!delaurier && aero::batchKernelApplies(veh.aero)) {
+    // Vectorised MST-TD over all strips (same equations as the scalar loop below).
+    aero::StripBatch& b = data.batch;
+    const Eigen::ArrayXd& y = data.y_strip_m;
+    b.ecx.setConstant(fr.e_c_B.x()); b.ecy.setConstant(fr.e_c_B.y()); b.ecz.setConstant(fr.e_c_B.z());
+    b.nx.setConstant(fr.n_B.x()); b.ny.setConstant(fr.n_B.y()); b.nz.setConstant(fr.n_B.z());
+    b.vx = v0.x() + y * v1.x(); b.vy = v0.y() + y * v1.y(); b.vz = v0.z() + y * v1.z();
+    b.ax = a0.x() + y * a1.x(); b.ay = a0.y() + y * a1.y(); b.az = a0.z() + y * a1.z();
+    b.wx.setConstant(fr.omega_B.x()); b.wy.setConstant(fr.omega_B.y()); b.wz.setConstant(fr.omega_B.z());
+    b.wdx.setConstant(fr.alpha_B.x()); b.wdy.setConstant(fr.alpha_B.y()); b.wdz.setConstant(fr.alpha_B.z());
+    b.airx.setZero(); b.airy.setZero(); b.airz.setZero();
+    aero::evalMstTdBatch(model.aero_context, b, aero_states, aero_state_derivatives);
+    sum_F = Vec3(b.Fx.sum(), b.Fy.sum(), b.Fz.sum());
+    sum_yF = Vec3((y * b.Fx).sum(), (y * b.Fy).sum(), (y * b.Fz).sum());
+    sum_M_P = Vec3(b.Mx.sum(), b.My.sum(), b.Mz.sum());
+    area = (b.chord_m * b.width_m).sum();
+    separated_area = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum();
+    Eigen::Map<Eigen::ArrayXd>(data.separation_f.data(), y.size()) = b.separation_f;
+  } else {
+    for (std::size_t j = 0; j < model.strips.size(); ++j) {
+      const aero::StripGeometry& g = model.strip_geometry[j];
+      const double y = model.strips[j].y_center_m;
+      aero::SectionLoads loads;
+      if (delaurier) {
+        pk.hdot = y * hdot1;
+        pk.hddot = y * hddot1;
+        loads = aero::evalDeLaurier1993(model.aero_context, g, pk);
+      } else {
+        k.v_P = v0 + y * v1;
+        k.a_P = a0 + y * a1;
+        k.friction_coefficient = data.friction_cd[j];
+        const std::size_t off = j * static_cast<std::size_t>(nstate);
+        loads = aero::evalMstTd(model.aero_context, g, k, aero_states + off,
+                                aero_state_derivatives ? aero_state_derivatives + off : nullptr);
+      }
+      Vec3 F, M_P;
+      aero::resolveSectionLoads(loads, g, fr.e_c_B, fr.n_B, &F, &M_P);
+      sum_F += F;
+      sum_yF += y * F;
+      sum_M_P += M_P;
+      const double strip_area = g.chord_m * g.width_m;
+      separated_area += (1.0 - loads.separation_f) * strip_area;
+      area += strip_area;
+      data.separation_f[j] = loads.separation_f;
     }
-    Vec3 F, M_P;
-    aero::resolveSectionLoads(loads, g, fr.e_c_B, fr.n_B, &F, &M_P);
-    sum_F += F;
-    sum_yF += y * F;
-    sum_M_P += M_P;
-    const double strip_area = g.chord_m * g.width_m;
-    separated_area += (1.0 - loads.separation_f) * strip_area;
-    area += strip_area;
-    data.separation_f[j] = loads.separation_f;
   }
   const Vec3 F_aero = sum_F;
   const Vec3 M_aero_P1 = p2.cross(sum_F) + e_span_B.cross(sum_yF) + sum_M_P;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/aero/mst_strip.hpp"
+#include "core/aero/mst_td_batch.hpp"
 #include "core/dynamics/flapping.hpp"
 #include "core/model/frames.hpp"
 #include "core/model/vehicle_model.hpp"
@@ -68,6 +69,8 @@ struct FlightCoreData {
   std::vector<double> separation_f;  ///< last f per strip (diagnostic)
   std::vector<double> friction_cd;   ///< M11 Cd_f per strip at friction_speed_mps
   double friction_speed_mps = -1.0;  ///< flight speed the friction cache belongs to
+  aero::StripBatch batch;            ///< structure-of-arrays workspace of the vectorised kernel
+  Eigen::ArrayXd y_strip_m;          ///< strip mid-stations (batch layout)
 };
 
 /// Everything that sets the operating condition besides the body motion.

@@ -12,8 +12,11 @@ struct SimulationOptions {
   int cycles = 10;               ///< flapping cycles to simulate, [1, 100000]
   double rel_tol = 1e-4;         ///< SUNDIALS relative tolerance, (0, 1e-2]; cycle means move
                                  ///< < 0.1 % when tightened tenfold (tests/unit/dynamics)
-  double abs_tol = 1e-6;         ///< absolute tolerance on the aerodynamic states (lag angles in
-                                 ///< rad, separation f), (0, 1e-2]
+  double abs_tol = 1e-6;         ///< absolute tolerance on the circulation-lag states (rad),
+                                 ///< (0, 1e-2]
+  double separation_abs_tol = 1e-5;  ///< absolute tolerance on the separation fractions f in
+                                     ///< [0, 1], (0, 1e-2]; the suction force goes with sqrt(f),
+                                     ///< so f near 0 needs this to keep FH converged
   double steady_tol = 1e-3;      ///< periodic steady state: cycle-to-cycle change of the cycle
                                  ///< means relative to q S (forces), q S c (moment), q S U (power),
                                  ///< and of the aero states (rad), (0, 0.1]
@@ -29,6 +32,8 @@ struct SimulationOptions {
     if (cycles < 1 || cycles > 100000) return fail("cycles must be in [1, 100000]");
     if (!(rel_tol > 0 && rel_tol <= 1e-2)) return fail("rel_tol must be in (0, 1e-2]");
     if (!(abs_tol > 0 && abs_tol <= 1e-2)) return fail("abs_tol must be in (0, 1e-2]");
+    if (!(separation_abs_tol > 0 && separation_abs_tol <= 1e-2))
+      return fail("separation_abs_tol must be in (0, 1e-2]");
     if (!(steady_tol > 0 && steady_tol <= 0.1)) return fail("steady_tol must be in (0, 0.1]");
     if (samples_per_cycle < 8 || samples_per_cycle > 100000)
       return fail("samples_per_cycle must be in [8, 100000]");

@@ -81,6 +81,11 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
   IntegratorOptions iopt;
   iopt.rel_tol = options.rel_tol;
   iopt.abs_tol.assign(static_cast<std::size_t>(n), options.abs_tol);
+  // The last state of each strip is its separation fraction f (aero-mst.md 9.4.2).
+  const int per_strip = model.aero_states_per_strip;
+  if (per_strip > 0)
+    for (int i = per_strip - 1; i < n_aero; i += per_strip)
+      iopt.abs_tol[static_cast<std::size_t>(i)] = options.separation_abs_tol;
   for (int c = 0; c < kQuadratureChannels; ++c)
     iopt.abs_tol[static_cast<std::size_t>(n_aero + c)] =
         0.1 * options.rel_tol * scales[c] * period_s;

@@ -1,5 +1,6 @@
 #include "studies/runner/commands/simulate_command.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -74,16 +75,21 @@ CsvTable cycleTable(const SimulationSummary& s) {
   return t;
 }
 
-// Figure in the layout of paper Fig. 2: delta_M, FV, FH (and M) against time, downstrokes shaded.
+// Figure in the layout of paper Fig. 2: delta_M, FV, FH and M against time over the last (at most
+// three) cycles, i.e. the periodic steady state, with the downstrokes shaded.
 std::string loadsFigure(const Study& study, const SimulationSummary& s) {
   const double T = 1.0 / study.point.freq_hz;
+  const int shown = std::min(3, s.cycles_run);
+  const int first = s.cycles_run - shown;
   std::ostringstream g;
-  g << "set multiplot layout 4,1 title \"" << study.name << ": tethered, U = "
+  g << "set multiplot layout 4,1 title \"" << study.name << " (tethered): U = "
     << study.point.speed_mps << " m/s, f = " << study.point.freq_hz
-    << " Hz, {/Symbol q} = " << study.point.theta_rad * kRadToDeg
-    << " deg (shaded: downstroke)\" font ',13'\n";
-  g << "set lmargin 12\nset xrange [0:" << s.cycles_run * T << "]\n";
-  for (int k = 0; k < s.cycles_run; ++k)
+    << " Hz, theta = " << study.point.theta_rad * kRadToDeg << " deg, cycles " << first + 1
+    << "-" << s.cycles_run << " of " << s.cycles_run
+    << " (shaded: downstroke)\" noenhanced font ',13'\n";
+  g << "set lmargin 12\nset rmargin 22\nset key outside right top vertical Left reverse\n";
+  g << "set xrange [" << first * T << ":" << s.cycles_run * T << "]\n";
+  for (int k = first; k < s.cycles_run; ++k)
     g << "set object " << k + 1 << " rect from " << (k + 0.25) * T << ", graph 0 to "
       << (k + 0.75) * T << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
   g << "set format x ''\n";
@@ -91,16 +97,17 @@ std::string loadsFigure(const Study& study, const SimulationSummary& s) {
        "plot 'histories.csv' skip 2 using 1:2 with lines lw 2 lc rgb '#333333' title 'flap angle'\n";
   g << "set ylabel 'F_V (N)'\n"
        "plot 'histories.csv' skip 2 using 1:3 with lines lw 2 lc rgb '#c0392b' title 'total', "
-       "'' skip 2 using 1:8 with lines dt 2 lc rgb '#2471a3' title 'wing aero', "
-       "'' skip 2 using 1:11 with lines dt 3 lc rgb '#27ae60' title 'wing inertia'\n";
+       "'' skip 2 using 1:8 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', "
+       "'' skip 2 using 1:11 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
   g << "set ylabel 'F_H (N)'\n"
        "plot 'histories.csv' skip 2 using 1:4 with lines lw 2 lc rgb '#c0392b' title 'total', "
-       "'' skip 2 using 1:9 with lines dt 2 lc rgb '#2471a3' title 'wing aero', "
-       "'' skip 2 using 1:12 with lines dt 3 lc rgb '#27ae60' title 'wing inertia'\n";
+       "'' skip 2 using 1:9 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', "
+       "'' skip 2 using 1:12 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
   g << "set format x '%g'\nset xlabel 'time (s)'\n";
   g << "set ylabel 'M_{CG} (N m)'\n"
        "plot 'histories.csv' skip 2 using 1:5 with lines lw 2 lc rgb '#c0392b' title 'total', "
-       "'' skip 2 using 1:10 with lines dt 2 lc rgb '#2471a3' title 'wing aero'\n";
+       "'' skip 2 using 1:10 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', "
+       "'' skip 2 using 1:13 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
   g << "unset multiplot\n";
   return g.str();
 }

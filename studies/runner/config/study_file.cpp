@@ -153,7 +153,8 @@ Study loadStudyFile(const fs::path& study_file) {
                                      std::string(toString(study.kind)) + "\"");
   if (std::optional<TableReader> sim = top.optionalTable(
           "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
-                       "rel_tol", "abs_tol", "steady_tol", "samples_per_cycle"})) {
+                       "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol",
+                       "samples_per_cycle"})) {
     SimulationOptions& o = study.simulate;
     OperatingPoint& p = study.point;
     constexpr int kIntMin = std::numeric_limits<int>::min();
@@ -168,6 +169,8 @@ Study loadStudyFile(const fs::path& study_file) {
     o.cycles = sim->optionalInt("cycles", o.cycles, kIntMin, kIntMax);
     o.rel_tol = sim->optionalDouble("rel_tol", o.rel_tol, Range::any());
     o.abs_tol = sim->optionalDouble("abs_tol", o.abs_tol, Range::any());
+    o.separation_abs_tol =
+        sim->optionalDouble("separation_abs_tol", o.separation_abs_tol, Range::any());
     o.steady_tol = sim->optionalDouble("steady_tol", o.steady_tol, Range::any());
     o.samples_per_cycle =
         sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
@@ -221,6 +224,7 @@ std::string resolvedStudyToml(const Study& study) {
     out.integer("cycles", o.cycles);
     out.number("rel_tol", o.rel_tol);
     out.number("abs_tol", o.abs_tol);
+    out.number("separation_abs_tol", o.separation_abs_tol);
     out.number("steady_tol", o.steady_tol);
     out.integer("samples_per_cycle", o.samples_per_cycle);
   }

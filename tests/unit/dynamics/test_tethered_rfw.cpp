@@ -82,6 +82,7 @@ TEST(DynamicsTetheredRfw, CycleMeansConvergeWhenTolerancesTightenTenfold) {
     SimulationOptions tight = base;
     tight.rel_tol = base.rel_tol / 10.0;
     tight.abs_tol = base.abs_tol / 10.0;
+    tight.separation_abs_tol = base.separation_abs_tol / 10.0;
     const RfwRun a = runRfw(theta, base), b = runRfw(theta, tight);
     struct Channel {
       double CycleMeans::*mean;

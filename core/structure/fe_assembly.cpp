@@ -1,0 +1,203 @@
+// Triplet assembly of the wing FE model (structure.md 1.7).
+#include "core/structure/fe_assembly.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/structure/beam_element.hpp"
+#include "core/structure/shell_element.hpp"
+
+namespace orni::structure {
+namespace {
+
+using Triplet = Eigen::Triplet<double, int>;
+
+const Material& requireMaterial(const VehicleModel& vehicle, const std::string& name,
+                                const char* what) {
+  const Material* m = vehicle.findMaterial(name);
+  if (m == nullptr)
+    throw std::invalid_argument(std::string("wing FE model: ") + what + " material '" + name +
+                                "' not found in [materials]");
+  return *m;
+}
+
+std::vector<BeamProperties> memberProperties(const VehicleModel& vehicle) {
+  std::vector<BeamProperties> props;
+  props.reserve(vehicle.wing.members.size());
+  for (const WingMember& member : vehicle.wing.members) {
+    const Material& mat = requireMaterial(vehicle, member.material, "member");
+    props.push_back(makeBeamProperties(solidRodSection(member.diameter_m), mat.youngs_modulus_pa,
+                                       mat.poisson_ratio, mat.density_kgpm3));
+  }
+  return props;
+}
+
+ShellProperties skinProperties(const VehicleModel& vehicle) {
+  const WingSkin& skin = vehicle.wing.skin;
+  if (!(skin.thickness_m > 0.0))
+    throw std::invalid_argument("wing FE model: expected skin thickness > 0, got " +
+                                std::to_string(skin.thickness_m));
+  const Material& mat = requireMaterial(vehicle, skin.material, "skin");
+  ShellProperties p;
+  p.thickness_m = skin.thickness_m;
+  p.youngs_modulus_pa = mat.youngs_modulus_pa;
+  p.poisson_ratio = mat.poisson_ratio;
+  p.density_kgpm3 = mat.density_kgpm3;
+  return p;
+}
+
+void checkNode(int node, int node_count) {
+  if (node < 0 || node >= node_count)
+    throw std::invalid_argument("wing FE model: node index " + std::to_string(node) +
+                                " outside [0, " + std::to_string(node_count) + ")");
+}
+
+const BeamProperties& beamProps(const std::vector<BeamProperties>& props, const BeamElement& b) {
+  if (b.member < 0 || b.member >= static_cast<int>(props.size()))
+    throw std::invalid_argument("wing FE model: beam member index " + std::to_string(b.member) +
+                                " outside [0, " + std::to_string(props.size()) + ")");
+  return props[static_cast<std::size_t>(b.member)];
+}
+
+// Scatters the nonzero entries of an element matrix (nodes.size() * 6 square).
+template <typename Matrix, std::size_t N>
+void scatter(const Matrix& ke, const std::array<int, N>& nodes, std::vector<Triplet>& out) {
+  for (std::size_t b = 0; b < N; ++b)
+    for (int j = 0; j < kDofsPerNode; ++j) {
+      const int col = globalDof(nodes[b], j);
+      const int cl = kDofsPerNode * static_cast<int>(b) + j;
+      for (std::size_t a = 0; a < N; ++a)
+        for (int i = 0; i < kDofsPerNode; ++i) {
+          const double v = ke(kDofsPerNode * static_cast<int>(a) + i, cl);
+          if (v != 0.0) out.emplace_back(globalDof(nodes[a], i), col, v);
+        }
+    }
+}
+
+std::array<Vec3, 3> facetNodes(const WingMesh& mesh, const std::array<int, 3>& tri) {
+  return {mesh.nodes_W_m[static_cast<std::size_t>(tri[0])],
+          mesh.nodes_W_m[static_cast<std::size_t>(tri[1])],
+          mesh.nodes_W_m[static_cast<std::size_t>(tri[2])]};
+}
+
+}  // namespace
+
+std::vector<bool> dofActivityMask(const WingMesh& mesh) {
+  const int n = mesh.nodeCount();
+  std::vector<bool> on_beam(static_cast<std::size_t>(n), false);
+  std::vector<bool> on_facet(static_cast<std::size_t>(n), false);
+  for (const BeamElement& b : mesh.beams)
+    for (int node : b.nodes) {
+      checkNode(node, n);
+      on_beam[static_cast<std::size_t>(node)] = true;
+    }
+  for (const auto& tri : mesh.triangles)
+    for (int node : tri) {
+      checkNode(node, n);
+      on_facet[static_cast<std::size_t>(node)] = true;
+    }
+  std::vector<bool> active(static_cast<std::size_t>(kDofsPerNode * n), false);
+  for (int p = 0; p < n; ++p) {
+    const bool beam = on_beam[static_cast<std::size_t>(p)];
+    const bool any = beam || on_facet[static_cast<std::size_t>(p)];
+    for (int d = 0; d < kDofsPerNode; ++d)
+      active[static_cast<std::size_t>(globalDof(p, d))] = any && (beam || d != kThetaZ);
+  }
+  return active;
+}
+
+std::vector<int> wingBoundaryDofs(const WingMesh& mesh, UniversalJointCrossAxis cross_axis) {
+  std::vector<int> dofs;
+  if (mesh.p2_node >= 0) {
+    checkNode(mesh.p2_node, mesh.nodeCount());
+    for (int d = 0; d < kDofsPerNode; ++d) dofs.push_back(globalDof(mesh.p2_node, d));
+  }
+  if (mesh.p3_node >= 0 && mesh.p3_node != mesh.p2_node) {
+    checkNode(mesh.p3_node, mesh.nodeCount());
+    for (int d : {kU, kV, kW}) dofs.push_back(globalDof(mesh.p3_node, d));
+    dofs.push_back(globalDof(mesh.p3_node,
+                             cross_axis == UniversalJointCrossAxis::kZW ? kThetaZ : kThetaY));
+  }
+  std::sort(dofs.begin(), dofs.end());
+  return dofs;
+}
+
+WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
+                           const FeAssemblyOptions& options) {
+  const int n = mesh.nodeCount();
+  WingFeModel model;
+  model.node_count = n;
+  model.active = dofActivityMask(mesh);  // also validates node indices
+
+  const std::vector<BeamProperties> members = memberProperties(vehicle);
+  const bool lumped = options.mass == MassLumping::kLumped;
+
+  std::vector<Triplet> k_triplets, m_triplets;
+  const std::size_t estimate = 144 * mesh.beams.size() + 120 * mesh.triangles.size();
+  k_triplets.reserve(estimate);
+  m_triplets.reserve(estimate);
+
+  for (const BeamElement& b : mesh.beams) {
+    const BeamProperties& p = beamProps(members, b);
+    const Vec3& x1 = mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[0])];
+    const Vec3& x2 = mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[1])];
+    const Vec3& n_W = options.beam_orientation_W;
+    scatter(beamStiffness(x1, x2, n_W, p), b.nodes, k_triplets);
+    scatter(lumped ? beamLumpedMass(x1, x2, n_W, p) : beamConsistentMass(x1, x2, n_W, p), b.nodes,
+            m_triplets);
+    model.member_mass_kg += p.density_kgpm3 * p.section.area_m2 * (x2 - x1).norm();
+  }
+
+  if (!mesh.triangles.empty()) {
+    const ShellProperties skin = skinProperties(vehicle);
+    for (const auto& tri : mesh.triangles) {
+      const std::array<Vec3, 3> x = facetNodes(mesh, tri);
+      scatter(shellStiffness(x, skin), tri, k_triplets);
+      scatter(lumped ? shellLumpedMass(x, skin) : shellConsistentMass(x, skin), tri, m_triplets);
+      model.skin_mass_kg += skin.density_kgpm3 * skin.thickness_m * triangleArea(x);
+    }
+  }
+
+  const int dofs = model.dofCount();
+  model.stiffness.resize(dofs, dofs);
+  model.mass.resize(dofs, dofs);
+  model.stiffness.setFromTriplets(k_triplets.begin(), k_triplets.end());
+  model.mass.setFromTriplets(m_triplets.begin(), m_triplets.end());
+  return model;
+}
+
+LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mesh,
+                                const Vec3& beam_orientation_W) {
+  const int n = mesh.nodeCount();
+  LumpedNodalMass out;
+  out.mass_kg = Eigen::VectorXd::Zero(n);
+  out.rotary_W_kgm2.assign(static_cast<std::size_t>(n), Mat3::Zero());
+  const std::vector<BeamProperties> members = memberProperties(vehicle);
+  for (const BeamElement& b : mesh.beams) {
+    for (int node : b.nodes) checkNode(node, n);
+    const Mat12 m = beamLumpedMass(mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[0])],
+                                   mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[1])],
+                                   beam_orientation_W, beamProps(members, b));
+    for (int a = 0; a < 2; ++a) {
+      out.mass_kg(b.nodes[static_cast<std::size_t>(a)]) += m(6 * a, 6 * a);
+      out.rotary_W_kgm2[static_cast<std::size_t>(b.nodes[static_cast<std::size_t>(a)])] +=
+          m.block<3, 3>(6 * a + 3, 6 * a + 3);
+    }
+  }
+  if (!mesh.triangles.empty()) {
+    const ShellProperties skin = skinProperties(vehicle);
+    for (const auto& tri : mesh.triangles) {
+      for (int node : tri) checkNode(node, n);
+      const Mat18 m = shellLumpedMass(facetNodes(mesh, tri), skin);
+      for (int a = 0; a < 3; ++a) {
+        out.mass_kg(tri[static_cast<std::size_t>(a)]) += m(6 * a, 6 * a);
+        out.rotary_W_kgm2[static_cast<std::size_t>(tri[static_cast<std::size_t>(a)])] +=
+            m.block<3, 3>(6 * a + 3, 6 * a + 3);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace orni::structure

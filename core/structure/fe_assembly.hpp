@@ -1,0 +1,63 @@
+// Assembly of the wing finite-element model from (VehicleModel, WingMesh) (structure.md 1.7):
+// sparse K and M over 6 DOF per node, the DOF activity mask (structure.md 1.4) and the boundary
+// DOF set of the fixed-interface problem (structure.md 2.1).
+#pragma once
+
+#include <vector>
+
+#include "core/model/vehicle_model.hpp"
+#include "core/structure/fe_types.hpp"
+#include "core/structure/wing_mesh.hpp"
+
+namespace orni::structure {
+
+struct FeAssemblyOptions {
+  MassLumping mass = MassLumping::kConsistent;
+  /// Beam orientation vector n (local z' axis): the wing normal z_W for in-plane members.
+  Vec3 beam_orientation_W = Vec3::UnitZ();
+};
+
+/// The assembled model. K and M are full symmetric (both triangles stored), 6n x 6n, W components.
+struct WingFeModel {
+  int node_count = 0;
+  SparseMatrix stiffness;       ///< K (N/m, N, N m)
+  SparseMatrix mass;            ///< M (kg, kg m, kg m^2)
+  std::vector<bool> active;     ///< per global DOF: false for drilling DOFs of skin-only nodes
+                                ///< and for every DOF of a node no element touches
+  double member_mass_kg = 0.0;  ///< sum of rho A L over beam elements
+  double skin_mass_kg = 0.0;    ///< sum of rho t A over facets
+
+  int dofCount() const { return kDofsPerNode * node_count; }
+  double totalMass_kg() const { return member_mass_kg + skin_mass_kg; }
+};
+
+/// Assembles K and M by triplets. Throws std::invalid_argument for a missing material, a bad
+/// member index, a node index out of range or a non-positive skin thickness when facets exist.
+WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
+                           const FeAssemblyOptions& options = {});
+
+/// Activity mask (structure.md 1.4): theta_z inactive at nodes no beam touches; all six DOF
+/// inactive at nodes no element touches.
+std::vector<bool> dofActivityMask(const WingMesh& mesh);
+
+/// Cross axis n_u of the universal joint at P3 (structure.md 2.1).
+enum class UniversalJointCrossAxis {
+  kZW,  ///< default: rotation about z_W (theta_z at P3) constrained
+  kYW,  ///< alternative: rotation about y_W (theta_y at P3) constrained
+};
+
+/// Boundary DOFs of the fixed-interface problem, ascending global ids: P2 all six, P3 u, v, w and
+/// the rotation about n_u (structure.md 2.1). A node index < 0 is skipped (test meshes).
+std::vector<int> wingBoundaryDofs(
+    const WingMesh& mesh, UniversalJointCrossAxis cross_axis = UniversalJointCrossAxis::kZW);
+
+/// Lumped nodal mass: translational mass per node (kg) and the rotational 3 x 3 block per node
+/// (kg m^2, W components), identical to the lumped assembled M (which is block diagonal).
+struct LumpedNodalMass {
+  Eigen::VectorXd mass_kg;
+  std::vector<Mat3> rotary_W_kgm2;
+};
+LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mesh,
+                                const Vec3& beam_orientation_W = Vec3::UnitZ());
+
+}  // namespace orni::structure

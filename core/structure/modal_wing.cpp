@@ -1,0 +1,125 @@
+// Builds the ModalWing (structure.md 2.4-2.6, 3.3).
+#include "core/structure/modal_wing.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "core/structure/craig_bampton.hpp"
+#include "core/structure/dof_partition.hpp"
+
+namespace orni::structure {
+namespace {
+
+constexpr double kTwoPi = 2.0 * 3.14159265358979323846;
+
+struct Basis {
+  Eigen::VectorXd omega2;
+  Eigen::MatrixXd shapes;  // 6n x count
+};
+
+Basis fixedInterfaceBasis(const WingFeModel& fe, const DofPartition& part,
+                          const ModalWingOptions& options) {
+  const SparseMatrix k_ii = extractBlock(fe.stiffness, part.interior, part.interior);
+  const SparseMatrix m_ii = extractBlock(fe.mass, part.interior, part.interior);
+  const int count =
+      std::min(options.selection.max_modes, static_cast<int>(part.interior.size()));
+  const EigenSolution sol = lowestEigenpairs(k_ii, m_ii, count, options.eigen);
+  if (!sol.success)
+    throw std::runtime_error("buildModalWing: fixed-interface eigen-solution failed: " +
+                             sol.message);
+  return {sol.eigenvalues, expandRows(sol.vectors, part.interior, fe.dofCount())};
+}
+
+Basis craigBamptonBasis(const WingFeModel& fe, const DofPartition& part,
+                        const ModalWingOptions& options) {
+  CraigBamptonOptions cbo;
+  cbo.interior_mode_count = options.selection.max_modes;
+  cbo.eigen = options.eigen;
+  const CraigBamptonModel cb = craigBampton(fe.stiffness, fe.mass, part, cbo);
+  const OrthonormalModes on = orthonormalise(cb);
+  std::vector<Eigen::Index> elastic;
+  for (Eigen::Index k = 0; k < on.eigenvalues.size(); ++k)
+    if (!on.rigid[static_cast<std::size_t>(k)]) elastic.push_back(k);
+  Basis b;
+  b.omega2.resize(static_cast<Eigen::Index>(elastic.size()));
+  b.shapes.resize(fe.dofCount(), static_cast<Eigen::Index>(elastic.size()));
+  for (std::size_t j = 0; j < elastic.size(); ++j) {
+    b.omega2(static_cast<Eigen::Index>(j)) = on.eigenvalues(elastic[j]);
+    b.shapes.col(static_cast<Eigen::Index>(j)) = on.shapes.col(elastic[j]);
+  }
+  return b;
+}
+
+}  // namespace
+
+bool ModalWingOptions::IsValid(std::string* why) const {
+  if (!selection.IsValid(why)) return false;
+  if (!(damping_ratio >= 0.0 && damping_ratio < 1.0)) {
+    if (why != nullptr) *why = "damping_ratio: expected in [0, 1)";
+    return false;
+  }
+  return true;
+}
+
+Eigen::VectorXd ModalWing::stiffnessDiagonal() const {
+  return (kTwoPi * frequencies_hz).cwiseAbs2();
+}
+
+Eigen::VectorXd ModalWing::dampingDiagonal() const {
+  return 2.0 * damping_ratios.cwiseProduct(kTwoPi * frequencies_hz);
+}
+
+ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
+                         const ModalWingOptions& options) {
+  std::string why;
+  if (!options.IsValid(&why)) throw std::invalid_argument("buildModalWing: " + why);
+  if (mesh.p2_node < 0 || mesh.p2_node >= mesh.nodeCount())
+    throw std::invalid_argument("buildModalWing: the mesh has no valid P2 node");
+
+  FeAssemblyOptions fe_options;
+  fe_options.mass = options.mass;
+  const WingFeModel fe = assembleWingFe(vehicle, mesh, fe_options);
+  const DofPartition part = makeDofPartition(
+      fe.active, wingBoundaryDofs(mesh, options.p3_cross_axis), options.free_boundary_dofs);
+  if (part.interior.empty()) throw std::invalid_argument("buildModalWing: no interior DOF");
+
+  const Basis basis = part.boundary_free.empty() ? fixedInterfaceBasis(fe, part, options)
+                                                 : craigBamptonBasis(fe, part, options);
+  const Eigen::VectorXd freq_all =
+      basis.omega2.cwiseMax(0.0).cwiseSqrt() / kTwoPi;
+  const Vec3 p2 = mesh.nodes_W_m[static_cast<std::size_t>(mesh.p2_node)];
+  const EffectiveMassTable table_all =
+      effectiveMassTable(fe.mass, basis.shapes, mesh.nodes_W_m, p2, Vec3::UnitX());
+
+  ModalWing w;
+  w.selection = selectModes(freq_all, table_all, options.selection);
+  const int m = w.selection.count;
+  w.mesh = mesh;
+  w.frequencies_hz = freq_all.head(m);
+  w.damping_ratios = Eigen::VectorXd::Constant(m, options.damping_ratio);
+  w.mode_shapes = basis.shapes.leftCols(m);
+  w.effective_mass = table_all;
+  for (Eigen::VectorXd* v : {&w.effective_mass.flap_fraction, &w.effective_mass.heave_fraction,
+                             &w.effective_mass.flap_cumulative,
+                             &w.effective_mass.heave_cumulative})
+    v->conservativeResize(m);
+
+  const int n = mesh.nodeCount();
+  w.phi_W.resize(static_cast<std::size_t>(n));
+  w.psi_W.resize(static_cast<std::size_t>(n));
+  for (int p = 0; p < n; ++p) {
+    w.phi_W[static_cast<std::size_t>(p)] = w.mode_shapes.middleRows<3>(globalDof(p, kU));
+    w.psi_W[static_cast<std::size_t>(p)] = w.mode_shapes.middleRows<3>(globalDof(p, kThetaX));
+  }
+  const LumpedNodalMass lumped = lumpedNodalMass(vehicle, mesh, fe_options.beam_orientation_W);
+  w.nodal_mass_kg = lumped.mass_kg;
+  w.nodal_rotary_W_kgm2 = lumped.rotary_W_kgm2;
+  w.invariants = invariantsOperatorForm(fe.mass, w.mode_shapes, mesh.nodes_W_m, p2);
+  w.member_mass_kg = fe.member_mass_kg;
+  w.skin_mass_kg = fe.skin_mass_kg;
+  w.wing_mass_kg = fe.totalMass_kg();
+  return w;
+}
+
+}  // namespace orni::structure

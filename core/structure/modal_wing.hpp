@@ -1,0 +1,59 @@
+// ModalWing: the reduced flexible wing the dynamics consumes (structure.md 2.4-2.6, 3.3).
+// Built once by buildModalWing and then only read (style.md habit 1; share it as
+// std::shared_ptr<const ModalWing>).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/model/vehicle_model.hpp"
+#include "core/structure/fe_assembly.hpp"
+#include "core/structure/inertia_invariants.hpp"
+#include "core/structure/modal_solver.hpp"
+#include "core/structure/mode_selection.hpp"
+#include "core/structure/wing_mesh.hpp"
+
+namespace orni::structure {
+
+struct ModalWingOptions {
+  MassLumping mass = MassLumping::kConsistent;  ///< M used for modes and invariants
+  UniversalJointCrossAxis p3_cross_axis = UniversalJointCrossAxis::kZW;  ///< structure.md 2.1
+  /// Boundary DOFs (global ids 6 node + dof) left free (b_f) and reduced by Craig-Bampton with
+  /// orthonormalisation; empty = the default fixed-interface basis (structure.md 2.4).
+  std::vector<int> free_boundary_dofs;
+  ModeSelectionOptions selection;   ///< count / cut-off / effective mass (structure.md 2.5)
+  double damping_ratio = 0.015;     ///< zeta of every elastic mode, [0, 1) (structure.md 2.6)
+  EigenSolveOptions eigen;
+
+  bool IsValid(std::string* why) const;
+};
+
+struct ModalWing {
+  WingMesh mesh;                          ///< the FE mesh (nodes, strips, P2, P3)
+  Eigen::VectorXd frequencies_hz;         ///< f_k, ascending (M)
+  Eigen::VectorXd damping_ratios;         ///< zeta_k (M)
+  Eigen::MatrixXd mode_shapes;            ///< 6n x M, mass-normalised, zero at constrained DOFs
+  std::vector<Eigen::Matrix3Xd> phi_W;    ///< per node: translational shapes Phi_p (3 x M), m
+  std::vector<Eigen::Matrix3Xd> psi_W;    ///< per node: rotational shapes Psi_p (3 x M), rad
+  Eigen::VectorXd nodal_mass_kg;          ///< lumped translational mass per node
+  std::vector<Mat3> nodal_rotary_W_kgm2;  ///< lumped rotary block per node
+  InertiaInvariants invariants;           ///< operator form with the chosen M, about P2
+  double wing_mass_kg = 0.0;              ///< members + skin
+  double member_mass_kg = 0.0;
+  double skin_mass_kg = 0.0;
+  EffectiveMassTable effective_mass;      ///< over the kept modes
+  ModeSelection selection;
+
+  int modeCount() const { return static_cast<int>(frequencies_hz.size()); }
+  /// Modal stiffness omega_k^2 and damping 2 zeta_k omega_k (structure.md 2.6).
+  Eigen::VectorXd stiffnessDiagonal() const;
+  Eigen::VectorXd dampingDiagonal() const;
+};
+
+/// FE assembly, fixed-interface (or Craig-Bampton) modes, selection, invariants. The mesh must
+/// have p2_node set. Throws std::invalid_argument for bad input and std::runtime_error when the
+/// eigen-solution fails.
+ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
+                         const ModalWingOptions& options = {});
+
+}  // namespace orni::structure
