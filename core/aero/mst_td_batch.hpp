@@ -39,9 +39,21 @@ struct StripBatch {
   ArrayXd Fx, Fy, Fz;                           ///< force, N
   ArrayXd Mx, My, Mz;                           ///< moment about P, N m
   ArrayXd separation_f;                         ///< f used in the loads
+  // Per-strip constants derived from the geometry, air and friction (prepareStripBatch()).
+  ArrayXd lever25, lever50, lever75;  ///< c/4 - x_P, c/2 - x_P, 3c/4 - x_P
+  ArrayXd k_q;                        ///< 0.5 rho c dy
+  ArrayXd k_apparent;                 ///< rho pi c^2/4 dy (M8)
+  ArrayXd k_couple1, k_couple2;       ///< rho pi c^3/16 dy, rho pi c^4/128 dy (M17)
+  ArrayXd k_friction;                 ///< Cd_f 0.5 rho c dy (0 when friction is off)
+  ArrayXd k_crossflow;                ///< Cd_cf 0.5 rho c dy
+  ArrayXd two_over_c;                 ///< 2/c (reduced-time rate per unit speed)
   // Scratch.
   ArrayXd t[24];
 };
+
+/// Fill the per-strip constants from chord_m, width_m, ref_aft_of_le_m and friction_coefficient;
+/// call again whenever one of those (or the air density) changes.
+void prepareStripBatch(const StripContext& context, StripBatch& batch);
 
 /// Evaluate all strips: loads into batch outputs, state derivatives (interleaved [z, f] per strip,
 /// like `states`) into `state_derivatives` (may be null).

@@ -146,6 +146,7 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
           flight_speed * model.strip_geometry[j].chord_m / veh.air.kinematic_viscosity_m2ps);
       data.batch.friction_coefficient[static_cast<Eigen::Index>(j)] = data.friction_cd[j];
     }
+    aero::prepareStripBatch(model.aero_context, data.batch);
   }
 
   // Rigid wing (structure level L0): every strip's leading-edge point is p_P1P2 + y e_span, so
@@ -193,7 +194,6 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
     b.ax = a0.x() + y * a1.x(); b.ay = a0.y() + y * a1.y(); b.az = a0.z() + y * a1.z();
     b.wx.setConstant(fr.omega_B.x()); b.wy.setConstant(fr.omega_B.y()); b.wz.setConstant(fr.omega_B.z());
     b.wdx.setConstant(fr.alpha_B.x()); b.wdy.setConstant(fr.alpha_B.y()); b.wdz.setConstant(fr.alpha_B.z());
-    b.airx.setZero(); b.airy.setZero(); b.airz.setZero();
     aero::evalMstTdBatch(model.aero_context, b, aero_states, aero_state_derivatives);
     sum_F = Vec3(b.Fx.sum(), b.Fy.sum(), b.Fz.sum());
     sum_yF = Vec3((y * b.Fx).sum(), (y * b.Fy).sum(), (y * b.Fz).sum());

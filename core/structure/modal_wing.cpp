@@ -97,7 +97,15 @@ ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
   const int m = w.selection.count;
   w.mesh = mesh;
   w.frequencies_hz = freq_all.head(m);
-  w.damping_ratios = Eigen::VectorXd::Constant(m, options.damping_ratio);
+  w.damping_ratios.resize(m);
+  for (int k = 0; k < m; ++k) {
+    const double f = w.frequencies_hz(k);
+    w.damping_ratios(k) = options.damping_schedule == ModalDampingSchedule::kConstant
+                              ? options.damping_ratio
+                          : f < 100.0  ? 0.01
+                          : f < 1000.0 ? 0.1
+                                       : 1.0;
+  }
   w.mode_shapes = basis.shapes.leftCols(m);
   w.effective_mass = table_all;
   for (Eigen::VectorXd* v : {&w.effective_mass.flap_fraction, &w.effective_mass.heave_fraction,

@@ -15,6 +15,12 @@
 
 namespace orni::structure {
 
+/// Modal damping schedule (structure.md 2.6).
+enum class ModalDampingSchedule {
+  kConstant,      ///< damping_ratio for every mode (physics default)
+  kAdamsDefault,  ///< ADAMS CRATIO default: 1 % below 100 Hz, 10 % to 1 kHz, 100 % above
+};
+
 struct ModalWingOptions {
   MassLumping mass = MassLumping::kConsistent;  ///< M used for modes and invariants
   UniversalJointCrossAxis p3_cross_axis = UniversalJointCrossAxis::kZW;  ///< structure.md 2.1
@@ -23,6 +29,7 @@ struct ModalWingOptions {
   std::vector<int> free_boundary_dofs;
   ModeSelectionOptions selection;   ///< count / cut-off / effective mass (structure.md 2.5)
   double damping_ratio = 0.015;     ///< zeta of every elastic mode, [0, 1) (structure.md 2.6)
+  ModalDampingSchedule damping_schedule = ModalDampingSchedule::kConstant;
   EigenSolveOptions eigen;
 
   bool IsValid(std::string* why) const;

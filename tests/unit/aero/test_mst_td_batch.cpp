@@ -83,6 +83,7 @@ TEST(AeroMstTdBatch, MatchesScalarKernelStripByStrip) {
     b.wdx[i] = k.wdot_s.x(); b.wdy[i] = k.wdot_s.y(); b.wdz[i] = k.wdot_s.z();
     b.airx[i] = k.v_air.x(); b.airy[i] = k.v_air.y(); b.airz[i] = k.v_air.z();
   }
+  prepareStripBatch(ctx, b);
   evalMstTdBatch(ctx, b, states.data(), d_batch.data());
   for (int i = 0; i < n; ++i) {
     const SectionLoads L = evalMstTd(ctx, geo[i], kin[i], &states[2 * i], &d_scalar[2 * i]);

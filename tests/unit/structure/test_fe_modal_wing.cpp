@@ -61,6 +61,13 @@ TEST(StructureFeModalWing, DefaultBuildIsMassNormalisedAndHeldAtTheJoints) {
     EXPECT_LE(w.effective_mass.heave_cumulative(k), 1.0 + 1e-12);
   }
   EXPECT_GT(w.effective_mass.flap_cumulative(9), 0.5);
+
+  o.damping_schedule = ModalDampingSchedule::kAdamsDefault;
+  const ModalWing adams = buildModalWing(mw.vehicle, mw.mesh, o);
+  for (int k = 0; k < 10; ++k) {
+    const double f = adams.frequencies_hz(k);
+    EXPECT_DOUBLE_EQ(adams.damping_ratios(k), f < 100 ? 0.01 : f < 1000 ? 0.1 : 1.0) << f;
+  }
 }
 
 TEST(StructureFeModalWing, SelectionByCutoffAndEffectiveMass) {

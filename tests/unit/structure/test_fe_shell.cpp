@@ -69,9 +69,11 @@ struct PatchField {
 
 Eigen::VectorXd exactField(const WingMesh& mesh, const Mat3& q, const PatchField& f) {
   Eigen::VectorXd u(kDofsPerNode * mesh.nodeCount());
-  for (int p = 0; p < mesh.nodeCount(); ++p)
-    u.segment<6>(kDofsPerNode * p) =
-        f.at(q.transpose() * mesh.nodes_W_m[static_cast<std::size_t>(p)], q);
+  for (int p = 0; p < mesh.nodeCount(); ++p) {
+    Vec3 local;
+    local.noalias() = q.transpose() * mesh.nodes_W_m[static_cast<std::size_t>(p)];
+    u.segment<6>(kDofsPerNode * p) = f.at(local, q);
+  }
   return u;
 }
 
