@@ -61,7 +61,13 @@ int runStudy(const Study& study, const fs::path& out_dir) {
 int main(int argc, char** argv) {
   CLI::App app{"ornithopter: flexible flapping-wing flight simulation, aero maps, trim and design"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "ornithopter " + versionString());
+  app.add_flag_callback(
+      "--version",
+      [] {
+        std::cout << "ornithopter " << versionString() << "\n";
+        throw CLI::Success();
+      },
+      "Print the version and git revision");
 
   // simulate
   auto* sim = app.add_subcommand("simulate", "Simulate a vehicle file (tethered or free flight)");
