@@ -1,8 +1,10 @@
 #include "core/dynamics/flight_core.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/aero/tail.hpp"
+#include "core/dynamics/flexible_wing.hpp"
 
 namespace orni {
 
@@ -30,6 +32,17 @@ FlightCoreModel::FlightCoreModel(const VehicleModel& v)
   const double i = v.wing.incidence_rad;
   e_c_W = Vec3(std::cos(i), 0.0, -std::sin(i));  // rotY(i) e_x: nose-up incidence
   n_W = Vec3(-std::sin(i), 0.0, -std::cos(i));   // rotY(i) (-e_z)
+  if (v.wing.structure == StructureLevel::kFlexible) {
+    if (v.wing.incidence_rad != 0.0)
+      throw std::invalid_argument("the flexible wing model is flat: wing.incidence_deg must be 0");
+    std::vector<double> chords, widths;
+    for (const aero::StripGeometry& g : strip_geometry) {
+      chords.push_back(g.chord_m);
+      widths.push_back(g.width_m);
+    }
+    flexible = std::make_shared<const FlexibleWingModel>(v, cachedModalWing(v), chords, widths);
+    // The structural wing mass replaces the rigid-wing estimate (same members and skin).
+  }
 }
 
 FlightCoreData::FlightCoreData(const FlightCoreModel& model)

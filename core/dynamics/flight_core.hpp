@@ -6,6 +6,7 @@
 // allocate.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "core/aero/mst_strip.hpp"
@@ -38,10 +39,14 @@ struct LoadSample {
   double power_hinge_W = 0;   ///< mechanical power at the two hinges (aero + wing inertia)
   double separated_fraction = 0;  ///< area-weighted mean of (1 - f) over the strips
   double tail_alpha_rad = 0;
+  double tip_deflection_m = 0;    ///< flexible wing: elastic deflection of the tip LE, up +
+  double tip_twist_rad = 0;       ///< flexible wing: elastic twist of the tip strip, nose-up +
 };
 
 /// Channels integrated as quadrature states for exact cycle means.
 constexpr int kQuadratureChannels = 5;  // FV, FH, M, power_aero, power_hinge
+
+struct FlexibleWingModel;
 
 struct FlightCoreModel {
   VehicleModel vehicle;
@@ -56,6 +61,9 @@ struct FlightCoreModel {
   Vec3 n_W = -Vec3::UnitZ();       ///< upper-surface normal in W
   double wing_area_both_m2 = 0.0;  ///< S of the pair (strip areas summed)
   double mean_chord_m = 0.0;       ///< S / b
+
+  /// The flexible wing (structure = "flexible"): modes, strip modal data; null for rigid.
+  std::shared_ptr<const FlexibleWingModel> flexible;
 
   explicit FlightCoreModel(const VehicleModel& v);
   int aeroStateCount() const {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/dynamics/flexible_tethered.hpp"
 #include "core/integrate/erk_integrator.hpp"
 
 namespace orni {
@@ -31,47 +32,72 @@ std::string SimulationSummary::BriefReport() const {
 
 namespace {
 
-struct TetheredRhs {
-  const FlightCoreModel* model;
-  FlightCoreData* data;
-  BodyMotion body;
-  ControlInput control;
-  int aero_states;
-  LoadSample scratch;
+// The rigid wing: aero states + quadratures; loads by evaluateLoads (flight_core.cpp).
+class RigidTetheredSystem {
+ public:
+  RigidTetheredSystem(const FlightCoreModel& model, const BodyMotion& body,
+                      const ControlInput& control)
+      : model_(model), data_(model), body_(body), control_(control),
+        n_aero_(model.aeroStateCount()) {}
+  int stateCount() const { return n_aero_ + kQuadratureChannels; }
+  int aeroOffset() const { return 0; }
+  int quadratureOffset() const { return n_aero_; }
+  void initialState(double t, double* y) const {
+    initialAeroStates(model_, body_, control_, t, y);
+    for (int c = 0; c < kQuadratureChannels; ++c) y[n_aero_ + c] = 0.0;
+  }
+  void absoluteTolerances(double rel_tol, double lag_abs_tol, double separation_abs_tol,
+                          std::vector<double>* atol) const {
+    atol->assign(static_cast<std::size_t>(stateCount()), lag_abs_tol);
+    // The last state of each strip is its separation fraction f (aero-mst.md 9.4.2).
+    const int per = model_.aero_states_per_strip;
+    if (per > 0)
+      for (int i = per - 1; i < n_aero_; i += per)
+        (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
+    const double U = body_.v_P1_B.norm();
+    const double force = 0.5 * model_.vehicle.air.density_kgpm3 * U * U * model_.wing_area_both_m2;
+    const double T = 1.0 / control_.freq_hz;
+    const double scales[kQuadratureChannels] = {force, force, force * model_.mean_chord_m,
+                                                force * U, force * U};
+    for (int c = 0; c < kQuadratureChannels; ++c)
+      (*atol)[static_cast<std::size_t>(n_aero_ + c)] = 0.1 * rel_tol * scales[c] * T;
+  }
+  static int rhsCallback(double t, const double* y, double* ydot, void* self) {
+    auto* r = static_cast<RigidTetheredSystem*>(self);
+    evaluateLoads(r->model_, r->data_, r->body_, r->control_, t, y, ydot, &r->scratch_);
+    double* q = ydot + r->n_aero_;
+    q[0] = r->scratch_.FV_N;
+    q[1] = r->scratch_.FH_N;
+    q[2] = r->scratch_.M_Nm;
+    q[3] = r->scratch_.power_aero_W;
+    q[4] = r->scratch_.power_hinge_W;
+    return 0;
+  }
+  void sample(double t, const double* y, LoadSample* out) {
+    evaluateLoads(model_, data_, body_, control_, t, y, nullptr, out);
+  }
+
+ private:
+  const FlightCoreModel& model_;
+  FlightCoreData data_;
+  BodyMotion body_;
+  ControlInput control_;
+  int n_aero_;
+  LoadSample scratch_;
 };
 
-int tetheredRhs(double t, const double* y, double* ydot, void* user) {
-  auto* r = static_cast<TetheredRhs*>(user);
-  evaluateLoads(*r->model, *r->data, r->body, r->control, t, y, ydot, &r->scratch);
-  double* q = ydot + r->aero_states;
-  q[0] = r->scratch.FV_N;
-  q[1] = r->scratch.FH_N;
-  q[2] = r->scratch.M_Nm;
-  q[3] = r->scratch.power_aero_W;
-  q[4] = r->scratch.power_hinge_W;
-  return 0;
-}
-
-}  // namespace
-
-SimulationSummary simulateTethered(const FlightCoreModel& model, const OperatingPoint& point,
-                                   const SimulationOptions& options, TimeHistory* history) {
-  std::string why;
-  if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
-  if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
-    throw std::invalid_argument("tethered simulation needs speed > 0 and frequency > 0");
-
+template <class System>
+SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const OperatingPoint& point,
+                            const SimulationOptions& options, TimeHistory* history) {
   SimulationSummary summary;
-  FlightCoreData data(model);
-  TetheredRhs rhs{&model, &data, tetheredBodyMotion(point.speed_mps, point.theta_rad),
-                  ControlInput{point.freq_hz, point.tail_angle_rad}, model.aeroStateCount(),
-                  LoadSample{}};
-  const int n_aero = rhs.aero_states;
-  const int n = n_aero + kQuadratureChannels;
+  const int n = sys.stateCount();
+  const int n_aero0 = sys.aeroOffset();
+  const int n_aero1 = sys.quadratureOffset();
+  const int n_quad = sys.quadratureOffset();
   const double period_s = 1.0 / point.freq_hz;
 
-  // Scales for the steady-state test and the quadrature tolerances: dynamic pressure times wing
-  // area (forces), times mean chord (moment), times speed (power).
+  // Scales for the steady-state test: dynamic pressure times wing area (forces), times mean
+  // chord (moment), times speed (power).
   const double q_dyn = 0.5 * model.vehicle.air.density_kgpm3 * point.speed_mps * point.speed_mps;
   const double force_scale = q_dyn * model.wing_area_both_m2;
   const double scales[kQuadratureChannels] = {
@@ -80,23 +106,17 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
 
   IntegratorOptions iopt;
   iopt.rel_tol = options.rel_tol;
-  iopt.abs_tol.assign(static_cast<std::size_t>(n), options.abs_tol);
-  // The last state of each strip is its separation fraction f (aero-mst.md 9.4.2).
-  const int per_strip = model.aero_states_per_strip;
-  if (per_strip > 0)
-    for (int i = per_strip - 1; i < n_aero; i += per_strip)
-      iopt.abs_tol[static_cast<std::size_t>(i)] = options.separation_abs_tol;
-  for (int c = 0; c < kQuadratureChannels; ++c)
-    iopt.abs_tol[static_cast<std::size_t>(n_aero + c)] =
-        0.1 * options.rel_tol * scales[c] * period_s;
+  sys.absoluteTolerances(options.rel_tol, options.abs_tol, options.separation_abs_tol,
+                         &iopt.abs_tol);
   iopt.max_step = period_s / 8.0;  // never step over a whole flapping half-stroke
-  ErkIntegrator integrator(n, &tetheredRhs, &rhs, iopt);
+  ErkIntegrator integrator(n, &System::rhsCallback, &sys, iopt);
 
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
-  initialAeroStates(model, rhs.body, rhs.control, 0.0, y0.data());
+  sys.initialState(0.0, y0.data());
   integrator.reset(0.0, y0.data());
 
-  const int spc = options.record_history && history ? options.samples_per_cycle : 1;
+  const bool record = history != nullptr && options.record_history;
+  const int spc = record ? options.samples_per_cycle : 1;
   if (history) {
     history->t_s.clear();
     history->delta_M_rad.clear();
@@ -107,19 +127,19 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     history->delta_M_rad.reserve(total);
     history->loads.reserve(total);
   }
-  auto record = [&](double t, const double* y) {
-    if (!history || !options.record_history) return;
+  auto recordSample = [&](double t, const double* y) {
+    if (!record) return;
     LoadSample s;
-    evaluateLoads(model, data, rhs.body, rhs.control, t, y, nullptr, &s);
+    sys.sample(t, y, &s);
     history->t_s.push_back(t);
     history->delta_M_rad.push_back(
         flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad);
     history->loads.push_back(s);
   };
-  record(0.0, integrator.state());
+  recordSample(0.0, integrator.state());
 
   std::vector<double> prev_quad(kQuadratureChannels, 0.0);
-  std::vector<double> prev_states(integrator.state(), integrator.state() + n_aero);
+  std::vector<double> prev_states(integrator.state() + n_aero0, integrator.state() + n_aero1);
   summary.status = SimulationStatus::kNotConverged;
   for (int k = 1; k <= options.cycles; ++k) {
     for (int i = 1; i <= spc; ++i) {
@@ -131,7 +151,7 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
         summary.rhs_evaluations = integrator.rhsEvaluations();
         return summary;
       }
-      record(t, integrator.state());
+      recordSample(t, integrator.state());
     }
     const double* y = integrator.state();
     CycleMeans cm;
@@ -140,7 +160,7 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     double change = 0.0;
     bool finite = true;
     for (int c = 0; c < kQuadratureChannels; ++c) {
-      const double q = y[n_aero + c];
+      const double q = y[n_quad + c];
       *fields[c] = (q - prev_quad[static_cast<std::size_t>(c)]) / period_s;
       prev_quad[static_cast<std::size_t>(c)] = q;
       finite = finite && std::isfinite(*fields[c]);
@@ -153,10 +173,11 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     // sampled in a fast stall transition carries interpolation noise of order rel_tol there,
     // while the cycle means (what every analysis consumes) are integrals and converge cleanly.
     double state_change = 0.0;
-    for (int i = 0; i < n_aero; ++i) {
-      finite = finite && std::isfinite(y[i]);
-      state_change = std::max(state_change, std::abs(y[i] - prev_states[static_cast<std::size_t>(i)]));
-      prev_states[static_cast<std::size_t>(i)] = y[i];
+    for (int i = 0; i < n; ++i) finite = finite && std::isfinite(y[i]);
+    for (int i = n_aero0; i < n_aero1; ++i) {
+      const std::size_t s = static_cast<std::size_t>(i - n_aero0);
+      state_change = std::max(state_change, std::abs(y[i] - prev_states[s]));
+      prev_states[s] = y[i];
     }
     summary.last_state_change = state_change;
     summary.per_cycle.push_back(cm);
@@ -181,24 +202,40 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
   summary.rhs_evaluations = integrator.rhsEvaluations();
   summary.step_attempts = integrator.stepAttempts();
   if (summary.status == SimulationStatus::kNotConverged) {
+    char buf[200];
     if (summary.steady_state_cycle > 0) {
       summary.status = SimulationStatus::kOk;
-      char buf[200];
       std::snprintf(buf, sizeof buf,
                     "periodic steady state reached at cycle %d (cycle-to-cycle change %.2e <= "
                     "%.2e)",
                     summary.steady_state_cycle, summary.last_cycle_change, options.steady_tol);
-      summary.message = buf;
     } else {
-      char buf[200];
       std::snprintf(buf, sizeof buf,
                     "periodic steady state not reached in %d cycles (last cycle-to-cycle change "
                     "%.2e > %.2e)",
                     summary.cycles_run, summary.last_cycle_change, options.steady_tol);
-      summary.message = buf;
     }
+    summary.message = buf;
   }
   return summary;
+}
+
+}  // namespace
+
+SimulationSummary simulateTethered(const FlightCoreModel& model, const OperatingPoint& point,
+                                   const SimulationOptions& options, TimeHistory* history) {
+  std::string why;
+  if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
+  if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
+    throw std::invalid_argument("tethered simulation needs speed > 0 and frequency > 0");
+  const BodyMotion body = tetheredBodyMotion(point.speed_mps, point.theta_rad);
+  const ControlInput control{point.freq_hz, point.tail_angle_rad};
+  if (model.flexible) {
+    FlexibleTetheredSystem sys(model, *model.flexible, body, control);
+    return runCycles(sys, model, point, options, history);
+  }
+  RigidTetheredSystem sys(model, body, control);
+  return runCycles(sys, model, point, options, history);
 }
 
 }  // namespace orni

@@ -49,6 +49,15 @@ struct WingSkin {
 enum class Planform { kRectangular, kQuarterEllipse };
 enum class StructureLevel { kRigid, kFlexible };
 
+/// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6).
+struct WingFeSettings {
+  double element_size_m = 0.005;  ///< target element edge h, (0, semispan]
+  int mode_count = 12;            ///< fixed-interface modes kept (at most), [1, 200]
+  double cutoff_hz = 0.0;         ///< keep only modes below this frequency; 0 = no cut-off
+  double damping_ratio = 0.015;   ///< modal damping zeta of every mode, [0, 1)
+  bool p3_cross_axis_normal = true;  ///< universal-joint cross axis n_u = z_W (true) or y_W
+};
+
 /// Geometry and structure of the right wing; the left wing is its mirror image.
 struct WingModel {
   Planform planform = Planform::kRectangular;
@@ -61,6 +70,7 @@ struct WingModel {
   double p3_aft_of_le_m = 0.0;  ///< P3 (universal joint) on the root chord, [0, c0]
   WingSkin skin;
   std::vector<WingMember> members;
+  WingFeSettings fe;
 };
 
 enum class AeroModelKind { kMstTd, kDeLaurier1993 };

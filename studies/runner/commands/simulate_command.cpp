@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/analysis/harmonics.hpp"
+#include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/run_info.hpp"
@@ -52,6 +53,10 @@ CsvTable historyTable(const TimeHistory& h) {
   t.addColumn("M_tail", "N m", column(h, [](const LoadSample& s) { return s.M_tail_Nm; }));
   t.addColumn("separated_fraction", "-",
               column(h, [](const LoadSample& s) { return s.separated_fraction; }));
+  t.addColumn("tip_deflection", "m",
+              column(h, [](const LoadSample& s) { return s.tip_deflection_m; }));
+  t.addColumn("tip_twist", "deg",
+              column(h, [](const LoadSample& s) { return s.tip_twist_rad * kRadToDeg; }));
   return t;
 }
 
@@ -110,6 +115,15 @@ std::string loadsFigure(const Study& study, const SimulationSummary& s) {
        "'' skip 2 using 1:13 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
   g << "unset multiplot\n";
   return g.str();
+}
+
+double halfRange(const double* x, std::size_t n, std::size_t stride) {
+  double lo = x[0], hi = x[0];
+  for (std::size_t i = 1; i < n; ++i) {
+    lo = std::min(lo, x[i * stride]);
+    hi = std::max(hi, x[i * stride]);
+  }
+  return 0.5 * (hi - lo);
 }
 
 }  // namespace
@@ -174,9 +188,10 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
       .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
                                                                            : "delaurier1993")
-      .set("structure", "rigid")
+      .set("structure", model.flexible ? "flexible" : "rigid")
       .set("strips", static_cast<int>(model.strips.size()))
-      .set("wing_mass_kg", model.wing_mass.total.mass_kg)
+      .set("wing_mass_kg", model.flexible ? model.flexible->modal->wing_mass_kg
+                                          : model.wing_mass.total.mass_kg)
       .set("last_cycle",
            JsonObject()
                .set("FV_amplitude_1f_N", fv1.amplitude)
@@ -185,7 +200,10 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
                .set("FH_amplitude_2f_N", fh2.amplitude)
                .set("M_amplitude_1f_Nm", m1.amplitude)
                .set("FV_peak_phase", peakPhase(fv, spc, stride))
-               .set("FH_peak_phase", peakPhase(fh, spc, stride)))
+               .set("FH_peak_phase", peakPhase(fh, spc, stride))
+               .set("tip_deflection_amplitude_m", halfRange(&history.loads[start].tip_deflection_m, spc, stride))
+               .set("tip_twist_amplitude_deg",
+                    kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)))
       .set("integrator", JsonObject()
                              .set("method", "ARKODE ERKStep Dormand-Prince 5(4)")
                              .set("rel_tol", opts.rel_tol)

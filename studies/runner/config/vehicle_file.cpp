@@ -26,6 +26,10 @@ const std::vector<std::pair<std::string, AeroModelKind>> kAeroModels = {
     {"mst-td", AeroModelKind::kMstTd}, {"delaurier1993", AeroModelKind::kDeLaurier1993}};
 const std::vector<std::pair<std::string, CirculationLag>> kLags = {
     {"scherer", CirculationLag::kScherer1}, {"jones", CirculationLag::kJones2}};
+/// Cross axis n_u of the universal joint at P3 (structure.md 2.1): the wing normal z_W or y_W.
+const std::vector<std::pair<std::string, bool>> kCrossAxes = {{"normal", true}, {"span", false}};
+/// Largest number of fixed-interface modes a vehicle may ask for.
+constexpr int kMaxModes = 200;
 
 template <typename E>
 std::string nameOf(const std::vector<std::pair<std::string, E>>& choices, E value) {
@@ -95,7 +99,7 @@ std::string requireMaterial(TableReader& r, const std::vector<Material>& materia
 void readWing(TableReader& top, VehicleModel& v) {
   TableReader w =
       top.requiredTable("wing", {"planform", "semispan_m", "root_chord_m", "incidence_deg",
-                                 "strips", "structure", "p3_aft_of_le_m", "skin", "members"});
+                                 "strips", "structure", "p3_aft_of_le_m", "skin", "members", "fe"});
   WingModel& wing = v.wing;
   wing.planform = w.requiredEnum("planform", kPlanforms);
   wing.semispan_m = w.requiredDouble("semispan_m", Range::positive());
@@ -152,6 +156,25 @@ void readWing(TableReader& top, VehicleModel& v) {
     member.end_y_W_m = end[1];
     m.finish();
     wing.members.push_back(std::move(member));
+  }
+
+  // [wing.fe]: finite-element and modal settings, every key optional (structure.md 1.6, 2.5, 2.6).
+  if (std::optional<TableReader> fe = w.optionalTable(
+          "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis"})) {
+    WingFeSettings& f = wing.fe;
+    f.element_size_m = fe->optionalDouble("element_size_m", f.element_size_m,
+                                          Range::openClosed(0.0, wing.semispan_m));
+    f.mode_count = fe->optionalInt("modes", f.mode_count, 1, kMaxModes);
+    f.cutoff_hz = fe->optionalDouble("cutoff_hz", f.cutoff_hz, Range::nonNegative());
+    f.damping_ratio =
+        fe->optionalDouble("damping_ratio", f.damping_ratio, Range::closedOpen(0.0, 1.0));
+    f.p3_cross_axis_normal =
+        fe->optionalEnum("p3_cross_axis", f.p3_cross_axis_normal, kCrossAxes);
+    fe->finish();
+  } else if (!(wing.fe.element_size_m <= wing.semispan_m)) {
+    // Default h = min(5 mm, s), so that a (tiny) wing without [wing.fe] still writes a resolved
+    // file that loads again.
+    wing.fe.element_size_m = wing.semispan_m;
   }
   w.finish();
 }
@@ -315,6 +338,12 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
     out.numberArray("start_xy_m", {m.start_x_W_m, m.start_y_W_m});
     out.numberArray("end_xy_m", {m.end_x_W_m, m.end_y_W_m});
   }
+  out.header(path({"wing", "fe"}));
+  out.number("element_size_m", w.fe.element_size_m);
+  out.integer("modes", w.fe.mode_count);
+  out.number("cutoff_hz", w.fe.cutoff_hz, w.fe.cutoff_hz > 0.0 ? "" : "0 = no cut-off");
+  out.number("damping_ratio", w.fe.damping_ratio);
+  out.string("p3_cross_axis", nameOf(kCrossAxes, w.fe.p3_cross_axis_normal));
 
   for (const Material& m : v.materials) {
     out.header(path({"materials", m.name}));

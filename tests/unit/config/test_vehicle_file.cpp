@@ -51,6 +51,11 @@ void expectSameVehicle(const VehicleModel& a, const VehicleModel& b) {
     EXPECT_EQ(p.end_x_W_m, q.end_x_W_m);
     EXPECT_EQ(p.end_y_W_m, q.end_y_W_m);
   }
+  EXPECT_EQ(a.wing.fe.element_size_m, b.wing.fe.element_size_m);
+  EXPECT_EQ(a.wing.fe.mode_count, b.wing.fe.mode_count);
+  EXPECT_EQ(a.wing.fe.cutoff_hz, b.wing.fe.cutoff_hz);
+  EXPECT_EQ(a.wing.fe.damping_ratio, b.wing.fe.damping_ratio);
+  EXPECT_EQ(a.wing.fe.p3_cross_axis_normal, b.wing.fe.p3_cross_axis_normal);
   ASSERT_EQ(a.materials.size(), b.materials.size());
   for (std::size_t i = 0; i < a.materials.size(); ++i) {
     EXPECT_EQ(a.materials[i].name, b.materials[i].name);
@@ -125,6 +130,12 @@ TEST(ConfigVehicleFile, LoadsEfwMagpieInSi) {
     EXPECT_GE(m.end_x_W_m, x_te - 1e-12) << m.name;
     EXPECT_LT(m.end_x_W_m - x_te, 1e-6) << m.name;
   }
+
+  EXPECT_DOUBLE_EQ(v.wing.fe.element_size_m, 0.005);
+  EXPECT_EQ(v.wing.fe.mode_count, 12);
+  EXPECT_DOUBLE_EQ(v.wing.fe.cutoff_hz, 0.0);
+  EXPECT_DOUBLE_EQ(v.wing.fe.damping_ratio, 0.015);
+  EXPECT_TRUE(v.wing.fe.p3_cross_axis_normal);
 
   ASSERT_EQ(v.materials.size(), 4u);
   const Material* le1 = v.findMaterial("LE1");
@@ -212,6 +223,56 @@ TEST(ConfigVehicleFile, WriterRoundTripsModelDefaults) {
   const std::string text = vehicleToToml(v);
   const toml::table t = toml::parse(std::string_view(text), std::string("resolved.toml"));
   expectSameVehicle(v, parseVehicleTable(t, "resolved.toml"));
+}
+
+TEST(ConfigVehicleFile, WingFeSettingsRoundTrip) {
+  // Non-default [wing.fe] values survive writing and reading; the table is always written.
+  VehicleModel v = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  v.wing.fe.element_size_m = 0.0035;
+  v.wing.fe.mode_count = 37;
+  v.wing.fe.cutoff_hz = 240.5;
+  v.wing.fe.damping_ratio = 0.02;
+  v.wing.fe.p3_cross_axis_normal = false;
+  const std::string text = vehicleToToml(v);
+  EXPECT_NE(text.find("[wing.fe]\nelement_size_m = 0.0035\nmodes = 37\ncutoff_hz = 240.5\n"
+                      "damping_ratio = 0.02\np3_cross_axis = \"span\"\n"),
+            std::string::npos)
+      << text;
+  const toml::table t = toml::parse(std::string_view(text), std::string("resolved.toml"));
+  const VehicleModel back = parseVehicleTable(t, "resolved.toml");
+  expectSameVehicle(v, back);
+  EXPECT_EQ(vehicleToToml(back), text);
+}
+
+TEST(ConfigVehicleFile, WingFeDefaultsWhenAbsent) {
+  const char* text = R"(name = "m"
+[wing]
+planform = "rectangular"
+semispan_m = 0.27
+root_chord_m = 0.1
+strips = 10
+[wing.skin]
+material = "FILM"
+thickness_m = 4e-5
+[materials.FILM]
+youngs_modulus_gpa = 2.0
+poisson_ratio = 0.35
+density_kgpm3 = 1000.0
+[kinematics]
+amplitude_deg = 30.0
+[operating_point]
+speed_mps = 6.0
+freq_hz = 4.0
+theta_deg = 0.0
+)";
+  const toml::table t = toml::parse(std::string_view(text), std::string("mem.toml"));
+  const VehicleModel v = parseVehicleTable(t, "mem.toml");
+  const WingFeSettings d;
+  EXPECT_EQ(v.wing.fe.element_size_m, d.element_size_m);
+  EXPECT_EQ(v.wing.fe.mode_count, d.mode_count);
+  EXPECT_EQ(v.wing.fe.cutoff_hz, d.cutoff_hz);
+  EXPECT_EQ(v.wing.fe.damping_ratio, d.damping_ratio);
+  EXPECT_EQ(v.wing.fe.p3_cross_axis_normal, d.p3_cross_axis_normal);
 }
 
 TEST(ConfigTomlWriter, NumbersAreShortAndExact) {
@@ -313,6 +374,33 @@ TEST(ConfigVehicleMessages, Formats) {
             "(\"FILM\"), got an unknown material \"FOIL\"");
   EXPECT_EQ(errorOf(replaced("amplitude_deg = 30.0", "amplitude_deg = 90")),
             "mem.toml:15: key 'kinematics.amplitude_deg': expected a number in (0, 90), got 90");
+}
+
+TEST(ConfigVehicleMessages, WingFeFormats) {
+  auto withFe = [](const std::string& lines) {
+    return replaced("[materials.FILM]", "[wing.fe]\n" + lines + "[materials.FILM]");
+  };
+  EXPECT_EQ(errorOf(withFe("")), "accepted");
+  EXPECT_EQ(errorOf(withFe("element_size_m = 0.002\nmodes = 200\ncutoff_hz = 0\n"
+                           "damping_ratio = 0\np3_cross_axis = \"span\"\n")),
+            "accepted");
+  EXPECT_EQ(errorOf(withFe("element_size_m = 0.0\n")),
+            "mem.toml:11: key 'wing.fe.element_size_m': expected a number in (0, 0.27], got 0");
+  EXPECT_EQ(errorOf(withFe("element_size_m = 0.3\n")),
+            "mem.toml:11: key 'wing.fe.element_size_m': expected a number in (0, 0.27], got 0.3");
+  EXPECT_EQ(errorOf(withFe("modes = 201\n")),
+            "mem.toml:11: key 'wing.fe.modes': expected an integer in [1, 200], got 201");
+  EXPECT_EQ(errorOf(withFe("modes = 12.0\n")),
+            "mem.toml:11: key 'wing.fe.modes': expected an integer in [1, 200], got a float 12.0");
+  EXPECT_EQ(errorOf(withFe("cutoff_hz = -1\n")),
+            "mem.toml:11: key 'wing.fe.cutoff_hz': expected a number >= 0, got -1");
+  EXPECT_EQ(errorOf(withFe("damping_ratio = 1\n")),
+            "mem.toml:11: key 'wing.fe.damping_ratio': expected a number in [0, 1), got 1");
+  EXPECT_EQ(errorOf(withFe("p3_cross_axis = \"norml\"\n")),
+            "mem.toml:11: key 'wing.fe.p3_cross_axis': expected one of \"normal\" or \"span\", "
+            "got a string \"norml\" (did you mean \"normal\"?)");
+  EXPECT_EQ(errorOf(withFe("mode = 12\n")),
+            "mem.toml:11: unknown key 'wing.fe.mode' (did you mean 'modes'?)");
 }
 
 TEST(ConfigVehicleMessages, IntegersAcceptedForFloats) {

@@ -1,0 +1,263 @@
+#include "core/dynamics/flexible_tethered.hpp"
+
+#include <cmath>
+
+#include "core/aero/tail.hpp"
+#include "core/dynamics/flapping.hpp"
+
+namespace orni {
+
+FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
+                                               const FlexibleWingModel& flex,
+                                               const BodyMotion& body,
+                                               const ControlInput& control)
+    : model_(model),
+      flex_(flex),
+      body_(body),
+      control_(control),
+      M_(flex.mode_count),
+      n_aero_(model.aeroStateCount()),
+      data_(model),
+      q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_),
+      A_(M_, M_),
+      ldlt_(M_),
+      b_strip_(static_cast<Eigen::Index>(model.strips.size())),
+      s_L_(model.strips.size()), e_c_(model.strips.size()), n_(model.strips.size()),
+      e_s_(model.strips.size()), v_rel_L_(model.strips.size()),
+      twist_rate_(static_cast<Eigen::Index>(model.strips.size())) {
+  if (!aero::batchKernelApplies(model.vehicle.aero))
+    throw std::invalid_argument(
+        "the flexible wing needs aero model mst-td with the Scherer lag and a smooth stall "
+        "(stall_width_deg > 0)");
+  // Friction coefficients for the tethered speed (M11 depends on U only).
+  const double U = body.v_P1_B.norm();
+  for (std::size_t j = 0; j < model.strips.size(); ++j)
+    data_.batch.friction_coefficient[static_cast<Eigen::Index>(j)] = aero::frictionCoefficient(
+        U * model.strip_geometry[j].chord_m / model.vehicle.air.kinematic_viscosity_m2ps);
+  aero::prepareStripBatch(model.aero_context, data_.batch);
+  data_.batch.airx.setZero();
+  data_.batch.airy.setZero();
+  data_.batch.airz.setZero();
+}
+
+void FlexibleTetheredSystem::initialState(double t_s, double* y) const {
+  for (int i = 0; i < 2 * M_; ++i) y[i] = 0.0;
+  initialAeroStates(model_, body_, control_, t_s, y + aeroOffset());
+  for (int c = 0; c < kQuadratureChannels; ++c) y[quadratureOffset() + c] = 0.0;
+}
+
+void FlexibleTetheredSystem::absoluteTolerances(double rel_tol, double lag_abs_tol,
+                                                double separation_abs_tol,
+                                                std::vector<double>* atol) const {
+  atol->assign(static_cast<std::size_t>(stateCount()), lag_abs_tol);
+  // Mass-normalised modal coordinates (m sqrt(kg)): a centimetre tip deflection of the magpie wing
+  // is q ~ 1e-4, its rate ~ 1e-2 (structure.md 5.2 gives 1e-9 and 1e-7 at rel_tol 1e-6 scale).
+  for (int i = 0; i < M_; ++i) {
+    (*atol)[static_cast<std::size_t>(i)] = 1e-5 * rel_tol;
+    (*atol)[static_cast<std::size_t>(M_ + i)] = 1e-3 * rel_tol;
+  }
+  const int per = model_.aero_states_per_strip;
+  for (int i = aeroOffset() + per - 1; i < quadratureOffset(); i += per)
+    (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
+  // Quadratures: scaled by q S T like the rigid wing (tethered_simulation.cpp).
+  const double U = body_.v_P1_B.norm();
+  const double force = 0.5 * model_.vehicle.air.density_kgpm3 * U * U * model_.wing_area_both_m2;
+  const double T = 1.0 / control_.freq_hz;
+  const double scales[kQuadratureChannels] = {force, force, force * model_.mean_chord_m,
+                                              force * U, force * U};
+  for (int c = 0; c < kQuadratureChannels; ++c)
+    (*atol)[static_cast<std::size_t>(quadratureOffset() + c)] = 0.1 * rel_tol * scales[c] * T;
+}
+
+void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_derivatives,
+                                      AeroResult* aero) {
+  const FlapState flap = flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
+  R_BW_ = rotX(flap.phi_rad);
+  omega_W_ = Vec3(flap.phi_dot_radps, 0.0, 0.0);  // the body does not rotate (tethered)
+  alpha_W_ = Vec3(flap.phi_ddot_radps2, 0.0, 0.0);
+  q_ = Eigen::Map<const Eigen::VectorXd>(y, M_);
+  qd_ = Eigen::Map<const Eigen::VectorXd>(y + M_, M_);
+  const Vec3 v_body_W = R_BW_.transpose() * body_.v_P1_B;
+
+  // Strip kinematics from rigid motion plus modes (structure.md 4.2), W components.
+  aero::StripBatch& b = data_.batch;
+  const std::size_t ns = flex_.strips.size();
+  for (std::size_t j = 0; j < ns; ++j) {
+    const FlexibleStrip& fs = flex_.strips[j];
+    const auto i = static_cast<Eigen::Index>(j);
+    const Vec3 s_L = fs.x_L_W_m + fs.phi_L * q_;
+    const Vec3 s_T = fs.x_T_W_m + fs.phi_T * q_;
+    const Vec3 ud_L = fs.phi_L * qd_;
+    const Vec3 e_c = (s_L - s_T).normalized();                       // TE -> LE
+    const Vec3 e_s = (Vec3::UnitY() - e_c.y() * e_c).normalized();   // span, normal to e_c
+    const Vec3 n = e_s.cross(e_c);                                   // up
+    const double twist_rate = fs.psi_twist.dot(qd_);
+    const Vec3 v_rel = omega_W_.cross(s_L) + ud_L;
+    const Vec3 a0 = alpha_W_.cross(s_L) + omega_W_.cross(omega_W_.cross(s_L)) +
+                    2.0 * omega_W_.cross(ud_L);
+    const Vec3 w = omega_W_ + twist_rate * e_s;
+    const Vec3 wd0 = alpha_W_ + omega_W_.cross(twist_rate * e_s);
+    const Vec3 v = v_body_W + v_rel;
+    b.ecx[i] = e_c.x(); b.ecy[i] = e_c.y(); b.ecz[i] = e_c.z();
+    b.nx[i] = n.x(); b.ny[i] = n.y(); b.nz[i] = n.z();
+    b.vx[i] = v.x(); b.vy[i] = v.y(); b.vz[i] = v.z();
+    b.ax[i] = a0.x(); b.ay[i] = a0.y(); b.az[i] = a0.z();
+    b.wx[i] = w.x(); b.wy[i] = w.y(); b.wz[i] = w.z();
+    b.wdx[i] = wd0.x(); b.wdy[i] = wd0.y(); b.wdz[i] = wd0.z();
+    s_L_[j] = s_L;
+    e_c_[j] = e_c;
+    n_[j] = n;
+    e_s_[j] = e_s;
+    v_rel_L_[j] = v_rel;
+    twist_rate_[i] = twist_rate;
+  }
+  aero::evalMstTdBatch(model_.aero_context, b, y + aeroOffset(), aero_derivatives);
+
+  // Generalised aerodynamic forces (structure.md 4.3) and apparent mass on the left (4.4).
+  Q_.setZero();
+  A_ = flex_.M_qq;
+  for (std::size_t j = 0; j < ns; ++j) {
+    const FlexibleStrip& fs = flex_.strips[j];
+    const auto i = static_cast<Eigen::Index>(j);
+    const Vec3 F(b.Fx[i], b.Fy[i], b.Fz[i]);
+    const double m_pitch = b.Mx[i] * e_s_[j].x() + b.My[i] * e_s_[j].y() + b.Mz[i] * e_s_[j].z();
+    Q_.noalias() += fs.phi_L.transpose() * F;
+    Q_.noalias() += fs.psi_twist.transpose() * m_pitch;
+    b_strip_[i] = 0.5 * (1.0 + b.separation_f[i]) * flex_.apparent_mass_kg[i];
+    A_.noalias() += b_strip_[i] * fs.psi_mid * fs.psi_mid.transpose();
+  }
+  // Modal equation (structure.md 3.4) with w = phi' e_x, alpha = phi'' e_x.
+  const double wx = flap.phi_dot_radps, ax = flap.phi_ddot_radps2;
+  rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_);
+  rhs_vec_.noalias() -= (2.0 * wx) * (flex_.C1 * qd_);
+  rhs_vec_.noalias() -= (wx * wx) * (flex_.P11_minus_trace * q_);
+  rhs_vec_.noalias() -= ax * (flex_.C1 * q_);
+  rhs_vec_ -= ax * flex_.H_x + (wx * wx) * flex_.h_x;
+  ldlt_.compute(A_);
+  qdd_ = ldlt_.solve(rhs_vec_);
+
+  // Aerodynamic resultant of the wing on the frame, about P2 (W), including the apparent-mass
+  // force of q'' (normal, at mid-chord) that the kernel could not know.
+  if (aero) {
+    Vec3 F = Vec3::Zero(), M = Vec3::Zero();
+    double power = 0.0, separated = 0.0, area = 0.0;
+    for (std::size_t j = 0; j < ns; ++j) {
+      const FlexibleStrip& fs = flex_.strips[j];
+      const auto i = static_cast<Eigen::Index>(j);
+      const Vec3 F_j(b.Fx[i], b.Fy[i], b.Fz[i]);
+      const Vec3 M_j(b.Mx[i], b.My[i], b.Mz[i]);
+      const double extra = -b_strip_[i] * fs.psi_mid.dot(qdd_);
+      const Vec3 F_extra = extra * n_[j];
+      const Vec3 s_mid = s_L_[j] - 0.5 * b.chord_m[i] * e_c_[j];
+      F += F_j + F_extra;
+      M += s_L_[j].cross(F_j) + M_j + s_mid.cross(F_extra);
+      const Vec3 w_rel = omega_W_ + twist_rate_[i] * e_s_[j];
+      const Vec3 v_rel_mid = v_rel_L_[j] + w_rel.cross(-0.5 * b.chord_m[i] * e_c_[j]);
+      power -= F_j.dot(v_rel_L_[j]) + M_j.dot(w_rel) + F_extra.dot(v_rel_mid);
+      const double a = b.chord_m[i] * b.width_m[i];
+      separated += (1.0 - b.separation_f[i]) * a;
+      area += a;
+    }
+    aero->F_W = F;
+    aero->M_P2_W = M;
+    aero->power_aero_W = power;
+    aero->separated_fraction = area > 0 ? separated / area : 0.0;
+  }
+}
+
+void FlexibleTetheredSystem::fuselageLoads(const AeroResult& aero, const Vec3& F_inertial_W,
+                                           const Vec3& M_inertial_P2_W,
+                                           double hinge_power_one_wing_W, LoadSample* out) const {
+  const Vec3& p2 = model_.p_P1P2_B;
+  const Vec3 Fa = R_BW_ * aero.F_W, Fi = R_BW_ * F_inertial_W;
+  const Vec3 Ma = R_BW_ * aero.M_P2_W + p2.cross(Fa);
+  const Vec3 Mi = R_BW_ * M_inertial_P2_W + p2.cross(Fi);
+  const double U = body_.v_P1_B.norm();
+  const Vec3 e_v = body_.v_P1_B / U;
+  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+  LoadSample& o = *out;
+  o = LoadSample{};
+  o.FV_wing_aero_N = 2.0 * Fa.dot(e_L);
+  o.FH_wing_aero_N = 2.0 * Fa.dot(e_v);
+  o.M_wing_aero_Nm = 2.0 * Ma.y();
+  o.FV_wing_inertial_N = 2.0 * Fi.dot(e_L);
+  o.FH_wing_inertial_N = 2.0 * Fi.dot(e_v);
+  o.M_wing_inertial_Nm = 2.0 * Mi.y();
+  o.power_aero_W = 2.0 * aero.power_aero_W;
+  o.power_hinge_W = 2.0 * hinge_power_one_wing_W;
+  o.separated_fraction = aero.separated_fraction;
+  if (model_.vehicle.tail.present) {
+    aero::TailFlow flow;
+    flow.theta_body_rad = body_.theta_rad;
+    flow.flight_path_rad = 0.0;
+    flow.airspeed_mps = U;
+    flow.wing_downwash_rad = model_.vehicle.tail.downwash_factor *
+                             (body_.theta_rad + model_.vehicle.wing.incidence_rad);
+    flow.tail_angle_rad = control_.tail_angle_rad;
+    const aero::TailLoads tl = aero::evalTail(model_.vehicle.tail,
+                                              model_.vehicle.air.density_kgpm3, flow);
+    const Vec3 F_tail = tl.lift_N * e_L - tl.drag_N * e_v;
+    o.FV_tail_N = tl.lift_N;
+    o.FH_tail_N = -tl.drag_N;
+    o.M_tail_Nm = model_.p_P1P4_B.cross(F_tail).y();
+    o.tail_alpha_rad = tl.alpha_rad;
+  }
+  o.FV_N = o.FV_wing_aero_N + o.FV_wing_inertial_N + o.FV_tail_N;
+  o.FH_N = o.FH_wing_aero_N + o.FH_wing_inertial_N + o.FH_tail_N;
+  o.M_Nm = o.M_wing_aero_Nm + o.M_wing_inertial_Nm + o.M_tail_Nm;
+}
+
+void FlexibleTetheredSystem::rhs(double t_s, const double* y, double* ydot) {
+  AeroResult aero;
+  evaluate(t_s, y, ydot + aeroOffset(), &aero);
+  for (int i = 0; i < M_; ++i) {
+    ydot[i] = y[M_ + i];
+    ydot[M_ + i] = qdd_[i];
+  }
+  LoadSample s;
+  const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
+  fuselageLoads(aero, Vec3::Zero(), Vec3::Zero(), aero.power_aero_W + damping_power, &s);
+  double* quad = ydot + quadratureOffset();
+  quad[0] = s.FV_N;
+  quad[1] = s.FH_N;
+  quad[2] = s.M_Nm;
+  quad[3] = s.power_aero_W;
+  quad[4] = s.power_hinge_W;
+}
+
+void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out) {
+  AeroResult aero;
+  evaluate(t_s, y, nullptr, &aero);
+  // Inertial loads of the wing by nodal sums over the FE mesh (structure.md 3.5, level L3):
+  // a_p = alpha x s + w x (w x s) + 2 w x Phi q' + Phi q''.
+  const structure::ModalWing& mw = *flex_.modal;
+  Vec3 F = Vec3::Zero(), M = Vec3::Zero(), J_alpha = Vec3::Zero();
+  double kinetic_rate = 0.0;
+  for (std::size_t p = 0; p < mw.phi_W.size(); ++p) {
+    const double m = mw.nodal_mass_kg[static_cast<Eigen::Index>(p)];
+    if (m <= 0.0) continue;
+    const Eigen::Matrix3Xd& phi = mw.phi_W[p];
+    const Vec3 s = mw.mesh.nodes_W_m[p] + phi * q_;
+    const Vec3 u_d = phi * qd_;
+    const Vec3 a = alpha_W_.cross(s) + omega_W_.cross(omega_W_.cross(s)) +
+                   2.0 * omega_W_.cross(u_d) + phi * qdd_;
+    const Vec3 v = omega_W_.cross(s) + u_d;
+    F -= m * a;
+    M -= m * s.cross(a);
+    kinetic_rate += m * a.dot(v);
+    J_alpha += mw.nodal_rotary_W_kgm2[p] * alpha_W_;
+  }
+  M -= J_alpha;  // rigid rotary inertia of the nodes (w x J w vanishes about the hinge axis here)
+  // Hinge power into one wing: motor moment about x times phi' = aero power + rate of kinetic
+  // energy + rate of strain energy + damping dissipation.
+  const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_));
+  const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
+  const double hinge = aero.power_aero_W + kinetic_rate + omega_W_.dot(J_alpha) + strain_rate +
+                       damping_power;
+  fuselageLoads(aero, F, M, hinge, out);
+  const FlexibleStrip& tip = flex_.strips[static_cast<std::size_t>(flex_.tip_strip)];
+  out->tip_deflection_m = -(tip.phi_L * q_).z();  // z_W is down
+  out->tip_twist_rad = tip.psi_twist.dot(q_);
+}
+
+}  // namespace orni

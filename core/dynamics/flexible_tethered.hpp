@@ -1,0 +1,68 @@
+// Right-hand side of the tethered simulation with the flexible wing (structure.md 3-5): state
+// [q (M), q' (M), MST-TD states (2 per strip), 5 quadratures]. Workspace sized once; the RHS does
+// not allocate.
+#pragma once
+
+#include <Eigen/Cholesky>
+
+#include "core/dynamics/flexible_wing.hpp"
+#include "core/dynamics/flight_core.hpp"
+
+namespace orni {
+
+class FlexibleTetheredSystem {
+ public:
+  FlexibleTetheredSystem(const FlightCoreModel& model, const FlexibleWingModel& flex,
+                         const BodyMotion& body, const ControlInput& control);
+
+  int stateCount() const { return 2 * M_ + n_aero_ + kQuadratureChannels; }
+  int aeroOffset() const { return 2 * M_; }
+  int quadratureOffset() const { return 2 * M_ + n_aero_; }
+  /// Undeformed wing at rest relative to the frame, quasi-steady aero states, zero integrals.
+  void initialState(double t_s, double* y) const;
+  /// Absolute tolerances per state for a relative tolerance rel_tol.
+  void absoluteTolerances(double rel_tol, double lag_abs_tol, double separation_abs_tol,
+                          std::vector<double>* atol) const;
+  /// dy/dt; the quadrature rows receive FV, FH, M (aerodynamic + tail: the inertial loads of a
+  /// periodic orbit average to zero) and the aerodynamic and hinge power (aero + modal damping).
+  void rhs(double t_s, const double* y, double* ydot);
+  /// Full loads at (t, y) for the histories: aerodynamic plus inertial (nodal sums over the FE
+  /// mesh with lumped masses), tip deflection and twist.
+  void sample(double t_s, const double* y, LoadSample* out);
+
+  static int rhsCallback(double t, const double* y, double* ydot, void* self) {
+    static_cast<FlexibleTetheredSystem*>(self)->rhs(t, y, ydot);
+    return 0;
+  }
+
+ private:
+  struct AeroResult {
+    Vec3 F_W = Vec3::Zero();      // both wings not yet applied: one (right) wing, W components
+    Vec3 M_P2_W = Vec3::Zero();   // about P2
+    double power_aero_W = 0.0;
+    double separated_fraction = 0.0;
+  };
+  // Strip kinematics, kernel, generalised forces; solves for q''. Fills qdd_ and the loads.
+  void evaluate(double t_s, const double* y, double* aero_derivatives, AeroResult* aero);
+  void fuselageLoads(const AeroResult& aero, const Vec3& F_inertial_W, const Vec3& M_inertial_P2_W,
+                     double hinge_power_one_wing_W, LoadSample* out) const;
+
+  const FlightCoreModel& model_;
+  const FlexibleWingModel& flex_;
+  BodyMotion body_;
+  ControlInput control_;
+  int M_ = 0;
+  int n_aero_ = 0;
+  FlightCoreData data_;
+  // Per-evaluation workspace.
+  Mat3 R_BW_ = Mat3::Identity();
+  Vec3 omega_W_ = Vec3::Zero(), alpha_W_ = Vec3::Zero();
+  Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_;
+  Eigen::MatrixXd A_;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::VectorXd b_strip_;  // apparent-mass blend 0.5 (1 + f) per strip
+  std::vector<Vec3> s_L_, e_c_, n_, e_s_, v_rel_L_;
+  Eigen::VectorXd twist_rate_;
+};
+
+}  // namespace orni

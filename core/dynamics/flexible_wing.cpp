@@ -1,0 +1,119 @@
+#include "core/dynamics/flexible_wing.hpp"
+
+#include <atomic>
+#include <cstring>
+#include <map>
+#include <mutex>
+#include <stdexcept>
+#include <string>
+
+#include "core/structure/wing_mesh.hpp"
+
+namespace orni {
+
+FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
+                                     std::shared_ptr<const structure::ModalWing> modal_wing,
+                                     const std::vector<double>& strip_chords_m,
+                                     const std::vector<double>& strip_widths_m)
+    : modal(std::move(modal_wing)) {
+  const structure::ModalWing& mw = *modal;
+  mode_count = mw.modeCount();
+  const int M = mode_count;
+  const std::size_t ns = mw.mesh.strip_nodes.size();
+  if (ns != strip_chords_m.size())
+    throw std::invalid_argument("flexible wing: mesh strips do not match the aerodynamic strips");
+  const Vec3 n_W = -Vec3::UnitZ();  // upper-surface normal of the flat wing (structure.md 1.1)
+  strips.resize(ns);
+  apparent_mass_kg.resize(static_cast<Eigen::Index>(ns));
+  const double rho = vehicle.air.density_kgpm3;
+  for (std::size_t j = 0; j < ns; ++j) {
+    const structure::StripSampleNodes& sn = mw.mesh.strip_nodes[j];
+    FlexibleStrip& s = strips[j];
+    s.x_L_W_m = mw.mesh.nodes_W_m[static_cast<std::size_t>(sn.leading_edge)];
+    s.x_T_W_m = mw.mesh.nodes_W_m[static_cast<std::size_t>(sn.three_quarter_chord)];
+    s.phi_L = mw.phi_W[static_cast<std::size_t>(sn.leading_edge)];
+    s.phi_T = mw.phi_W[static_cast<std::size_t>(sn.three_quarter_chord)];
+    s.lever_T_m = (s.x_T_W_m - s.x_L_W_m).norm();
+    const Eigen::Matrix3Xd dphi = s.phi_T - s.phi_L;
+    s.psi_twist = -(n_W.transpose() * dphi) / s.lever_T_m;
+    const double c = strip_chords_m[j];
+    s.psi_mid = ((s.phi_L + (0.5 * c / s.lever_T_m) * dphi).transpose() * n_W);
+    apparent_mass_kg[static_cast<Eigen::Index>(j)] = rho * kPi * c * c / 4.0 * strip_widths_m[j];
+  }
+  tip_strip = static_cast<Eigen::Index>(ns) - 1;
+  stiffness = mw.stiffnessDiagonal();
+  damping = mw.dampingDiagonal();
+  const structure::InertiaInvariants& inv = mw.invariants;
+  M_qq = inv.generalized_mass;
+  // structure.md 3.3: C_1 = P_32 - P_23 (1-based), K_w = sum w_k w_l P_kl - |w|^2 sum_k P_kk,
+  // h_w = sum w_k w_l S_kl - |w|^2 sum_k S_kk; here w = w_x e_x (the hinge axis).
+  C1 = inv.P(2, 1) - inv.P(1, 2);
+  P11_minus_trace = inv.P(0, 0) - (inv.P(0, 0) + inv.P(1, 1) + inv.P(2, 2));
+  h_x = inv.S(0, 0) - (inv.S(0, 0) + inv.S(1, 1) + inv.S(2, 2));
+  H_x = inv.rotational_participation.row(0).transpose();
+  if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
+}
+
+namespace {
+
+std::mutex g_cache_mutex;
+std::map<std::string, std::shared_ptr<const structure::ModalWing>> g_cache;
+std::atomic<long> g_builds{0};
+
+void appendBytes(std::string* key, const void* p, std::size_t n) {
+  key->append(static_cast<const char*>(p), n);
+}
+void appendDouble(std::string* key, double v) { appendBytes(key, &v, sizeof v); }
+
+// Every input the FE model depends on, as exact bytes (no hashing collisions).
+std::string structuralKey(const VehicleModel& v) {
+  std::string k;
+  const WingModel& w = v.wing;
+  const int planform = static_cast<int>(w.planform);
+  appendBytes(&k, &planform, sizeof planform);
+  for (double d : {w.semispan_m, w.root_chord_m, w.p3_aft_of_le_m, w.skin.thickness_m,
+                   w.fe.element_size_m, w.fe.cutoff_hz, w.fe.damping_ratio,
+                   v.air.density_kgpm3})
+    appendDouble(&k, d);
+  appendBytes(&k, &w.strip_count, sizeof w.strip_count);
+  appendBytes(&k, &w.fe.mode_count, sizeof w.fe.mode_count);
+  k.push_back(w.fe.p3_cross_axis_normal ? 'n' : 's');
+  k += w.skin.material + '\0';
+  for (const WingMember& m : w.members) {
+    k += m.name + '\0' + m.material + '\0';
+    for (double d : {m.diameter_m, m.start_x_W_m, m.start_y_W_m, m.end_x_W_m, m.end_y_W_m})
+      appendDouble(&k, d);
+  }
+  for (const Material& m : v.materials) {
+    k += m.name + '\0';
+    for (double d : {m.youngs_modulus_pa, m.poisson_ratio, m.density_kgpm3}) appendDouble(&k, d);
+  }
+  return k;
+}
+
+}  // namespace
+
+std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& vehicle) {
+  const std::string key = structuralKey(vehicle);
+  {
+    std::lock_guard<std::mutex> lock(g_cache_mutex);
+    auto it = g_cache.find(key);
+    if (it != g_cache.end()) return it->second;
+  }
+  const structure::WingMesh mesh = structure::buildWingMesh(vehicle, vehicle.wing.fe.element_size_m);
+  structure::ModalWingOptions opts;
+  opts.selection.max_modes = vehicle.wing.fe.mode_count;
+  opts.selection.cutoff_hz = vehicle.wing.fe.cutoff_hz;
+  opts.damping_ratio = vehicle.wing.fe.damping_ratio;
+  opts.p3_cross_axis = vehicle.wing.fe.p3_cross_axis_normal ? structure::UniversalJointCrossAxis::kZW
+                                                            : structure::UniversalJointCrossAxis::kYW;
+  auto built = std::make_shared<const structure::ModalWing>(
+      structure::buildModalWing(vehicle, mesh, opts));
+  g_builds.fetch_add(1);
+  std::lock_guard<std::mutex> lock(g_cache_mutex);
+  return g_cache.emplace(key, built).first->second;
+}
+
+long modalWingBuildCount() { return g_builds.load(); }
+
+}  // namespace orni

@@ -1,0 +1,62 @@
+// The flexible wing on the prescribed hinge: floating frame W attached to the P2 node, linear modal
+// deformation q (fixed-interface modes, structure.md 2.4), strip kinematics from rigid motion plus
+// modes and strip loads projected back on the modes (structure.md 3.1-3.4, 4.1-4.4).
+//
+// Level L2 of structure.md 3.6: every term linear in q and q-dot of the modal equation
+//   (M_qq + A(f)) q'' + [D + 2 C(w)] q' + [K + K_w(w) + C(alpha)] q = Q_aero - H^T alpha - h_w(w)
+// (structure.md 3.4, tethered: the fuselage does not move, so a_O = 0 and w = phi' e_x), with
+// the apparent air mass A = sum_j b_j m_a,j psi_mid,j psi_mid,j^T on the left-hand side (4.4).
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+#include "core/model/frames.hpp"
+#include "core/model/vehicle_model.hpp"
+#include "core/structure/modal_wing.hpp"
+
+namespace orni {
+
+/// Per-strip modal data (W components; sample nodes L = leading edge, T = three-quarter chord).
+struct FlexibleStrip {
+  Vec3 x_L_W_m, x_T_W_m;            ///< undeformed sample points
+  Eigen::Matrix3Xd phi_L, phi_T;    ///< translational mode shapes at L and T (3 x M)
+  Eigen::RowVectorXd psi_twist;     ///< elastic twist per unit q, nose-up (1 x M):
+                                    ///< -n_W^T (Phi_T - Phi_L) / |x_T - x_L|
+  Eigen::VectorXd psi_mid;          ///< normal displacement of mid-chord per unit q (M):
+                                    ///< (Phi_L + (c/2)/l (Phi_T - Phi_L))^T n_W
+  double lever_T_m = 0.0;           ///< |x_T - x_L|
+};
+
+/// Built once from the vehicle and its ModalWing; immutable.
+struct FlexibleWingModel {
+  std::shared_ptr<const structure::ModalWing> modal;
+  int mode_count = 0;
+  std::vector<FlexibleStrip> strips;
+  Eigen::VectorXd stiffness;        ///< omega_k^2
+  Eigen::VectorXd damping;          ///< 2 zeta_k omega_k
+  Eigen::MatrixXd M_qq;             ///< generalised mass Phi^T M Phi
+  Eigen::MatrixXd C1;               ///< gyroscopic matrix about x_W: P_zy - P_yz (skew)
+  Eigen::MatrixXd P11_minus_trace;  ///< P_xx - sum_k P_kk (spin softening about x_W per w^2)
+  Eigen::VectorXd h_x;              ///< S_xx - sum_k S_kk (centrifugal load about x_W per w^2)
+  Eigen::VectorXd H_x;              ///< row x of H (Euler load per unit alpha_x)
+  Eigen::VectorXd apparent_mass_kg; ///< m_a,j = rho pi c_j^2/4 dy_j per strip
+  Eigen::Index tip_strip = 0;
+
+  FlexibleWingModel(const VehicleModel& vehicle,
+                    std::shared_ptr<const structure::ModalWing> modal_wing,
+                    const std::vector<double>& strip_chords_m,
+                    const std::vector<double>& strip_widths_m);
+};
+
+/// Build (or fetch from the in-process cache, keyed by the exact structural inputs) the modal
+/// wing of a vehicle: mesh with wing.fe.element_size_m, modes per wing.fe. Thread-safe.
+std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& vehicle);
+
+/// Number of modal-wing model builds done by cachedModalWing() in this process (cache test).
+long modalWingBuildCount();
+
+}  // namespace orni

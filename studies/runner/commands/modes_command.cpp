@@ -1,0 +1,382 @@
+#include "studies/runner/commands/modes_command.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+#include "core/structure/calculix_deck.hpp"
+#include "core/structure/modal_wing.hpp"
+#include "core/structure/wing_mesh.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+constexpr double kPi = 3.14159265358979323846;
+/// Largest mesh the command builds (estimated nodes); finer [wing.fe] element sizes are rejected
+/// as bad input rather than left to run out of memory in the eigen-solver.
+constexpr double kMaxEstimatedNodes = 200000.0;
+/// Nodes per (area / h^2) of the station-sweep mesh (EFW, h = 5 mm: 1859 nodes on 882 h^2).
+constexpr double kNodesPerCell = 2.2;
+/// Modes drawn in modes.png/svg.
+constexpr int kFigureModes = 6;
+
+double seconds(Clock::time_point since) {
+  return std::chrono::duration<double>(Clock::now() - since).count();
+}
+
+/// The file that bad [wing.fe] or wing values came from (the study, or the vehicle file).
+std::string inputFile(const Study& study) {
+  const fs::path& p = study.study_path.empty() ? study.vehicle_path : study.study_path;
+  return p.empty() ? std::string("vehicle") : p.string();
+}
+
+double planformArea_m2(const WingModel& w) {
+  const double rect = w.semispan_m * w.root_chord_m;
+  return w.planform == Planform::kQuarterEllipse ? 0.25 * kPi * rect : rect;
+}
+
+std::vector<double> toVector(const Eigen::VectorXd& v) {
+  return std::vector<double>(v.data(), v.data() + v.size());
+}
+
+/// The z_W column of mode k over all nodes, signed so that its largest |w| is positive
+/// (mode shapes are defined up to sign; this makes the output deterministic).
+std::vector<double> modeW(const structure::ModalWing& wing, int k) {
+  const int n = wing.mesh.nodeCount();
+  std::vector<double> w(static_cast<std::size_t>(n));
+  double peak = 0.0;
+  for (int p = 0; p < n; ++p) {
+    const double v = wing.mode_shapes(structure::globalDof(p, structure::kW), k);
+    w[static_cast<std::size_t>(p)] = v;
+    if (std::abs(v) > std::abs(peak)) peak = v;
+  }
+  if (peak < 0.0)
+    for (double& v : w) v = -v;
+  return w;
+}
+
+CsvTable modesTable(const structure::ModalWing& wing) {
+  const int m = wing.modeCount();
+  std::vector<double> index(static_cast<std::size_t>(m));
+  for (int k = 0; k < m; ++k) index[static_cast<std::size_t>(k)] = k + 1;
+  const structure::EffectiveMassTable& e = wing.effective_mass;
+  CsvTable t;
+  t.addColumn("mode", "-", index);
+  t.addColumn("frequency", "Hz", toVector(wing.frequencies_hz));
+  t.addColumn("damping_ratio", "-", toVector(wing.damping_ratios));
+  t.addColumn("flap_effective_mass", "-", toVector(e.flap_fraction));
+  t.addColumn("heave_effective_mass", "-", toVector(e.heave_fraction));
+  t.addColumn("flap_effective_mass_cumulative", "-", toVector(e.flap_cumulative));
+  t.addColumn("heave_effective_mass_cumulative", "-", toVector(e.heave_cumulative));
+  return t;
+}
+
+CsvTable modeShapeTable(const structure::ModalWing& wing) {
+  const int n = wing.mesh.nodeCount();
+  std::vector<double> id(static_cast<std::size_t>(n)), x(id.size()), y(id.size());
+  for (int p = 0; p < n; ++p) {
+    const auto i = static_cast<std::size_t>(p);
+    id[i] = p;
+    x[i] = wing.mesh.nodes_W_m[i].x();
+    y[i] = wing.mesh.nodes_W_m[i].y();
+  }
+  CsvTable t;
+  t.addColumn("node", "-", id);
+  t.addColumn("x_W", "m", x);
+  t.addColumn("y_W", "m", y);
+  for (int k = 0; k < wing.modeCount(); ++k)
+    t.addColumn("w_" + std::to_string(k + 1), "m/sqrt(kg)", modeW(wing, k));
+  return t;
+}
+
+/// Grid of the colour maps: stations along the span, points along the local chord.
+constexpr int kFigureStations = 48;
+constexpr int kFigureChordPoints = 14;
+
+double chordAt(const WingModel& w, double y_m) {
+  if (w.planform == Planform::kRectangular) return w.root_chord_m;
+  const double r = std::min(1.0, y_m / w.semispan_m);
+  return w.root_chord_m * std::sqrt(std::max(0.0, 1.0 - r * r));
+}
+
+/// Values of a nodal field at point (x, y) of the wing plane: linear interpolation in the skin
+/// triangle that contains it (the one with the largest smallest barycentric coordinate, so points
+/// on the boundary or a hair outside use their nearest triangle).
+class PlanformInterpolator {
+ public:
+  explicit PlanformInterpolator(const structure::WingMesh& mesh) : mesh_(mesh) {}
+
+  /// Triangle index and barycentric weights of (x, y); index -1 when the mesh has no triangle.
+  std::pair<int, Eigen::Vector3d> locate(double x, double y) const {
+    int best = -1;
+    double best_min = -std::numeric_limits<double>::infinity();
+    Eigen::Vector3d best_l = Eigen::Vector3d::Zero();
+    for (std::size_t t = 0; t < mesh_.triangles.size(); ++t) {
+      const auto& tri = mesh_.triangles[t];
+      const Eigen::Vector3d& a = mesh_.nodes_W_m[static_cast<std::size_t>(tri[0])];
+      const Eigen::Vector3d& b = mesh_.nodes_W_m[static_cast<std::size_t>(tri[1])];
+      const Eigen::Vector3d& c = mesh_.nodes_W_m[static_cast<std::size_t>(tri[2])];
+      const double det = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
+      if (det == 0.0) continue;
+      const double l1 = ((x - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (y - a.y())) / det;
+      const double l2 = ((b.x() - a.x()) * (y - a.y()) - (x - a.x()) * (b.y() - a.y())) / det;
+      const double l0 = 1.0 - l1 - l2;
+      const double m = std::min({l0, l1, l2});
+      if (m > best_min) {
+        best_min = m;
+        best = static_cast<int>(t);
+        best_l = Eigen::Vector3d(l0, l1, l2);
+        if (m >= 0.0) break;  // inside
+      }
+    }
+    // Outside every triangle: clamp to the nearest one's edge (no extrapolation).
+    if (best_min < 0.0) {
+      best_l = best_l.cwiseMax(0.0);
+      best_l /= best_l.sum();
+    }
+    return {best, best_l};
+  }
+
+  double value(const std::pair<int, Eigen::Vector3d>& where, const std::vector<double>& f) const {
+    if (where.first < 0) return 0.0;
+    const auto& tri = mesh_.triangles[static_cast<std::size_t>(where.first)];
+    return where.second(0) * f[static_cast<std::size_t>(tri[0])] +
+           where.second(1) * f[static_cast<std::size_t>(tri[1])] +
+           where.second(2) * f[static_cast<std::size_t>(tri[2])];
+  }
+
+ private:
+  const structure::WingMesh& mesh_;
+};
+
+/// gnuplot data for the colour maps (a pm3d grid: one scan per span station, separated by blank
+/// lines): columns y_W (mm), x_W (mm), then w / max|w| of the first `modes` modes, interpolated
+/// from the mesh onto kFigureStations x kFigureChordPoints points that follow the planform. A
+/// coarse grid keeps modes.svg small (the full mesh would be ~10 MB of SVG).
+std::string figureData(const structure::ModalWing& wing, const WingModel& planform, int modes) {
+  std::vector<std::vector<double>> w;
+  for (int k = 0; k < modes; ++k) {
+    std::vector<double> v = modeW(wing, k);
+    double peak = 0.0;
+    for (double a : v) peak = std::max(peak, std::abs(a));
+    if (peak > 0.0)
+      for (double& a : v) a /= peak;
+    w.push_back(std::move(v));
+  }
+  const PlanformInterpolator interp(wing.mesh);
+  std::string out =
+      "# Figure data of modes.gp: mode shapes on a planform grid (one scan per span station).\n"
+      "# columns: y_W (mm), x_W (mm), w/max|w| of modes 1..N (sign: largest |w| positive)\n";
+  char buf[64];
+  for (int j = 0; j <= kFigureStations; ++j) {
+    const double y = planform.semispan_m * j / kFigureStations;
+    const double c = chordAt(planform, y);
+    for (int i = 0; i <= kFigureChordPoints; ++i) {
+      const double x = -c * i / kFigureChordPoints;
+      const auto where = interp.locate(x, y);
+      std::snprintf(buf, sizeof buf, "%.5g,%.5g", 1e3 * y, 1e3 * x);
+      out += buf;
+      for (const std::vector<double>& v : w) {
+        std::snprintf(buf, sizeof buf, ",%.4f", interp.value(where, v));
+        out += buf;
+      }
+      out += '\n';
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+std::string modesFigure(const Study& study, const structure::ModalWing& wing, int modes) {
+  const WingModel& w = study.vehicle.wing;
+  std::ostringstream g;
+  g << "set multiplot layout 3,2 title \"" << study.name << ": fixed-interface modes (P2 clamped, "
+    << "P3 universal joint), colour = w_z / max|w_z| over the planform (z_W down)\" noenhanced "
+    << "font ',12'\n";
+  g << "set pm3d map corners2color mean\n"
+       "set size ratio -1\n"
+       "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n"
+       "set cbrange [-1:1]\nset cbtics 0.5\nunset key\nunset grid\n"
+       "set xlabel 'y_W (mm)' offset 0,0.5\nset ylabel 'x_W (mm)' offset 1,0\n";
+  g << "set xrange [0:" << 1e3 * w.semispan_m << "]\nset yrange [" << -1e3 * w.root_chord_m
+    << ":0]\n";
+  // Members as black lines on top of the colour map.
+  int id = 1;
+  for (const WingMember& m : w.members)
+    g << "set arrow " << id++ << " from " << 1e3 * m.start_y_W_m << "," << 1e3 * m.start_x_W_m
+      << ",0 to " << 1e3 * m.end_y_W_m << "," << 1e3 * m.end_x_W_m
+      << ",0 nohead front lw 1.2 lc rgb '#222222'\n";
+  for (int k = 0; k < modes; ++k) {
+    char title[96];
+    std::snprintf(title, sizeof title, "mode %d: f = %.1f Hz", k + 1, wing.frequencies_hz(k));
+    g << "set title '" << title << "' font ',12'\n"
+      << "splot 'modes_figure.dat' using 1:2:" << k + 3 << " with pm3d\n";
+  }
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+void writeFailedSummary(const fs::path& out_dir, const std::string& message, double wall_s) {
+  JsonObject summary;
+  summary.set("kind", "modes")
+      .set("status", "failed")
+      .set("message", message)
+      .set("wall_time_s", wall_s)
+      .set("version", versionString());
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+}
+
+}  // namespace
+
+int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& export_ccx_path) {
+  const auto t0 = Clock::now();
+  const VehicleModel& vehicle = study.vehicle;
+  const WingFeSettings& fe = vehicle.wing.fe;
+
+  // Mesh size guard (bad input, exit 2): the estimate is within tens of % of the real count.
+  const double estimated_nodes =
+      kNodesPerCell * planformArea_m2(vehicle.wing) / (fe.element_size_m * fe.element_size_m);
+  if (estimated_nodes > kMaxEstimatedNodes) {
+    char got[96];
+    std::snprintf(got, sizeof got, "%.6g (about %.3g mesh nodes)", fe.element_size_m,
+                  estimated_nodes);
+    throw InputError::wrongValue(inputFile(study), 0, "wing.fe.element_size_m",
+                                 "an element size giving at most " +
+                                     std::to_string(static_cast<long>(kMaxEstimatedNodes)) +
+                                     " mesh nodes",
+                                 got);
+  }
+
+  structure::WingMesh mesh;
+  try {
+    mesh = structure::buildWingMesh(vehicle, fe.element_size_m);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(inputFile(study), 0, "wing",
+                     std::string("the wing cannot be meshed: ") + e.what());
+  }
+  const double mesh_s = seconds(t0);
+
+  structure::ModalWingOptions options;
+  options.p3_cross_axis = fe.p3_cross_axis_normal ? structure::UniversalJointCrossAxis::kZW
+                                                  : structure::UniversalJointCrossAxis::kYW;
+  options.selection.max_modes = fe.mode_count;
+  options.selection.cutoff_hz = fe.cutoff_hz;
+  options.damping_ratio = fe.damping_ratio;
+
+  fs::create_directories(out_dir);
+  Study resolved = study;
+  resolved.kind = StudyKind::kModes;
+  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(resolved));
+
+  // The deck first: it is useful even when our own eigen-solution fails.
+  if (!export_ccx_path.empty()) {
+    structure::CalculixDeckOptions deck_options;
+    deck_options.mode_count = fe.mode_count;
+    deck_options.p3_cross_axis_normal = fe.p3_cross_axis_normal;
+    deck_options.heading = "Ornithopter wing " + vehicle.name + " (" + study.name +
+                           "), fixed-interface modes";
+    writeFileAtomic(export_ccx_path, structure::calculixDeck(vehicle, mesh, deck_options));
+  }
+
+  const auto t1 = Clock::now();
+  structure::ModalWing wing;
+  try {
+    wing = structure::buildModalWing(vehicle, mesh, options);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(inputFile(study), 0, "wing", std::string("bad wing model: ") + e.what());
+  } catch (const std::runtime_error& e) {
+    writeFailedSummary(out_dir, e.what(), seconds(t0));
+    std::cerr << "ornithopter: modes failed: " << e.what() << "\n";
+    return 1;
+  }
+  const double modal_s = seconds(t1);
+
+  const int m = wing.modeCount();
+  const int figure_modes = std::min(kFigureModes, m);
+  writeFileAtomic(out_dir / "modes.csv", modesTable(wing).toString());
+  writeFileAtomic(out_dir / "mode_shapes.csv", modeShapeTable(wing).toString());
+  writeFileAtomic(out_dir / "modes_figure.dat", figureData(wing, vehicle.wing, figure_modes));
+
+  const structure::EffectiveMassTable& e = wing.effective_mass;
+  const double flap_total = m > 0 ? e.flap_cumulative(m - 1) : 0.0;
+  const double heave_total = m > 0 ? e.heave_cumulative(m - 1) : 0.0;
+  const std::string message = wing.selection.BriefReport();
+  const int triangles = static_cast<int>(mesh.triangles.size());
+  const int beams = static_cast<int>(mesh.beams.size());
+
+  JsonObject summary;
+  summary.set("kind", "modes")
+      .set("status", "ok")
+      .set("message", message)
+      .set("wall_time_s", seconds(t0))
+      .set("version", versionString())
+      .set("frequencies_hz", toVector(wing.frequencies_hz))
+      .set("damping_ratios", toVector(wing.damping_ratios))
+      .set("wing_mass_kg", wing.wing_mass_kg)
+      .set("member_mass_kg", wing.member_mass_kg)
+      .set("skin_mass_kg", wing.skin_mass_kg)
+      .set("elements", triangles + beams)
+      .set("modes", m)
+      .set("effective_mass",
+           JsonObject()
+               .set("flap_fraction", flap_total)
+               .set("heave_fraction", heave_total)
+               .set("flap_cumulative", toVector(e.flap_cumulative))
+               .set("heave_cumulative", toVector(e.heave_cumulative))
+               .set("flap_reference_kgm2", e.flap_reference_kgm2)
+               .set("heave_reference_kg", e.heave_reference_kg))
+      .set("mesh", JsonObject()
+                       .set("element_size_m", fe.element_size_m)
+                       .set("nodes", mesh.nodeCount())
+                       .set("triangles", triangles)
+                       .set("beams", beams)
+                       .set("p2_node", mesh.p2_node)
+                       .set("p3_node", mesh.p3_node))
+      .set("settings", JsonObject()
+                           .set("modes_requested", fe.mode_count)
+                           .set("cutoff_hz", fe.cutoff_hz)
+                           .set("damping_ratio", fe.damping_ratio)
+                           .set("p3_cross_axis", fe.p3_cross_axis_normal ? "normal" : "span")
+                           .set("mass_matrix", "consistent"))
+      .set("selection", JsonObject()
+                            .set("cutoff_reached", wing.selection.cutoff_reached)
+                            .set("effective_mass_met", wing.selection.effective_mass_met))
+      .set("build_time_s", JsonObject().set("mesh", mesh_s).set("modal", modal_s));
+  if (!export_ccx_path.empty()) summary.set("calculix_deck", export_ccx_path.string());
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  if (figure_modes > 0) drawFigure(out_dir, "modes", modesFigure(study, wing, figure_modes));
+
+  std::ostringstream brief;
+  brief.precision(4);
+  for (int k = 0; k < std::min(m, 6); ++k) brief << (k ? ", " : "") << wing.frequencies_hz(k);
+  std::cout << study.name << ": " << m << " modes, f = " << brief.str() << (m > 6 ? ", ..." : "")
+            << " Hz; flap/heave effective mass " << flap_total * 100.0 << " / "
+            << heave_total * 100.0 << " %\n  -> " << out_dir.string() << "\n";
+  return 0;
+}
+
+int runModesCommand(const fs::path& vehicle_file, const fs::path& out_dir,
+                    const std::string& export_ccx_path) {
+  Study study = studyFromVehicle(vehicle_file);
+  study.kind = StudyKind::kModes;
+  return runModesStudy(study, out_dir, fs::path(export_ccx_path));
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,57 @@
+// Flexible wing (issue targets: model build <= 200 ms; 10 cycles tethered EFW <= 10 ms).
+//   BM_EfwModalWingBuild: mesh (5 mm) + assembly + eigen-solution (12 modes) + reduction.
+//   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the trim point, 12 modes, MST-TD.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "core/dynamics/flexible_wing.hpp"
+#include "core/dynamics/tethered_simulation.hpp"
+#include "core/structure/modal_wing.hpp"
+#include "core/structure/wing_mesh.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+
+namespace {
+
+using namespace orni;
+
+VehicleModel efwFlexible() {
+  VehicleModel v =
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  v.wing.structure = StructureLevel::kFlexible;
+  return v;
+}
+
+void BM_EfwModalWingBuild(benchmark::State& state) {
+  const VehicleModel v = efwFlexible();
+  int elements = 0;
+  for (auto _ : state) {
+    const structure::WingMesh mesh = structure::buildWingMesh(v, v.wing.fe.element_size_m);
+    structure::ModalWingOptions opts;
+    opts.selection.max_modes = v.wing.fe.mode_count;
+    const structure::ModalWing mw = structure::buildModalWing(v, mesh, opts);
+    benchmark::DoNotOptimize(mw.frequencies_hz.data());
+    elements = static_cast<int>(mesh.triangles.size() + mesh.beams.size());
+  }
+  state.counters["elements"] = elements;
+}
+BENCHMARK(BM_EfwModalWingBuild)->Unit(benchmark::kMillisecond);
+
+void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
+  const VehicleModel v = efwFlexible();
+  const FlightCoreModel model(v);
+  SimulationOptions opts;
+  opts.cycles = 10;
+  opts.record_history = false;
+  long evals = 0;
+  for (auto _ : state) {
+    const SimulationSummary s = simulateTethered(model, v.operating_point, opts, nullptr);
+    benchmark::DoNotOptimize(s.mean.FV_N);
+    evals = s.rhs_evaluations;
+  }
+  state.counters["rhs_evals"] = static_cast<double>(evals);
+  state.counters["modes"] = model.flexible->mode_count;
+}
+BENCHMARK(BM_TetheredEfwFlexible10Cycles)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,246 @@
+// CalculiX deck writer (structure.md 6.2): parse the deck text of a small mesh back and check
+// node and element counts, shared midside nodes, units (mm, MPa, t/mm^3) and the joints.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/structure/calculix_deck.hpp"
+#include "tests/unit/structure/fe_test_meshes.hpp"
+
+namespace orni::structure {
+namespace {
+
+/// One keyword card of a deck: its keyword line ("*ELEMENT, TYPE=S6, ELSET=SKIN") and data lines
+/// (comment lines "**" dropped).
+struct Card {
+  std::string keyword;
+  std::vector<std::string> lines;
+};
+
+std::vector<Card> parseDeck(const std::string& text) {
+  std::vector<Card> cards;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("**", 0) == 0) continue;
+    if (!line.empty() && line[0] == '*') {
+      cards.push_back({line, {}});
+    } else {
+      if (cards.empty()) throw std::runtime_error("data before the first keyword: " + line);
+      cards.back().lines.push_back(line);
+    }
+  }
+  return cards;
+}
+
+std::vector<double> numbers(const std::string& line) {
+  std::vector<double> v;
+  std::string cell;
+  std::istringstream in(line);
+  while (std::getline(in, cell, ',')) v.push_back(std::stod(cell));
+  return v;
+}
+
+std::vector<const Card*> cardsStartingWith(const std::vector<Card>& cards,
+                                           const std::string& prefix) {
+  std::vector<const Card*> out;
+  for (const Card& c : cards)
+    if (c.keyword.rfind(prefix, 0) == 0) out.push_back(&c);
+  return out;
+}
+
+/// Unique undirected edges of the triangles.
+std::size_t edgeCount(const WingMesh& mesh) {
+  std::set<std::pair<int, int>> edges;
+  for (const auto& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int a = t[static_cast<std::size_t>(i)], b = t[static_cast<std::size_t>((i + 1) % 3)];
+      edges.insert({std::min(a, b), std::max(a, b)});
+    }
+  return edges.size();
+}
+
+struct ParsedDeck {
+  std::vector<Card> cards;
+  std::map<int, Eigen::Vector3d> nodes_mm;
+  std::map<std::string, std::vector<std::vector<int>>> elsets;  // "TYPE/ELSET" -> node lists
+};
+
+ParsedDeck parse(const std::string& text) {
+  ParsedDeck d;
+  d.cards = parseDeck(text);
+  for (const Card* c : cardsStartingWith(d.cards, "*NODE,")) {
+    for (const std::string& l : c->lines) {
+      const std::vector<double> v = numbers(l);
+      EXPECT_EQ(v.size(), 4u) << l;
+      d.nodes_mm[static_cast<int>(v[0])] = Eigen::Vector3d(v[1], v[2], v[3]);
+    }
+  }
+  for (const Card* c : cardsStartingWith(d.cards, "*ELEMENT")) {
+    const std::size_t t = c->keyword.find("TYPE="), s = c->keyword.find("ELSET=");
+    const std::string type = c->keyword.substr(t + 5, c->keyword.find(',', t) - t - 5);
+    const std::string key = type + "/" + c->keyword.substr(s + 6);
+    for (const std::string& l : c->lines) {
+      const std::vector<double> v = numbers(l);
+      std::vector<int> ids;
+      for (std::size_t i = 1; i < v.size(); ++i) ids.push_back(static_cast<int>(v[i]));
+      d.elsets[key].push_back(ids);
+    }
+  }
+  return d;
+}
+
+TEST(StructureCalculixDeck, MiniWingS6CountsUnitsAndJoints) {
+  const fe_test::MiniWing w = fe_test::miniWing(4, 8, 0.04, 0.08);
+  CalculixDeckOptions o;
+  o.skin = CalculixSkinElement::kS6;
+  o.mode_count = 7;
+  CalculixDeckStats stats;
+  const std::string text = calculixDeck(w.vehicle, w.mesh, o, &stats);
+  const ParsedDeck d = parse(text);
+
+  // Nodes: mesh nodes + one midside node per edge (every beam lies on a triangle edge).
+  const std::size_t n = static_cast<std::size_t>(w.mesh.nodeCount());
+  ASSERT_EQ(edgeCount(w.mesh), 108u);
+  EXPECT_EQ(d.nodes_mm.size(), n + 108u);
+  EXPECT_EQ(stats.nodes, static_cast<int>(d.nodes_mm.size()));
+  // Units: mm. Mesh node i is deck node i + 1.
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_LT((d.nodes_mm.at(static_cast<int>(i) + 1) - 1e3 * w.mesh.nodes_W_m[i]).norm(), 1e-9);
+
+  ASSERT_EQ(d.elsets.count("S6/SKIN"), 1u);
+  const auto& skin = d.elsets.at("S6/SKIN");
+  EXPECT_EQ(skin.size(), w.mesh.triangles.size());
+  std::set<int> skin_nodes;
+  for (const std::vector<int>& e : skin) {
+    ASSERT_EQ(e.size(), 6u);
+    skin_nodes.insert(e.begin(), e.end());
+    // Midsides at the edge midpoints; normal +z_W (counter-clockwise corners).
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d mid =
+          0.5 * (d.nodes_mm.at(e[static_cast<std::size_t>(k)]) +
+                 d.nodes_mm.at(e[static_cast<std::size_t>((k + 1) % 3)]));
+      EXPECT_LT((d.nodes_mm.at(e[static_cast<std::size_t>(k + 3)]) - mid).norm(), 1e-9);
+    }
+    const Eigen::Vector3d a = d.nodes_mm.at(e[0]), b = d.nodes_mm.at(e[1]), c = d.nodes_mm.at(e[2]);
+    EXPECT_GT((b - a).cross(c - a).z(), 0.0);
+  }
+  EXPECT_EQ(skin_nodes.size(), d.nodes_mm.size());
+
+  // Beams: one ELSET per member, B32R (end, middle, end) sharing the skin's midside nodes.
+  ASSERT_EQ(d.elsets.count("B32R/B1_LE1"), 1u);
+  ASSERT_EQ(d.elsets.count("B32R/B2_STIF"), 1u);
+  EXPECT_EQ(d.elsets.at("B32R/B1_LE1").size(), 8u);
+  EXPECT_EQ(d.elsets.at("B32R/B2_STIF").size(), 2u);
+  for (const auto& name : {"B32R/B1_LE1", "B32R/B2_STIF"})
+    for (const std::vector<int>& e : d.elsets.at(name)) {
+      ASSERT_EQ(e.size(), 3u);
+      EXPECT_EQ(skin_nodes.count(e[1]), 1u);
+      EXPECT_LT((d.nodes_mm.at(e[1]) - 0.5 * (d.nodes_mm.at(e[0]) + d.nodes_mm.at(e[2]))).norm(),
+                1e-9);
+    }
+  EXPECT_EQ(stats.skin_elements, 64);
+  EXPECT_EQ(stats.beam_elements, 10);
+
+  // Materials in MPa and t/mm^3, sections in mm.
+  EXPECT_NE(text.find("*MATERIAL, NAME=M1_LE1\n*ELASTIC\n250000., 0.31\n*DENSITY\n1.8E-09\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("*MATERIAL, NAME=M3_SKIN\n*ELASTIC\n100000., 0.31\n*DENSITY\n5E-10\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("*SHELL SECTION, ELSET=SKIN, MATERIAL=M3_SKIN\n0.04\n"), std::string::npos);
+  EXPECT_NE(text.find("*BEAM SECTION, ELSET=B1_LE1, MATERIAL=M1_LE1, SECTION=CIRC\n2., 2.\n"
+                      "0., 0., 1.\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("*BEAM SECTION, ELSET=B2_STIF, MATERIAL=M2_ROD, SECTION=CIRC\n0.4, 0.4\n"),
+            std::string::npos);
+
+  // Joints: P2 clamped, P3 translations + rotation about z_W; the frequency step.
+  const auto nsets = cardsStartingWith(d.cards, "*NSET");
+  ASSERT_EQ(nsets.size(), 2u);
+  EXPECT_EQ(nsets[0]->keyword, "*NSET, NSET=P2");
+  EXPECT_EQ(nsets[0]->lines, std::vector<std::string>{std::to_string(w.mesh.p2_node + 1)});
+  EXPECT_EQ(nsets[1]->keyword, "*NSET, NSET=P3");
+  EXPECT_EQ(nsets[1]->lines, std::vector<std::string>{std::to_string(w.mesh.p3_node + 1)});
+  const auto boundary = cardsStartingWith(d.cards, "*BOUNDARY");
+  ASSERT_EQ(boundary.size(), 1u);
+  EXPECT_EQ(boundary[0]->lines, (std::vector<std::string>{"P2, 1, 6", "P3, 1, 3", "P3, 6, 6"}));
+  const auto freq = cardsStartingWith(d.cards, "*FREQUENCY");
+  ASSERT_EQ(freq.size(), 1u);
+  EXPECT_EQ(freq[0]->lines, std::vector<std::string>{"7"});
+  EXPECT_EQ(cardsStartingWith(d.cards, "*STEP").size(), 1u);
+  EXPECT_EQ(d.cards.back().keyword, "*END STEP");
+}
+
+TEST(StructureCalculixDeck, MiniWingSplitQuadsShareNodesWithBeams) {
+  const fe_test::MiniWing w = fe_test::miniWing(4, 8, 0.04, 0.08);
+  CalculixDeckOptions o;  // default: S8R split, B32R
+  o.p3_cross_axis_normal = false;
+  const std::string text = calculixDeck(w.vehicle, w.mesh, o);
+  const ParsedDeck d = parse(text);
+
+  // Nodes: corners + edge midpoints + centroids + midpoints of the 2 halves of every edge and of
+  // the 3 centroid spokes of every triangle.
+  const std::size_t n = static_cast<std::size_t>(w.mesh.nodeCount());
+  const std::size_t edges = edgeCount(w.mesh), tris = w.mesh.triangles.size();
+  EXPECT_EQ(d.nodes_mm.size(), n + edges + tris + 2 * edges + 3 * tris);
+
+  ASSERT_EQ(d.elsets.count("S8R/SKIN"), 1u);
+  const auto& skin = d.elsets.at("S8R/SKIN");
+  EXPECT_EQ(skin.size(), 3 * tris);
+  std::set<int> skin_nodes;
+  double area_mm2 = 0.0;
+  for (const std::vector<int>& e : skin) {
+    ASSERT_EQ(e.size(), 8u);
+    skin_nodes.insert(e.begin(), e.end());
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector3d a = d.nodes_mm.at(e[static_cast<std::size_t>(k)]);
+      const Eigen::Vector3d b = d.nodes_mm.at(e[static_cast<std::size_t>((k + 1) % 4)]);
+      EXPECT_LT((d.nodes_mm.at(e[static_cast<std::size_t>(k + 4)]) - 0.5 * (a + b)).norm(), 1e-9);
+      area_mm2 += 0.5 * a.cross(b).z();  // shoelace: counter-clockwise quads add up positively
+    }
+  }
+  EXPECT_NEAR(area_mm2, 40.0 * 80.0, 1e-6);
+  EXPECT_EQ(skin_nodes.size(), d.nodes_mm.size());
+
+  // Each mesh beam element becomes two B32R on the halves of its edge.
+  EXPECT_EQ(d.elsets.at("B32R/B1_LE1").size(), 16u);
+  EXPECT_EQ(d.elsets.at("B32R/B2_STIF").size(), 4u);
+  for (const auto& name : {"B32R/B1_LE1", "B32R/B2_STIF"})
+    for (const std::vector<int>& e : d.elsets.at(name))
+      for (int id : e) EXPECT_EQ(skin_nodes.count(id), 1u) << name << " node " << id;
+
+  const auto boundary = cardsStartingWith(d.cards, "*BOUNDARY");
+  ASSERT_EQ(boundary.size(), 1u);
+  EXPECT_EQ(boundary[0]->lines, (std::vector<std::string>{"P2, 1, 6", "P3, 1, 3", "P3, 5, 5"}));
+  EXPECT_EQ(cardsStartingWith(d.cards, "*FREQUENCY")[0]->lines,
+            std::vector<std::string>{"12"});
+}
+
+TEST(StructureCalculixDeck, RejectsBadInput) {
+  fe_test::MiniWing w = fe_test::miniWing(4, 8, 0.04, 0.08);
+  CalculixDeckOptions o;
+  o.mode_count = 0;
+  EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, o), std::invalid_argument);
+  o.mode_count = 12;
+  WingMesh no_p2 = w.mesh;
+  no_p2.p2_node = -1;
+  EXPECT_THROW(calculixDeck(w.vehicle, no_p2, o), std::invalid_argument);
+  WingMesh bad_member = w.mesh;
+  bad_member.beams.front().member = 5;
+  EXPECT_THROW(calculixDeck(w.vehicle, bad_member, o), std::invalid_argument);
+  w.vehicle.wing.skin.material = "NOPE";
+  EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace orni::structure
