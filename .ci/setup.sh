@@ -15,6 +15,7 @@ packages=(
   build-essential cmake git pkg-config
   libeigen3-dev libsundials-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libspectra-dev
   libtomlplusplus-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
+  calculix-ccx
 )
 
 install_packages() {

@@ -5,10 +5,13 @@
 // Units N-mm-t-s: coordinates in mm, E in MPa, density in t/mm^3, thickness and diameters in mm;
 // frequencies come out in Hz. Node i of the mesh is CalculiX node i + 1; midside nodes follow.
 //
-// Element choice (structure.md 6.1, measured on the EFW against our DKT/CST + Euler-Bernoulli
-// model, see calculix_deck.cpp): every skin triangle is split into three quadrilaterals (corner,
-// edge midpoints, centroid) as S8R; members are B32R with SECTION=CIRC. S6 triangles are the
-// alternative. Linear elements do not work in ccx 2.20 (B31 refuses CIRC, S3 locks, S4 is wrong).
+// Element choice (structure.md 6.1; measured on the EFW, h = 5 mm, 2 threads, against our DKT/CST
+// + Euler-Bernoulli model, first six modes): S6 skin + B32R rods: +0.7 ... +4.1 %, 8 s (default);
+// each triangle split into three S8R quads + B32R: +0.7 ... +3.5 %, 77 s; B32 instead of B32R
+// changes nothing. Linear elements do not work in ccx 2.20 (B31 refuses CIRC, S3 locks, S4 is
+// wrong). Members are written with nu = 0 and the isotropic G (see calculix_deck.cpp): with the
+// plain isotropic material the rigid beam-shell knots stiffen the rods by ~35 % and the EFW
+// frequencies come out 4-12 % high.
 #pragma once
 
 #include <string>
@@ -19,8 +22,8 @@
 namespace orni::structure {
 
 enum class CalculixSkinElement {
-  kS8RSplit,  ///< each triangle -> 3 S8R quads (corner, edge midpoints, centroid): default
-  kS6,        ///< each triangle -> one S6 (quadratic triangle): a few % stiffer
+  kS6,        ///< each triangle -> one S6 (quadratic triangle): default, fast
+  kS8RSplit,  ///< each triangle -> 3 S8R quads (corner, edge midpoints, centroid): ~10x slower
 };
 
 enum class CalculixBeamElement {
@@ -31,7 +34,7 @@ enum class CalculixBeamElement {
 struct CalculixDeckOptions {
   int mode_count = 12;  ///< eigenvalues of the *FREQUENCY step, [1, 10000]
   bool p3_cross_axis_normal = true;  ///< P3 rotation fixed about z_W (true, DOF 6) or y_W (DOF 5)
-  CalculixSkinElement skin = CalculixSkinElement::kS8RSplit;
+  CalculixSkinElement skin = CalculixSkinElement::kS6;
   CalculixBeamElement beam = CalculixBeamElement::kB32R;
   bool node_file = true;  ///< *NODE FILE U: mode shapes in JOB.frd (for cgx)
   std::string heading;    ///< *HEADING text; empty = "Ornithopter wing <vehicle name>"

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/config/input_error.hpp"
@@ -48,6 +49,8 @@ int runStudy(const Study& study, const fs::path& out_dir) {
   switch (study.kind) {
     case StudyKind::kSimulate:
       return runSimulateStudy(study, out_dir);
+    case StudyKind::kModes:
+      return runModesStudy(study, out_dir);
     default:
       std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
                 << toString(study.kind)
@@ -98,8 +101,16 @@ int main(int argc, char** argv) {
   std::string plot_dir;
   plot->add_option("RUN_DIR", plot_dir, "Run output folder")->required();
 
+  // modes
+  auto* modes = app.add_subcommand("modes", "Wing FE model: natural frequencies, effective masses, "
+                                            "mode shapes; optional CalculiX deck");
+  std::string modes_vehicle, modes_out, modes_ccx;
+  modes->add_option("VEHICLE", modes_vehicle, "Vehicle file (TOML)")->required();
+  modes->add_option("-o,--output", modes_out, "Output folder (default results/<vehicle name>)");
+  modes->add_option("--export-ccx", modes_ccx, "Also write the FE model as a CalculiX deck (.inp)");
+
   // Later issues: listed so that --help shows the whole contract.
-  for (const char* name : {"modes", "aeromap", "trim", "optimize"}) {
+  for (const char* name : {"aeromap", "trim", "optimize"}) {
     auto* c = app.add_subcommand(name, std::string(name) + " (not available in this version)");
     c->allow_extras();
   }
@@ -149,6 +160,12 @@ int main(int argc, char** argv) {
         if (r != kExitOk) rc = r;
       }
       return rc;
+    }
+    if (modes->parsed()) {
+      const fs::path out = modes_out.empty()
+                               ? fs::path("results") / fs::path(modes_vehicle).stem()
+                               : fs::path(modes_out);
+      return runModesCommand(modes_vehicle, out, modes_ccx);
     }
     if (plot->parsed()) {
       const int n = redrawFigures(plot_dir);

@@ -16,6 +16,7 @@
 #include "core/structure/modal_wing.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
@@ -44,7 +45,42 @@ double seconds(Clock::time_point since) {
 /// The file that bad [wing.fe] or wing values came from (the study, or the vehicle file).
 std::string inputFile(const Study& study) {
   const fs::path& p = study.study_path.empty() ? study.vehicle_path : study.study_path;
-  return p.empty() ? std::string("vehicle") : p.string();
+  return p.empty() ? std::string("vehicle") : displayPath(p);
+}
+
+/// Where wing.fe.element_size_m was written: the study's [override] or the vehicle file, with
+/// its line; InputError for a value that only this command can judge (the mesh size).
+InputError elementSizeError(const Study& study, const std::string& expected,
+                            const std::string& got) {
+  const std::string key = "wing.fe.element_size_m";
+  auto lineIn = [](const fs::path& file, const std::vector<std::string>& path) -> int {
+    try {
+      const toml::table root = parseTomlFile(file);
+      const toml::node* node = &root;
+      for (const std::string& part : path) {
+        const toml::table* t = node->as_table();
+        node = t != nullptr ? t->get(part) : nullptr;
+        if (node == nullptr) return -1;
+      }
+      return static_cast<int>(node->source().begin.line);
+    } catch (const InputError&) {
+      return -1;
+    }
+  };
+  if (!study.study_path.empty()) {
+    const int line = lineIn(study.study_path, {"override", "wing", "fe", "element_size_m"});
+    if (line >= 0)
+      return InputError::wrongValue(displayPath(study.study_path), line, "override." + key,
+                                    expected, got);
+  }
+  if (!study.vehicle_path.empty()) {
+    const fs::path vehicle = study.study_path.empty()
+                                 ? study.vehicle_path
+                                 : study.study_path.parent_path() / study.vehicle_path;
+    const int line = lineIn(vehicle, {"wing", "fe", "element_size_m"});
+    if (line >= 0) return InputError::wrongValue(displayPath(vehicle), line, key, expected, got);
+  }
+  return InputError::wrongValue(inputFile(study), 0, key, expected, got);
 }
 
 double planformArea_m2(const WingModel& w) {
@@ -214,9 +250,16 @@ std::string modesFigure(const Study& study, const structure::ModalWing& wing, in
        "set size ratio -1\n"
        "set palette defined (-1 '#2166ac', 0 '#f7f7f7', 1 '#b2182b')\n"
        "set cbrange [-1:1]\nset cbtics 0.5\nunset key\nunset grid\n"
-       "set xlabel 'y_W (mm)' offset 0,0.5\nset ylabel 'x_W (mm)' offset 1,0\n";
+       "set xlabel 'y_W (mm)' offset 0,0.5\nset ylabel 'x_W (mm)'\n";
   g << "set xrange [0:" << 1e3 * w.semispan_m << "]\nset yrange [" << -1e3 * w.root_chord_m
     << ":0]\n";
+  // At most ~4 chordwise tics (the axis is short at equal scale).
+  double step = 1.0;
+  for (double s : {1.0, 2.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0, 200.0, 500.0, 1000.0}) {
+    step = s;
+    if (1e3 * w.root_chord_m / s <= 4.0) break;
+  }
+  g << "set ytics " << step << "\n";
   // Members as black lines on top of the colour map.
   int id = 1;
   for (const WingMember& m : w.members)
@@ -247,6 +290,10 @@ void writeFailedSummary(const fs::path& out_dir, const std::string& message, dou
 
 int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& export_ccx_path) {
   const auto t0 = Clock::now();
+  if (!export_ccx_path.empty() && export_ccx_path.extension() != ".inp")
+    throw InputError("command line", 0, "--export-ccx",
+                     "option --export-ccx: expected a file name ending in .inp (CalculiX runs it "
+                     "as `ccx -i JOB`), got '" + export_ccx_path.string() + "'");
   const VehicleModel& vehicle = study.vehicle;
   const WingFeSettings& fe = vehicle.wing.fe;
 
@@ -257,11 +304,11 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
     char got[96];
     std::snprintf(got, sizeof got, "%.6g (about %.3g mesh nodes)", fe.element_size_m,
                   estimated_nodes);
-    throw InputError::wrongValue(inputFile(study), 0, "wing.fe.element_size_m",
-                                 "an element size giving at most " +
-                                     std::to_string(static_cast<long>(kMaxEstimatedNodes)) +
-                                     " mesh nodes",
-                                 got);
+    throw elementSizeError(study,
+                           "an element size giving at most " +
+                               std::to_string(static_cast<long>(kMaxEstimatedNodes)) +
+                               " mesh nodes",
+                           got);
   }
 
   structure::WingMesh mesh;
@@ -366,9 +413,14 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   std::ostringstream brief;
   brief.precision(4);
   for (int k = 0; k < std::min(m, 6); ++k) brief << (k ? ", " : "") << wing.frequencies_hz(k);
+  char mass_text[96];
+  std::snprintf(mass_text, sizeof mass_text, "flap/heave effective mass %.1f / %.1f %%",
+                100.0 * flap_total, 100.0 * heave_total);
   std::cout << study.name << ": " << m << " modes, f = " << brief.str() << (m > 6 ? ", ..." : "")
-            << " Hz; flap/heave effective mass " << flap_total * 100.0 << " / "
-            << heave_total * 100.0 << " %\n  -> " << out_dir.string() << "\n";
+            << " Hz; " << mass_text << "\n  -> " << out_dir.string() << "\n";
+  if (!export_ccx_path.empty())
+    std::cout << "  CalculiX deck: " << export_ccx_path.string() << " (run: ccx -i "
+              << (export_ccx_path.parent_path() / export_ccx_path.stem()).string() << ")\n";
   return 0;
 }
 

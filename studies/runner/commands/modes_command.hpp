@@ -15,7 +15,8 @@ namespace orni::studies {
 /// Run the modes analysis of `study.vehicle` into `out_dir`; when `export_ccx_path` is not empty,
 /// also write the CalculiX deck of the same mesh there. Returns the process exit code (0 finished,
 /// 1 failed: the eigen-solution did not converge). Bad input (a wing the mesher cannot mesh, an
-/// element size that would give an enormous mesh) throws InputError (exit 2, mapped by main).
+/// element size that would give an enormous mesh, a deck name not ending in .inp) throws
+/// InputError (exit 2, mapped by main).
 int runModesStudy(const Study& study, const std::filesystem::path& out_dir,
                   const std::filesystem::path& export_ccx_path = {});
 

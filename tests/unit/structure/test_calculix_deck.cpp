@@ -151,18 +151,28 @@ TEST(StructureCalculixDeck, MiniWingS6CountsUnitsAndJoints) {
   EXPECT_EQ(stats.skin_elements, 64);
   EXPECT_EQ(stats.beam_elements, 10);
 
-  // Materials in MPa and t/mm^3, sections in mm.
-  EXPECT_NE(text.find("*MATERIAL, NAME=M1_LE1\n*ELASTIC\n250000., 0.31\n*DENSITY\n1.8E-09\n"),
+  // Materials in MPa and t/mm^3, sections in mm. The skin is isotropic; each member has nu = 0,
+  // G = E / (2 (1 + nu)) in its own axes (1 along the rod), against the knots' Poisson locking.
+  EXPECT_NE(text.find("*MATERIAL, NAME=S3_SKIN\n*ELASTIC\n100000., 0.31\n*DENSITY\n5E-10\n"
+                      "*SHELL SECTION, ELSET=SKIN, MATERIAL=S3_SKIN\n0.04\n"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("*MATERIAL, NAME=M3_SKIN\n*ELASTIC\n100000., 0.31\n*DENSITY\n5E-10\n"),
+  EXPECT_NE(text.find("*ORIENTATION, NAME=OB1_LE1, SYSTEM=RECTANGULAR\n0., 1., 0., -1., 0., 0.\n"
+                      "*MATERIAL, NAME=MB1_LE1\n*ELASTIC, TYPE=ENGINEERING CONSTANTS\n"
+                      "250000., 250000., 250000., 0., 0., 0., 95419.8473282, 95419.8473282\n"
+                      "95419.8473282\n*DENSITY\n1.8E-09\n"
+                      "*BEAM SECTION, ELSET=B1_LE1, MATERIAL=MB1_LE1, SECTION=CIRC, "
+                      "ORIENTATION=OB1_LE1\n2., 2.\n0., 0., 1.\n"),
+            std::string::npos)
+      << text;
+  // The stiffener runs along the grid diagonal (dx, dy) = (10, 10) mm.
+  EXPECT_NE(text.find("*ORIENTATION, NAME=OB2_STIF, SYSTEM=RECTANGULAR\n0.707106781187, "
+                      "0.707106781187, 0., -0.707106781187, 0.707106781187, 0.\n"),
             std::string::npos);
-  EXPECT_NE(text.find("*SHELL SECTION, ELSET=SKIN, MATERIAL=M3_SKIN\n0.04\n"), std::string::npos);
-  EXPECT_NE(text.find("*BEAM SECTION, ELSET=B1_LE1, MATERIAL=M1_LE1, SECTION=CIRC\n2., 2.\n"
-                      "0., 0., 1.\n"),
+  EXPECT_NE(text.find("*BEAM SECTION, ELSET=B2_STIF, MATERIAL=MB2_STIF, SECTION=CIRC, "
+                      "ORIENTATION=OB2_STIF\n0.4, 0.4\n"),
             std::string::npos);
-  EXPECT_NE(text.find("*BEAM SECTION, ELSET=B2_STIF, MATERIAL=M2_ROD, SECTION=CIRC\n0.4, 0.4\n"),
-            std::string::npos);
+  EXPECT_EQ(cardsStartingWith(d.cards, "*MATERIAL").size(), 3u);  // skin + one per member
 
   // Joints: P2 clamped, P3 translations + rotation about z_W; the frequency step.
   const auto nsets = cardsStartingWith(d.cards, "*NSET");
@@ -183,7 +193,8 @@ TEST(StructureCalculixDeck, MiniWingS6CountsUnitsAndJoints) {
 
 TEST(StructureCalculixDeck, MiniWingSplitQuadsShareNodesWithBeams) {
   const fe_test::MiniWing w = fe_test::miniWing(4, 8, 0.04, 0.08);
-  CalculixDeckOptions o;  // default: S8R split, B32R
+  CalculixDeckOptions o;
+  o.skin = CalculixSkinElement::kS8RSplit;
   o.p3_cross_axis_normal = false;
   const std::string text = calculixDeck(w.vehicle, w.mesh, o);
   const ParsedDeck d = parse(text);
