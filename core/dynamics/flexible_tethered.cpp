@@ -18,7 +18,7 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       M_(flex.mode_count),
       n_aero_(model.aeroStateCount()),
       data_(model),
-      q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_),
+      q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_), frame_inertia_(M_),
       A_(M_, M_),
       ldlt_(M_),
       b_strip_(static_cast<Eigen::Index>(model.strips.size())),
@@ -127,12 +127,9 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
     A_.noalias() += b_strip_[i] * fs.psi_mid * fs.psi_mid.transpose();
   }
   // Modal equation (structure.md 3.4) with w = phi' e_x, alpha = phi'' e_x.
-  const double wx = flap.phi_dot_radps, ax = flap.phi_ddot_radps2;
-  rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_);
-  rhs_vec_.noalias() -= (2.0 * wx) * (flex_.C1 * qd_);
-  rhs_vec_.noalias() -= (wx * wx) * (flex_.P11_minus_trace * q_);
-  rhs_vec_.noalias() -= ax * (flex_.C1 * q_);
-  rhs_vec_ -= ax * flex_.H_x + (wx * wx) * flex_.h_x;
+  modalFrameInertia(flex_, q_, qd_, flap.phi_dot_radps, flap.phi_ddot_radps2, &frame_inertia_);
+  rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_) -
+             frame_inertia_;
   ldlt_.compute(A_);
   qdd_ = ldlt_.solve(rhs_vec_);
 

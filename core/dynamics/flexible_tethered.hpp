@@ -57,7 +57,7 @@ class FlexibleTetheredSystem {
   // Per-evaluation workspace.
   Mat3 R_BW_ = Mat3::Identity();
   Vec3 omega_W_ = Vec3::Zero(), alpha_W_ = Vec3::Zero();
-  Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_;
+  Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
   Eigen::MatrixXd A_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
   Eigen::VectorXd b_strip_;  // apparent-mass blend 0.5 (1 + f) per strip

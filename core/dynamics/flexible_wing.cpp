@@ -54,6 +54,17 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
 }
 
+void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd& qd, double phi_dot_radps, double phi_ddot_radps2,
+                       Eigen::VectorXd* out) {
+  const double wx = phi_dot_radps, ax = phi_ddot_radps2;
+  Eigen::VectorXd& g = *out;
+  g.noalias() = (2.0 * wx) * (flex.C1 * qd);
+  g.noalias() += (wx * wx) * (flex.P11_minus_trace * q);
+  g.noalias() += ax * (flex.C1 * q);
+  g += ax * flex.H_x + (wx * wx) * flex.h_x;
+}
+
 namespace {
 
 std::mutex g_cache_mutex;

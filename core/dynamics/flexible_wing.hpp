@@ -52,6 +52,14 @@ struct FlexibleWingModel {
                     const std::vector<double>& strip_widths_m);
 };
 
+/// Generalised inertial force of the moving frame on the modes (structure.md 3.4, invariant form,
+/// level L2) for w = phi' e_x, alpha = phi'' e_x (the hinge axis; tethered fuselage):
+///   2 C(w) q' + [K_w(w) + C(alpha)] q + H^T alpha + h_w(w).
+/// `out` must have mode_count entries; no allocation.
+void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
+                       const Eigen::VectorXd& qd, double phi_dot_radps, double phi_ddot_radps2,
+                       Eigen::VectorXd* out);
+
 /// Build (or fetch from the in-process cache, keyed by the exact structural inputs) the modal
 /// wing of a vehicle: mesh with wing.fe.element_size_m, modes per wing.fe. Thread-safe.
 std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& vehicle);
