@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "core/aero/tail.hpp"
 #include "core/dynamics/flapping.hpp"
 
 namespace orni {
@@ -59,12 +58,9 @@ void FlexibleTetheredSystem::absoluteTolerances(double rel_tol, double lag_abs_t
   const int per = model_.aero_states_per_strip;
   for (int i = aeroOffset() + per - 1; i < quadratureOffset(); i += per)
     (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
-  // Quadratures: scaled by q S T like the rigid wing (tethered_simulation.cpp).
-  const double U = body_.v_P1_B.norm();
-  const double force = 0.5 * model_.vehicle.air.density_kgpm3 * U * U * model_.wing_area_both_m2;
+  // Quadratures: their scale times the period, like the rigid wing.
+  const auto scales = quadratureScales(model_, body_.v_P1_B.norm());
   const double T = 1.0 / control_.freq_hz;
-  const double scales[kQuadratureChannels] = {force, force, force * model_.mean_chord_m,
-                                              force * U, force * U};
   for (int c = 0; c < kQuadratureChannels; ++c)
     (*atol)[static_cast<std::size_t>(quadratureOffset() + c)] = 0.1 * rel_tol * scales[c] * T;
 }
@@ -183,25 +179,7 @@ void FlexibleTetheredSystem::fuselageLoads(const AeroResult& aero, const Vec3& F
   o.power_aero_W = 2.0 * aero.power_aero_W;
   o.power_hinge_W = 2.0 * hinge_power_one_wing_W;
   o.separated_fraction = aero.separated_fraction;
-  if (model_.vehicle.tail.present) {
-    aero::TailFlow flow;
-    flow.theta_body_rad = body_.theta_rad;
-    flow.flight_path_rad = 0.0;
-    flow.airspeed_mps = U;
-    flow.wing_downwash_rad = model_.vehicle.tail.downwash_factor *
-                             (body_.theta_rad + model_.vehicle.wing.incidence_rad);
-    flow.tail_angle_rad = control_.tail_angle_rad;
-    const aero::TailLoads tl = aero::evalTail(model_.vehicle.tail,
-                                              model_.vehicle.air.density_kgpm3, flow);
-    const Vec3 F_tail = tl.lift_N * e_L - tl.drag_N * e_v;
-    o.FV_tail_N = tl.lift_N;
-    o.FH_tail_N = -tl.drag_N;
-    o.M_tail_Nm = model_.p_P1P4_B.cross(F_tail).y();
-    o.tail_alpha_rad = tl.alpha_rad;
-  }
-  o.FV_N = o.FV_wing_aero_N + o.FV_wing_inertial_N + o.FV_tail_N;
-  o.FH_N = o.FH_wing_aero_N + o.FH_wing_inertial_N + o.FH_tail_N;
-  o.M_Nm = o.M_wing_aero_Nm + o.M_wing_inertial_Nm + o.M_tail_Nm;
+  addTailAndTotals(model_, body_, control_, &o);
 }
 
 void FlexibleTetheredSystem::rhs(double t_s, const double* y, double* ydot) {

@@ -285,26 +285,41 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
   o.power_hinge_W = 2.0 * (power_aero + power_inertial);
   o.separated_fraction = area > 0.0 ? separated_area / area : 0.0;
 
+  addTailAndTotals(model, body, control, &o);
+}
+
+std::array<double, kQuadratureChannels> quadratureScales(const FlightCoreModel& model,
+                                                         double speed_mps) {
+  const double force = 0.5 * model.vehicle.air.density_kgpm3 * speed_mps * speed_mps *
+                       model.wing_area_both_m2;
+  return {force, force, force * model.mean_chord_m, force * speed_mps, force * speed_mps};
+}
+
+void addTailAndTotals(const FlightCoreModel& model, const BodyMotion& body,
+                      const ControlInput& control, LoadSample* out) {
+  LoadSample& o = *out;
+  const VehicleModel& veh = model.vehicle;
   if (veh.tail.present) {
-    const TailModel& tail = veh.tail;
-    const Vec3 v_tail = body.v_P1_B + Q_B.cross(model.p_P1P4_B);
+    const double speed = body.v_P1_B.norm();
+    const Vec3 e_v = speed > 0.0 ? Vec3(body.v_P1_B / speed) : Vec3::UnitX();
+    const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+    const double theta_a = std::atan2(body.v_P1_B.z(), body.v_P1_B.x());
+    const Vec3 Q_B(0.0, body.Q_radps, 0.0);
     aero::TailFlow flow;
     flow.theta_body_rad = body.theta_rad;
     // Flight-path angle gamma: theta minus the angle of attack of P1's velocity.
     flow.flight_path_rad = body.theta_rad - theta_a;
     flow.pitch_rate_radps = body.Q_radps;
-    flow.airspeed_mps = v_tail.norm();
-    flow.wing_downwash_rad = tail.downwash_factor * (theta_a + veh.wing.incidence_rad);
+    flow.airspeed_mps = (body.v_P1_B + Q_B.cross(model.p_P1P4_B)).norm();
+    flow.wing_downwash_rad = veh.tail.downwash_factor * (theta_a + veh.wing.incidence_rad);
     flow.tail_angle_rad = control.tail_angle_rad;
-    const aero::TailLoads tl = aero::evalTail(tail, veh.air.density_kgpm3, flow);
+    const aero::TailLoads tl = aero::evalTail(veh.tail, veh.air.density_kgpm3, flow);
     const Vec3 F_tail = tl.lift_N * e_L - tl.drag_N * e_v;
-    const Vec3 M_tail = model.p_P1P4_B.cross(F_tail);
     o.FV_tail_N = F_tail.dot(e_L);
     o.FH_tail_N = F_tail.dot(e_v);
-    o.M_tail_Nm = M_tail.y();
+    o.M_tail_Nm = model.p_P1P4_B.cross(F_tail).y();
     o.tail_alpha_rad = tl.alpha_rad;
   }
-
   o.FV_N = o.FV_wing_aero_N + o.FV_wing_inertial_N + o.FV_tail_N;
   o.FH_N = o.FH_wing_aero_N + o.FH_wing_inertial_N + o.FH_tail_N;
   o.M_Nm = o.M_wing_aero_Nm + o.M_wing_inertial_Nm + o.M_tail_Nm;

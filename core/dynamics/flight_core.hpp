@@ -6,6 +6,7 @@
 // allocate.
 #pragma once
 
+#include <array>
 #include <memory>
 #include <vector>
 
@@ -97,6 +98,17 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
 /// Quasi-steady initial aero states at time t (aero-mst.md 9.3: no start-up transient).
 void initialAeroStates(const FlightCoreModel& model, const BodyMotion& body,
                        const ControlInput& control, double t_s, double* aero_states);
+
+/// Scales of the quadrature channels at flight speed U: q S for FV and FH, q S c_mean for M,
+/// q S U for the powers (q = rho U^2 / 2). Used for tolerances and the steady-state test.
+std::array<double, kQuadratureChannels> quadratureScales(const FlightCoreModel& model,
+                                                         double speed_mps);
+
+/// Tail loads about P1 (paper Eq. 3 with the incidence of aero-mst.md 10) into the tail fields of
+/// `out`, then the totals FV, FH, M from the wing and tail fields. Shared by the rigid and the
+/// flexible wing.
+void addTailAndTotals(const FlightCoreModel& model, const BodyMotion& body,
+                      const ControlInput& control, LoadSample* out);
 
 /// Body motion of the tethered (wind-tunnel / constrained) mode: level flight path at speed U with
 /// the body pitched by theta; U_B = U cos(theta), W_B = U sin(theta), Q = 0.

@@ -54,11 +54,8 @@ class RigidTetheredSystem {
     if (per > 0)
       for (int i = per - 1; i < n_aero_; i += per)
         (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
-    const double U = body_.v_P1_B.norm();
-    const double force = 0.5 * model_.vehicle.air.density_kgpm3 * U * U * model_.wing_area_both_m2;
+    const auto scales = quadratureScales(model_, body_.v_P1_B.norm());
     const double T = 1.0 / control_.freq_hz;
-    const double scales[kQuadratureChannels] = {force, force, force * model_.mean_chord_m,
-                                                force * U, force * U};
     for (int c = 0; c < kQuadratureChannels; ++c)
       (*atol)[static_cast<std::size_t>(n_aero_ + c)] = 0.1 * rel_tol * scales[c] * T;
   }
@@ -96,13 +93,8 @@ SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const Ope
   const int n_quad = sys.quadratureOffset();
   const double period_s = 1.0 / point.freq_hz;
 
-  // Scales for the steady-state test: dynamic pressure times wing area (forces), times mean
-  // chord (moment), times speed (power).
-  const double q_dyn = 0.5 * model.vehicle.air.density_kgpm3 * point.speed_mps * point.speed_mps;
-  const double force_scale = q_dyn * model.wing_area_both_m2;
-  const double scales[kQuadratureChannels] = {
-      force_scale, force_scale, force_scale * model.mean_chord_m,
-      force_scale * point.speed_mps, force_scale * point.speed_mps};
+  // Scales for the steady-state test (the same as for the quadrature tolerances).
+  const auto scales = quadratureScales(model, point.speed_mps);
 
   IntegratorOptions iopt;
   iopt.rel_tol = options.rel_tol;
