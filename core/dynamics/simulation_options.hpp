@@ -22,6 +22,8 @@ struct SimulationOptions {
                                  ///< and of the aero states (rad), (0, 0.1]
   int samples_per_cycle = 100;   ///< time-history output resolution, [8, 100000]
   bool record_history = true;    ///< keep the sampled time histories (off for maps and trim)
+  bool stop_when_steady = false; ///< end the run at the first cycle that meets steady_tol
+                                 ///< (aero maps, trim); `cycles` is then the maximum
 
   /// True when every field is inside its range; otherwise false with the reason in *why.
   bool IsValid(std::string* why) const {

@@ -187,6 +187,7 @@ SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const Ope
       if (change <= options.steady_tol && summary.steady_state_cycle < 0)
         summary.steady_state_cycle = k;
       if (change > options.steady_tol) summary.steady_state_cycle = -1;
+      if (options.stop_when_steady && summary.steady_state_cycle > 0) break;
     }
   }
   summary.mean = summary.per_cycle.back();
