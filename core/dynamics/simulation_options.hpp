@@ -7,6 +7,25 @@ namespace orni {
 
 enum class FlightMode { kTethered, kFree };
 
+/// Bounds R_i of the bounded-norm trim criterion (paper Eq. 5) on the deviations of
+/// [U W theta Q h] from their trimmed (initial) values. The paper fixes only R_theta = 40 deg.
+struct FreeFlightBounds {
+  double U_mps = 2.0;       ///< > 0; a fifth of the trim speed of the magpie
+  double W_mps = 2.0;       ///< > 0; 2 m/s is an angle-of-attack change of ~10 deg at 10.8 m/s
+  double theta_rad = 0.6981317007977318;  ///< > 0; 40 deg, paper section 3.3
+  double Q_radps = 0.0;     ///< >= 0; 0 = 2 pi f R_theta (a pitch oscillation of amplitude
+                            ///< R_theta at the flapping frequency)
+  double h_m = 1.0;         ///< > 0; altitude change over the horizon (secular climb/sink)
+};
+
+/// Free-flight run settings (architecture.md 2: bounded-norm criterion, divergence handling).
+struct FreeFlightOptions {
+  FreeFlightBounds bounds;
+  double transient_fraction = 0.2;  ///< share of the cycles skipped before the verdict, [0, 0.9]
+  double divergence_ratio = 5.0;    ///< stop as diverged when the scaled norm exceeds this, > 1
+  double initial_altitude_m = 10.0; ///< start altitude above ground (ground contact at h = 0), > 0
+};
+
 struct SimulationOptions {
   FlightMode mode = FlightMode::kTethered;
   int cycles = 10;               ///< flapping cycles to simulate, [1, 100000]
@@ -22,6 +41,7 @@ struct SimulationOptions {
                                  ///< and of the aero states (rad), (0, 0.1]
   int samples_per_cycle = 100;   ///< time-history output resolution, [8, 100000]
   bool record_history = true;    ///< keep the sampled time histories (off for maps and trim)
+  FreeFlightOptions free;        ///< free mode only
   bool stop_when_steady = false; ///< end the run at the first cycle that meets steady_tol
                                  ///< (aero maps, trim); `cycles` is then the maximum
 
@@ -39,6 +59,13 @@ struct SimulationOptions {
     if (!(steady_tol > 0 && steady_tol <= 0.1)) return fail("steady_tol must be in (0, 0.1]");
     if (samples_per_cycle < 8 || samples_per_cycle > 100000)
       return fail("samples_per_cycle must be in [8, 100000]");
+    const FreeFlightBounds& b = free.bounds;
+    if (!(b.U_mps > 0 && b.W_mps > 0 && b.theta_rad > 0 && b.Q_radps >= 0 && b.h_m > 0))
+      return fail("free-flight bounds must be positive (Q may be 0 = automatic)");
+    if (!(free.transient_fraction >= 0 && free.transient_fraction <= 0.9))
+      return fail("transient_fraction must be in [0, 0.9]");
+    if (!(free.divergence_ratio > 1)) return fail("divergence_ratio must be > 1");
+    if (!(free.initial_altitude_m > 0)) return fail("initial_altitude_m must be > 0");
     return true;
   }
 };

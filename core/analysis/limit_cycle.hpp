@@ -1,0 +1,70 @@
+// Limit-cycle analysis of a free flight (paper section 4, Figs. 6-8) and the bounded-norm trim
+// criterion (paper Eq. 5), on uniformly sampled histories (samples_per_cycle per flapping cycle).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace orni {
+
+/// Single-sided amplitude spectrum of a uniformly sampled signal (mean removed, rectangular
+/// window over a whole number of flapping cycles, so the flapping harmonics fall on bins).
+struct Spectrum {
+  std::vector<double> freq_hz;
+  std::vector<double> amplitude;  ///< |X(f)|: amplitude of the sinusoid at f, signal units
+};
+
+/// DFT bins 0 .. max_freq_hz of x (n samples at spacing dt_s).
+Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz);
+
+/// Frequency of the largest non-zero bin.
+double dominantFrequency(const Spectrum& s);
+
+/// One period moving average (centred, window = samples_per_cycle samples; ends shortened).
+std::vector<double> periodMovingAverage(const std::vector<double>& x, int samples_per_cycle);
+
+struct LimitCycleMetrics {
+  double theta_min_rad = 0, theta_max_rad = 0;
+  double altitude_p2p_fast_m = 0;   ///< median per-cycle peak-to-peak of h minus its one-period
+                                    ///< moving average (the flapping-frequency oscillation)
+  double altitude_p2p_slow_m = 0;   ///< peak-to-peak of the moving average after removing its
+                                    ///< linear trend (the long-period oscillation)
+  double climb_rate_mps = 0;        ///< slope of that linear trend
+  double dominant_freq_theta_hz = 0, dominant_freq_h_hz = 0, dominant_freq_delta_hz = 0;
+  Spectrum spectrum_delta, spectrum_theta, spectrum_h;  ///< same bins
+};
+
+/// Metrics over samples [first, n) of the histories (first at a cycle boundary).
+LimitCycleMetrics analyseLimitCycle(const std::vector<double>& t_s,
+                                    const std::vector<double>& delta_M_rad,
+                                    const std::vector<double>& theta_rad,
+                                    const std::vector<double>& h_m, std::size_t first,
+                                    int samples_per_cycle, double freq_hz);
+
+/// Bounded-norm criterion (paper Eq. 5): x = [U W theta Q h] deviations from reference values,
+/// each divided by its bound; the verdict is bounded when the 2-norm stays <= 1 over the window
+/// and no secular drift is found (the linear trend of the cycle means of a scaled deviation,
+/// extrapolated over the window length, exceeds `drift_limit`).
+struct BoundedNormResult {
+  bool bounded = false;
+  double norm_ratio_max = 0;    ///< max over the window of ||x_scaled||_2
+  double time_of_max_s = 0;
+  std::string worst_state;      ///< the state with the largest scaled deviation at that time
+  bool drift = false;
+  std::string drift_state;
+  double drift_per_window = 0;  ///< scaled trend change over the window of the worst drift
+  std::string reason;           ///< one line: why bounded or not
+};
+
+struct StateSeries {
+  const std::vector<double>* values;  ///< samples
+  double reference;                   ///< trimmed value
+  double bound;                       ///< R_i
+  const char* name;
+};
+
+BoundedNormResult boundedNorm(const std::vector<double>& t_s,
+                              const std::vector<StateSeries>& states, std::size_t first,
+                              int samples_per_cycle, double drift_limit = 0.5);
+
+}  // namespace orni

@@ -1,0 +1,196 @@
+#include "core/dynamics/free_flight.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "core/analysis/harmonics.hpp"
+#include "core/dynamics/flapping.hpp"
+#include "core/integrate/erk_integrator.hpp"
+
+namespace orni {
+
+BodyState trimmedBodyState(const OperatingPoint& point, double altitude_m) {
+  BodyState b;
+  b.h_m = altitude_m;
+  b.theta_rad = point.theta_rad;
+  b.U_mps = point.speed_mps * std::cos(point.theta_rad);
+  b.W_mps = point.speed_mps * std::sin(point.theta_rad);
+  return b;
+}
+
+namespace {
+
+constexpr double kThetaLimit_rad = 85.0 * kDegToRad;
+
+BodyState bodyOf(const double* y) {
+  return BodyState{y[0], y[1], y[2], y[3], y[4], y[5]};
+}
+
+// Scaled deviation norm of [U W theta Q h] and the worst state; empty name when finite.
+double scaledNorm(const BodyState& s, const BodyState& ref, const FreeFlightBounds& b,
+                  double R_Q, const char** worst) {
+  const double d[5] = {(s.U_mps - ref.U_mps) / b.U_mps, (s.W_mps - ref.W_mps) / b.W_mps,
+                       (s.theta_rad - ref.theta_rad) / b.theta_rad, (s.Q_radps - ref.Q_radps) / R_Q,
+                       (s.h_m - ref.h_m) / b.h_m};
+  static const char* names[5] = {"U", "W", "theta", "Q", "h"};
+  double sq = 0.0, big = -1.0;
+  for (int i = 0; i < 5; ++i) {
+    sq += d[i] * d[i];
+    if (std::abs(d[i]) > big) {
+      big = std::abs(d[i]);
+      *worst = names[i];
+    }
+  }
+  return std::sqrt(sq);
+}
+
+}  // namespace
+
+FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
+                               const SimulationOptions& options, FreeFlightHistory* history) {
+  std::string why;
+  if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
+  if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
+    throw std::invalid_argument("free flight needs speed > 0 and frequency > 0");
+  const FreeFlightOptions& fo = options.free;
+  const ControlInput control{point.freq_hz, point.tail_angle_rad};
+  FreeFlightSystem sys(model, model.flexible.get(), control);
+
+  FreeFlightSummary summary;
+  summary.initial = trimmedBodyState(point, fo.initial_altitude_m);
+  const double R_Q = fo.bounds.Q_radps > 0.0
+                         ? fo.bounds.Q_radps
+                         : 2.0 * kPi * point.freq_hz * fo.bounds.theta_rad;
+
+  const int n = sys.stateCount();
+  std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
+  sys.initialState(0.0, summary.initial, y0.data());
+  const double period_s = 1.0 / point.freq_hz;
+  IntegratorOptions iopt;
+  iopt.rel_tol = options.rel_tol;
+  sys.absoluteTolerances(options.rel_tol, options.abs_tol, options.separation_abs_tol,
+                         &iopt.abs_tol);
+  iopt.max_step = period_s / 8.0;
+  ErkIntegrator integrator(n, &FreeFlightSystem::rhsCallback, &sys, iopt);
+  integrator.reset(0.0, y0.data());
+
+  // The analysis needs the sampled histories whether or not the caller keeps them.
+  FreeFlightHistory local;
+  FreeFlightHistory& h = history ? *history : local;
+  h = FreeFlightHistory{};
+  const int spc = options.samples_per_cycle;
+  const std::size_t total = static_cast<std::size_t>(options.cycles) *
+                                static_cast<std::size_t>(spc) + 1;
+  h.t_s.reserve(total);
+  h.delta_M_rad.reserve(total);
+  h.body.reserve(total);
+  h.samples.reserve(total);
+  auto record = [&](double t, const double* y) {
+    FreeFlightSample s;
+    sys.sample(t, y, &s);
+    h.t_s.push_back(t);
+    h.delta_M_rad.push_back(
+        flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad);
+    h.body.push_back(bodyOf(y));
+    h.samples.push_back(s);
+  };
+  record(0.0, integrator.state());
+
+  summary.status = SimulationStatus::kOk;
+  double power_prev = 0.0;
+  char buf[320];
+  for (int k = 1; k <= options.cycles && summary.status == SimulationStatus::kOk; ++k) {
+    for (int i = 1; i <= spc; ++i) {
+      const double t = ((k - 1) * spc + i) * period_s / spc;
+      if (integrator.advanceTo(t) != IntegratorStatus::kOk) {
+        summary.status = SimulationStatus::kDiverged;
+        std::snprintf(buf, sizeof buf, "integration stopped at t = %.4f s: %s", integrator.time(),
+                      integrator.lastError().c_str());
+        summary.message = buf;
+        break;
+      }
+      const double* y = integrator.state();
+      bool finite = true;
+      for (int j = 0; j < n; ++j) finite = finite && std::isfinite(y[j]);
+      const BodyState b = bodyOf(y);
+      const char* worst = "";
+      const double norm = finite ? scaledNorm(b, summary.initial, fo.bounds, R_Q, &worst) : 0.0;
+      if (!finite) {
+        std::snprintf(buf, sizeof buf, "non-finite state at t = %.4f s", t);
+      } else if (std::abs(b.theta_rad) >= kThetaLimit_rad) {
+        std::snprintf(buf, sizeof buf,
+                      "pitch attitude %.1f deg beyond +-85 deg at t = %.4f s (the longitudinal "
+                      "model does not cover it)",
+                      b.theta_rad * kRadToDeg, t);
+      } else if (b.h_m <= 0.0) {
+        std::snprintf(buf, sizeof buf,
+                      "ground contact at t = %.4f s (started %.3g m above ground, x = %.3g m)", t,
+                      fo.initial_altitude_m, b.x_I_m);
+      } else if (norm > fo.divergence_ratio) {
+        std::snprintf(buf, sizeof buf,
+                      "scaled state norm %.3g > %.3g at t = %.4f s (largest deviation: %s)",
+                      norm, fo.divergence_ratio, t, worst);
+      } else {
+        record(t, y);
+        continue;
+      }
+      if (finite) record(t, y);
+      summary.status = SimulationStatus::kDiverged;
+      summary.message = std::string("diverged: ") + buf;
+      break;
+    }
+    if (summary.status != SimulationStatus::kOk) break;
+    summary.cycles_run = k;
+    const double power = integrator.state()[sys.powerOffset()];
+    summary.mean.power_aero_W = (power - power_prev) / period_s;
+    power_prev = power;
+  }
+  summary.end_time_s = h.t_s.back();
+  summary.steps = integrator.steps();
+  summary.rhs_evaluations = integrator.rhsEvaluations();
+
+  // Last whole cycle means of the aerodynamic loads (trapezoid on the periodic samples).
+  if (summary.cycles_run >= 1) {
+    const std::size_t start = static_cast<std::size_t>(summary.cycles_run - 1) *
+                              static_cast<std::size_t>(spc);
+    const std::size_t stride = sizeof(FreeFlightSample) / sizeof(double);
+    const std::size_t ns = static_cast<std::size_t>(spc);
+    summary.mean.FV_N = periodMean(&h.samples[start].loads.FV_N, ns, stride);
+    summary.mean.FH_N = periodMean(&h.samples[start].loads.FH_N, ns, stride);
+    summary.mean.M_Nm = periodMean(&h.samples[start].loads.M_Nm, ns, stride);
+  }
+  if (summary.status != SimulationStatus::kOk) return summary;
+
+  // Verdict and limit cycle over the cycles after the transient.
+  const int skip = std::min(summary.cycles_run - 1,
+                            static_cast<int>(std::floor(fo.transient_fraction * summary.cycles_run)));
+  summary.first_analysed_cycle = skip + 1;
+  const std::size_t first = static_cast<std::size_t>(skip) * static_cast<std::size_t>(spc);
+  std::vector<double> U, W, th, Q, alt;
+  for (const BodyState& b : h.body) {
+    U.push_back(b.U_mps);
+    W.push_back(b.W_mps);
+    th.push_back(b.theta_rad);
+    Q.push_back(b.Q_radps);
+    alt.push_back(b.h_m);
+  }
+  const BodyState& r = summary.initial;
+  summary.verdict = boundedNorm(h.t_s,
+                                {{&U, r.U_mps, fo.bounds.U_mps, "U"},
+                                 {&W, r.W_mps, fo.bounds.W_mps, "W"},
+                                 {&th, r.theta_rad, fo.bounds.theta_rad, "theta"},
+                                 {&Q, r.Q_radps, R_Q, "Q"},
+                                 {&alt, r.h_m, fo.bounds.h_m, "h"}},
+                                first, spc);
+  summary.limit_cycle =
+      analyseLimitCycle(h.t_s, h.delta_M_rad, th, alt, first, spc, point.freq_hz);
+  summary.analysed = true;
+  std::snprintf(buf, sizeof buf, "%d cycles of free flight; %s", summary.cycles_run,
+                summary.verdict.reason.c_str());
+  summary.message = buf;
+  return summary;
+}
+
+}  // namespace orni
