@@ -31,9 +31,14 @@ double slopePerSample(const std::vector<double>& y) {
 Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz) {
   Spectrum s;
   if (n < 2) return s;
+  // Remove the mean and the linear trend (a climbing or sinking flight would otherwise leak
+  // into every bin).
+  const std::vector<double> xv(x, x + n);
+  const double slope = slopePerSample(xv);
   double mean = 0.0;
   for (std::size_t i = 0; i < n; ++i) mean += x[i];
   mean /= static_cast<double>(n);
+  const double mid = 0.5 * static_cast<double>(n - 1);
   const double df = 1.0 / (static_cast<double>(n) * dt_s);
   const std::size_t kmax = std::min(n / 2, static_cast<std::size_t>(max_freq_hz / df));
   for (std::size_t k = 0; k <= kmax; ++k) {
@@ -47,7 +52,7 @@ Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double m
         cr = std::cos(w * static_cast<double>(i));
         ci = std::sin(w * static_cast<double>(i));
       }
-      const double v = x[i] - mean;
+      const double v = x[i] - mean - slope * (static_cast<double>(i) - mid);
       re += v * cr;
       im += v * ci;
       const double nr = cr * sr - ci * si;

@@ -7,8 +7,8 @@
 
 namespace orni {
 
-/// Single-sided amplitude spectrum of a uniformly sampled signal (mean removed, rectangular
-/// window over a whole number of flapping cycles, so the flapping harmonics fall on bins).
+/// Single-sided amplitude spectrum of a uniformly sampled signal (mean and linear trend removed,
+/// rectangular window over a whole number of flapping cycles, so the flapping harmonics fall on bins).
 struct Spectrum {
   std::vector<double> freq_hz;
   std::vector<double> amplitude;  ///< |X(f)|: amplitude of the sinusoid at f, signal units

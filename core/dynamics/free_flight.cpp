@@ -138,7 +138,7 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
       }
       if (finite) record(t, y);
       summary.status = SimulationStatus::kDiverged;
-      summary.message = std::string("diverged: ") + buf;
+      summary.message = buf;
       break;
     }
     if (summary.status != SimulationStatus::kOk) break;

@@ -10,6 +10,7 @@
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/free_flight_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -133,17 +134,7 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
   JsonObject summary;
   summary.set("kind", "simulate");
 
-  if (study.simulate.mode == FlightMode::kFree) {
-    summary.set("status", "failed")
-        .set("message", "free-flight mode is not available yet (tracked by the free-flight issue)")
-        .set("wall_time_s", 0.0)
-        .set("version", versionString())
-        .set("mode", "free");
-    writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-    writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-    std::cerr << "ornithopter: free-flight mode is not available yet\n";
-    return 1;
-  }
+  if (study.simulate.mode == FlightMode::kFree) return runFreeFlightStudy(study, out_dir);
 
   const FlightCoreModel model(study.vehicle);
   TimeHistory history;

@@ -1,0 +1,219 @@
+#include "studies/runner/commands/free_flight_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "core/dynamics/free_flight.hpp"
+#include "core/model/frames.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+CsvTable historyTable(const FreeFlightHistory& h) {
+  CsvTable t;
+  std::vector<double> d, x, alt, th, U, W, Q, V, alpha, gamma, fv, fh, m, tip, twist, sep;
+  for (std::size_t i = 0; i < h.t_s.size(); ++i) {
+    const BodyState& b = h.body[i];
+    const LoadSample& l = h.samples[i].loads;
+    d.push_back(h.delta_M_rad[i] * kRadToDeg);
+    x.push_back(b.x_I_m);
+    alt.push_back(b.h_m);
+    th.push_back(b.theta_rad * kRadToDeg);
+    U.push_back(b.U_mps);
+    W.push_back(b.W_mps);
+    Q.push_back(b.Q_radps * kRadToDeg);
+    V.push_back(std::hypot(b.U_mps, b.W_mps));
+    const double a = std::atan2(b.W_mps, b.U_mps);
+    alpha.push_back(a * kRadToDeg);
+    gamma.push_back((b.theta_rad - a) * kRadToDeg);
+    fv.push_back(l.FV_N);
+    fh.push_back(l.FH_N);
+    m.push_back(l.M_Nm);
+    tip.push_back(l.tip_deflection_m);
+    twist.push_back(l.tip_twist_rad * kRadToDeg);
+    sep.push_back(l.separated_fraction);
+  }
+  t.addColumn("t", "s", h.t_s);
+  t.addColumn("delta_M", "deg", d);
+  t.addColumn("x_I", "m", x);
+  t.addColumn("h", "m", alt);
+  t.addColumn("theta", "deg", th);
+  t.addColumn("U", "m/s", U);
+  t.addColumn("W", "m/s", W);
+  t.addColumn("Q", "deg/s", Q);
+  t.addColumn("airspeed", "m/s", V);
+  t.addColumn("alpha_body", "deg", alpha);
+  t.addColumn("flight_path", "deg", gamma);
+  t.addColumn("FV_aero", "N", fv);
+  t.addColumn("FH_aero", "N", fh);
+  t.addColumn("M_aero", "N m", m);
+  t.addColumn("tip_deflection", "m", tip);
+  t.addColumn("tip_twist", "deg", twist);
+  t.addColumn("separated_fraction", "-", sep);
+  return t;
+}
+
+CsvTable spectrumTable(const LimitCycleMetrics& m) {
+  CsvTable t;
+  std::vector<double> d, th;
+  for (double a : m.spectrum_delta.amplitude) d.push_back(a * kRadToDeg);
+  for (double a : m.spectrum_theta.amplitude) th.push_back(a * kRadToDeg);
+  t.addColumn("freq", "Hz", m.spectrum_delta.freq_hz);
+  t.addColumn("delta_M_amplitude", "deg", d);
+  t.addColumn("theta_amplitude", "deg", th);
+  t.addColumn("h_amplitude", "m", m.spectrum_h.amplitude);
+  return t;
+}
+
+std::string title(const Study& study) {
+  std::ostringstream s;
+  s << study.name << " (free flight): U0 = " << study.point.speed_mps
+    << " m/s, f = " << study.point.freq_hz << " Hz, theta0 = "
+    << study.point.theta_rad * kRadToDeg << " deg, tail = "
+    << study.point.tail_angle_rad * kRadToDeg << " deg";
+  return s.str();
+}
+
+// Paper Fig. 7 layout: delta_M, theta and h against time (left) and their spectra (right).
+std::string flightFigure(const Study& study, bool with_spectra) {
+  std::ostringstream g;
+  g << "set multiplot layout 3," << (with_spectra ? 2 : 1) << " columnsfirst title \""
+    << title(study) << "\" noenhanced font ',12'\n";
+  g << "set key off\nset grid\nset xlabel 'time (s)'\n";
+  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' skip 2 using 1:2 with lines lc "
+       "rgb '#333333'\n";
+  g << "set ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' skip 2 using 1:5 with lines lc rgb "
+       "'#c0392b'\n";
+  g << "set ylabel 'h (m)'\nplot 'histories.csv' skip 2 using 1:4 with lines lc rgb '#2471a3'\n";
+  if (with_spectra) {
+    g << "set xlabel 'f (Hz)'\n";
+    g << "set ylabel '|{/Symbol d}_M(f)| (deg)'\nplot 'spectra.csv' skip 2 using 1:2 with "
+         "impulses lw 2 lc rgb '#333333'\n";
+    g << "set ylabel '|{/Symbol q}(f)| (deg)'\nplot 'spectra.csv' skip 2 using 1:3 with impulses "
+         "lw 2 lc rgb '#c0392b'\n";
+    g << "set logscale y\nset yrange [1e-5:1]\nset format y '10^{%L}'\nset ylabel '|h(f)| (m)'\nplot 'spectra.csv' "
+         "skip 2 using 1:($4 > 0 ? $4 : 1/0) with impulses lw 2 lc rgb '#2471a3'\n";
+  }
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+// Paper Fig. 6: the last flapping cycle, delta_M and theta, downstroke shaded.
+std::string cycleFigure(const Study& study, int cycles) {
+  const double T = 1.0 / study.point.freq_hz;
+  std::ostringstream g;
+  g << "set multiplot layout 2,1 title \"" << title(study) << ", cycle " << cycles
+    << " (shaded: downstroke)\" noenhanced font ',12'\n";
+  g << "set key off\nset grid\nset xrange [" << (cycles - 1) * T << ":" << cycles * T << "]\n";
+  g << "set object 1 rect from " << (cycles - 0.75) * T << ", graph 0 to " << (cycles - 0.25) * T
+    << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
+  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' skip 2 using 1:2 with lines lw 2 "
+       "lc rgb '#333333'\n";
+  g << "set xlabel 'time (s)'\nset ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' skip 2 using "
+       "1:5 with lines lw 2 lc rgb '#c0392b'\n";
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+// Paper Fig. 8: pitch phase portrait (theta, Q) after the transient.
+std::string phaseFigure(const Study& study, double t_from) {
+  std::ostringstream g;
+  g << "set title \"" << title(study) << "\" noenhanced font ',12'\n";
+  g << "set key off\nset grid\nset xlabel '{/Symbol q} (deg)'\nset ylabel 'Q (deg/s)'\n";
+  g << "plot 'histories.csv' skip 2 using ($1 >= " << t_from
+    << " ? $5 : 1/0):8 with lines lc rgb '#8e44ad'\n";
+  return g.str();
+}
+
+}  // namespace
+
+int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const FlightCoreModel model(study.vehicle);
+  FreeFlightHistory history;
+  const FreeFlightSummary s = simulateFree(model, study.point, study.simulate, &history);
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+  writeFileAtomic(out_dir / "histories.csv", historyTable(history).toString());
+
+  JsonObject summary;
+  summary.set("kind", "simulate")
+      .set("status", toString(s.status))
+      .set("message", s.message)
+      .set("wall_time_s", wall_s)
+      .set("version", versionString())
+      .set("mode", "free")
+      .set("cycles", s.cycles_run)
+      .set("end_time_s", s.end_time_s)
+      .set("mean", JsonObject()
+                       .set("FV_N", s.mean.FV_N)
+                       .set("FH_N", s.mean.FH_N)
+                       .set("M_Nm", s.mean.M_Nm)
+                       .set("power_W", s.mean.power_aero_W))
+      .set("bounded", s.analysed && s.verdict.bounded);
+  if (s.analysed) {
+    const LimitCycleMetrics& m = s.limit_cycle;
+    summary.set("norm_ratio_max", s.verdict.norm_ratio_max)
+        .set("theta_min_deg", m.theta_min_rad * kRadToDeg)
+        .set("theta_max_deg", m.theta_max_rad * kRadToDeg)
+        .set("altitude_p2p_m", m.altitude_p2p_fast_m)
+        .set("dominant_freq_hz", m.dominant_freq_theta_hz)
+        .set("verdict", JsonObject()
+                            .set("reason", s.verdict.reason)
+                            .set("worst_state", s.verdict.worst_state)
+                            .set("time_of_max_s", s.verdict.time_of_max_s)
+                            .set("drift", s.verdict.drift)
+                            .set("drift_state", s.verdict.drift_state)
+                            .set("drift_per_window", s.verdict.drift_per_window)
+                            .set("first_analysed_cycle", s.first_analysed_cycle))
+        .set("limit_cycle", JsonObject()
+                                .set("altitude_p2p_slow_m", m.altitude_p2p_slow_m)
+                                .set("climb_rate_mps", m.climb_rate_mps)
+                                .set("dominant_freq_delta_hz", m.dominant_freq_delta_hz)
+                                .set("dominant_freq_theta_hz", m.dominant_freq_theta_hz)
+                                .set("dominant_freq_h_hz", m.dominant_freq_h_hz));
+    writeFileAtomic(out_dir / "spectra.csv", spectrumTable(m).toString());
+  }
+  const FreeFlightBounds& b = study.simulate.free.bounds;
+  summary
+      .set("bounds", JsonObject()
+                         .set("U_mps", b.U_mps)
+                         .set("W_mps", b.W_mps)
+                         .set("theta_deg", b.theta_rad * kRadToDeg)
+                         .set("Q_degps", (b.Q_radps > 0 ? b.Q_radps
+                                                        : 2 * kPi * study.point.freq_hz *
+                                                              b.theta_rad) *
+                                             kRadToDeg)
+                         .set("h_m", b.h_m))
+      .set("speed_mps", study.point.speed_mps)
+      .set("freq_hz", study.point.freq_hz)
+      .set("theta_deg", study.point.theta_rad * kRadToDeg)
+      .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
+      .set("structure", model.flexible ? "flexible" : "rigid")
+      .set("integrator", JsonObject()
+                             .set("method", "ARKODE ERKStep Dormand-Prince 5(4)")
+                             .set("rel_tol", study.simulate.rel_tol)
+                             .set("steps", s.steps)
+                             .set("rhs_evaluations", s.rhs_evaluations));
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  drawFigure(out_dir, "flight", flightFigure(study, s.analysed));
+  if (s.cycles_run >= 1) drawFigure(out_dir, "cycle", cycleFigure(study, s.cycles_run));
+  const double t_from = (s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0) /
+                        study.point.freq_hz;
+  drawFigure(out_dir, "phase", phaseFigure(study, t_from));
+  std::cout << study.name << ": " << toString(s.status) << ": " << s.message << "\n  -> "
+            << out_dir.string() << "\n";
+  return s.status == SimulationStatus::kFailed ? 1 : 0;
+}
+
+}  // namespace orni::studies
