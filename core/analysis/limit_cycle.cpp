@@ -28,13 +28,23 @@ double slopePerSample(const std::vector<double>& y) {
 }
 }  // namespace
 
-Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz) {
+Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz,
+                           std::size_t period_samples) {
   Spectrum s;
   if (n < 2) return s;
-  // Remove the mean and the linear trend (a climbing or sinking flight would otherwise leak
-  // into every bin).
-  const std::vector<double> xv(x, x + n);
-  const double slope = slopePerSample(xv);
+  // Remove the mean and the trend between the first and the last period's means (a climbing or
+  // sinking flight would otherwise leak into every bin; a periodic signal has no such trend, so
+  // its harmonics are untouched).
+  double slope = 0.0;
+  if (period_samples > 0 && n >= 2 * period_samples) {
+    double m1 = 0.0, m2 = 0.0;
+    for (std::size_t i = 0; i < period_samples; ++i) {
+      m1 += x[i];
+      m2 += x[n - period_samples + i];
+    }
+    slope = (m2 - m1) / static_cast<double>(period_samples) /
+            static_cast<double>(n - period_samples);
+  }
   double mean = 0.0;
   for (std::size_t i = 0; i < n; ++i) mean += x[i];
   mean /= static_cast<double>(n);
@@ -139,9 +149,9 @@ LimitCycleMetrics analyseLimitCycle(const std::vector<double>& t_s,
   m.climb_rate_mps = slope / dt;
   const double fmax = std::max(40.0, 4.0 * freq_hz);
   const std::size_t len = end - first;
-  m.spectrum_delta = amplitudeSpectrum(delta_M_rad.data() + first, len, dt, fmax);
-  m.spectrum_theta = amplitudeSpectrum(theta_rad.data() + first, len, dt, fmax);
-  m.spectrum_h = amplitudeSpectrum(h_m.data() + first, len, dt, fmax);
+  m.spectrum_delta = amplitudeSpectrum(delta_M_rad.data() + first, len, dt, fmax, spc);
+  m.spectrum_theta = amplitudeSpectrum(theta_rad.data() + first, len, dt, fmax, spc);
+  m.spectrum_h = amplitudeSpectrum(h_m.data() + first, len, dt, fmax, spc);
   m.dominant_freq_delta_hz = dominantFrequency(m.spectrum_delta);
   m.dominant_freq_theta_hz = dominantFrequency(m.spectrum_theta);
   m.dominant_freq_h_hz = dominantFrequency(m.spectrum_h);

@@ -7,15 +7,17 @@
 
 namespace orni {
 
-/// Single-sided amplitude spectrum of a uniformly sampled signal (mean and linear trend removed,
-/// rectangular window over a whole number of flapping cycles, so the flapping harmonics fall on bins).
+/// Single-sided amplitude spectrum of a uniformly sampled signal over a whole number of flapping
+/// cycles (rectangular window, so the flapping harmonics fall on bins).
 struct Spectrum {
   std::vector<double> freq_hz;
   std::vector<double> amplitude;  ///< |X(f)|: amplitude of the sinusoid at f, signal units
 };
 
-/// DFT bins 0 .. max_freq_hz of x (n samples at spacing dt_s).
-Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz);
+/// DFT bins 0 .. max_freq_hz of x (n samples at spacing dt_s), mean removed; with
+/// period_samples > 0 also the trend between the first and the last period means.
+Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz,
+                           std::size_t period_samples = 0);
 
 /// Frequency of the largest non-zero bin.
 double dominantFrequency(const Spectrum& s);
