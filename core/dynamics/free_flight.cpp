@@ -73,6 +73,7 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   sys.absoluteTolerances(options.rel_tol, options.abs_tol, options.separation_abs_tol,
                          &iopt.abs_tol);
   iopt.max_step = period_s / 8.0;
+  iopt.method = ErkMethod::kArk436;  // stability-limited steps (erk_integrator.hpp)
   ErkIntegrator integrator(n, &FreeFlightSystem::rhsCallback, &sys, iopt);
   integrator.reset(0.0, y0.data());
 
@@ -87,14 +88,17 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   h.delta_M_rad.reserve(total);
   h.body.reserve(total);
   h.samples.reserve(total);
+  const bool loads = options.record_history;  // the loads need one more RHS evaluation
   auto record = [&](double t, const double* y) {
-    FreeFlightSample s;
-    sys.sample(t, y, &s);
     h.t_s.push_back(t);
     h.delta_M_rad.push_back(
         flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad);
     h.body.push_back(bodyOf(y));
-    h.samples.push_back(s);
+    if (loads) {
+      FreeFlightSample s;
+      sys.sample(t, y, &s, false);
+      h.samples.push_back(s);
+    }
   };
   record(0.0, integrator.state());
 
@@ -152,7 +156,7 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   summary.rhs_evaluations = integrator.rhsEvaluations();
 
   // Last whole cycle means of the aerodynamic loads (trapezoid on the periodic samples).
-  if (summary.cycles_run >= 1) {
+  if (summary.cycles_run >= 1 && loads) {
     const std::size_t start = static_cast<std::size_t>(summary.cycles_run - 1) *
                               static_cast<std::size_t>(spc);
     const std::size_t stride = sizeof(FreeFlightSample) / sizeof(double);

@@ -31,7 +31,8 @@ struct FreeFlightSummary {
   BoundedNormResult verdict;   ///< bounded-norm criterion over the window after the transient
   LimitCycleMetrics limit_cycle;
   int first_analysed_cycle = 0;  ///< 1-based
-  CycleMeans mean;             ///< last cycle: aerodynamic FV, FH, M (wings + tail) and power
+  CycleMeans mean;             ///< last cycle: aerodynamic FV, FH, M (wings + tail; with
+                               ///< record_history) and aerodynamic power
   long steps = 0, rhs_evaluations = 0;
   bool analysed = false;       ///< verdict and limit_cycle are filled (status ok)
 };
@@ -40,7 +41,9 @@ struct FreeFlightSummary {
 /// body pitched by theta (U_B = U cos theta, W_B = U sin theta), Q = 0, at the initial altitude.
 BodyState trimmedBodyState(const OperatingPoint& point, double altitude_m);
 
-/// Run `options.cycles` flapping cycles of free flight. `history` may be null.
+/// Run `options.cycles` flapping cycles of free flight. `history` may be null. With
+/// options.record_history false the loads are not sampled (history->samples stays empty and the
+/// mean loads are zero): the body states, verdict and limit cycle are unaffected.
 FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
                                const SimulationOptions& options, FreeFlightHistory* history);
 

@@ -111,10 +111,23 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   qd_.setZero(M_);
   ud_.setZero(n_u_);
   f_.setZero(n_u_);
-  for (auto& v : Pq_) v.setZero(M_);
   scratch_M_.setZero(M_);
+  // Stacked invariants: one product per evaluation instead of one per matrix.
+  Pstack_.setZero(9 * M_, M_);
+  Cstack_.setZero(3 * M_, M_);
+  Smat_.setZero(9, M_);
+  if (M_ > 0) {
+    for (int k = 0; k < 9; ++k) {
+      Pstack_.middleRows(k * M_, M_) = *P_[static_cast<std::size_t>(k)];
+      Smat_.row(k) = S_[static_cast<std::size_t>(k)].transpose();
+    }
+    for (int k = 0; k < 3; ++k) Cstack_.middleRows(k * M_, M_) = C_[k];
+  }
+  Pq_all_.setZero(9 * M_);
+  Cq_all_.setZero(3 * M_);
+  Cqd_all_.setZero(3 * M_);
   A_.setZero(n_u_, n_u_);
-  ldlt_ = Eigen::LDLT<Eigen::MatrixXd>(n_u_);
+  llt_ = Eigen::LLT<Eigen::MatrixXd>(n_u_);
   nu_.setZero(n_u_);
   b_strip_.setZero(static_cast<Eigen::Index>(ns));
   s_L_.resize(ns);
@@ -122,9 +135,50 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   n_.resize(ns);
   e_s_.resize(ns);
   s_mid_.resize(ns);
-  nu_strip_.assign(ns, Eigen::VectorXd::Zero(n_u_));
-  nu_twist_strip_.assign(ns, Eigen::VectorXd::Zero(n_u_));
-  k_twist_.setZero(static_cast<Eigen::Index>(ns));
+  const auto nsi = static_cast<Eigen::Index>(ns);
+  nsi_ = nsi;
+  k_twist_.setZero(nsi);
+  xL_.resize(3 * nsi);
+  xT_.resize(3 * nsi);
+  PhiL_.setZero(3 * nsi, M_);
+  PhiT_.setZero(3 * nsi, M_);
+  PsiTw_.setZero(nsi, M_);
+  PsiMid_.setZero(nsi, M_);
+  for (std::size_t j = 0; j < ns; ++j) {
+    const auto i = static_cast<Eigen::Index>(j);
+    const FlexibleStrip& fs = strips_[j];
+    xL_.segment<3>(3 * i) = fs.x_L_W_m;
+    xT_.segment<3>(3 * i) = fs.x_T_W_m;
+    if (M_ > 0) {
+      PhiL_.middleRows(3 * i, 3) = fs.phi_L;
+      PhiT_.middleRows(3 * i, 3) = fs.phi_T;
+      PsiTw_.row(i) = fs.psi_twist;
+      PsiMid_.row(i) = fs.psi_mid.transpose();
+    }
+  }
+  SL_ = xL_;
+  ST_ = xT_;
+  UdL_.setZero(3 * nsi);
+  Fall_.setZero(3 * nsi);
+  twist_rate_.setZero(nsi);
+  mpitch_.setZero(nsi);
+  nuU_.setZero(nsi);
+  nuW_.setZero(nsi);
+  nuQ_.setZero(nsi);
+  nutQ_.setZero(nsi);
+  extra_force_.setZero(nsi);
+  extra_couple_.setZero(nsi);
+  tmp_ns_.setZero(nsi);
+  // Apparent-mass outer products per strip, vec(psi psi^T), mid-chord then twist (M^2 x 2 ns):
+  // A_qq += reshape(Pouter * [b; k]) is one product per evaluation.
+  Pouter_.setZero(M_ * M_, 2 * nsi);
+  for (Eigen::Index i = 0; i < nsi && M_ > 0; ++i) {
+    const Eigen::VectorXd pm = PsiMid_.row(i).transpose(), pt = PsiTw_.row(i).transpose();
+    Eigen::Map<Eigen::MatrixXd>(Pouter_.col(i).data(), M_, M_) = pm * pm.transpose();
+    Eigen::Map<Eigen::MatrixXd>(Pouter_.col(nsi + i).data(), M_, M_) = pt * pt.transpose();
+  }
+  weights_2ns_.setZero(2 * nsi);
+  Aqq_vec_.setZero(M_ * M_);
   data_.batch.airx.setZero();
   data_.batch.airy.setZero();
   data_.batch.airz.setZero();
@@ -212,19 +266,22 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   power_aero_one_wing_W_ = 0.0;
   separated_fraction_ = 0.0;
   if (switches_.aerodynamics) {
-    // Strip kinematics from rigid plus modal motion (structure.md 4.2) at u' = 0.
+    // Strip kinematics from rigid plus modal motion (structure.md 4.2) at u' = 0. The modal
+    // parts of all strips are one product each with the stacked shapes (3 ns x M).
+    if (M_ > 0) {
+      SL_ = xL_;
+      SL_.noalias() += PhiL_ * q_;
+      ST_ = xT_;
+      ST_.noalias() += PhiT_ * q_;
+      UdL_.noalias() = PhiL_ * qd_;
+      twist_rate_.noalias() = PsiTw_ * qd_;
+    }
     for (std::size_t j = 0; j < ns; ++j) {
-      const FlexibleStrip& fs = strips_[j];
       const auto i = static_cast<Eigen::Index>(j);
-      Vec3 s_L = fs.x_L_W_m, s_T = fs.x_T_W_m, ud_L = Vec3::Zero();
-      double twist_rate = 0.0;
-      if (M_ > 0) {
-        s_L.noalias() += fs.phi_L * q_;
-        s_T.noalias() += fs.phi_T * q_;
-        ud_L.noalias() = fs.phi_L * qd_;
-        twist_rate = fs.psi_twist.dot(qd_);
-      }
-      const Vec3 e_c = (s_L - s_T).normalized();
+      const Vec3 s_L = SL_.segment<3>(3 * i);
+      const Vec3 ud_L = UdL_.segment<3>(3 * i);
+      const double twist_rate = twist_rate_[i];
+      const Vec3 e_c = (s_L - ST_.segment<3>(3 * i)).normalized();
       const Vec3 e_s = (Vec3::UnitY() - e_c.y() * e_c).normalized();
       const Vec3 n = e_s.cross(e_c);
       const Vec3 v = v_O + omega_W_.cross(s_L) + ud_L;
@@ -247,37 +304,53 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     aero::evalMstTdBatch(model_.aero_context, b, y + aeroOffset(), aero_derivatives);
 
     // Generalised aerodynamic forces (structure.md 4.3) and the apparent air mass along each
-    // strip's mid-chord normal acceleration (4.4): A += b_j m_a nu_j nu_j^T.
+    // strip's mid-chord normal acceleration (4.4), A += b_j m_a nu_j nu_j^T, with the body
+    // partials nu = (n.e_x, n.e_z, n.(e_y x rho_mid)) and the modal ones psi_mid; plus the
+    // apparent rotary inertia of the kernel's couple -f k_couple2 theta'' (M17) about
+    // a_pitch = e_s, with theta'' partials (0, 0, e_y.e_s, psi_twist).
+    b_strip_ = (0.5 * (1.0 + b.separation_f) * apparent_mass_kg_.array()).matrix();
+    k_twist_ = (b.separation_f * b.k_couple2).matrix();
     double separated = 0.0, area = 0.0;
+    double Abb[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     for (std::size_t j = 0; j < ns; ++j) {
-      const FlexibleStrip& fs = strips_[j];
       const auto i = static_cast<Eigen::Index>(j);
       const Vec3 F(b.Fx[i], b.Fy[i], b.Fz[i]);
       const Vec3 Mc(b.Mx[i], b.My[i], b.Mz[i]);
       F_aero_W_ += F;
       M_aero_P2_W_ += s_L_[j].cross(F) + Mc;
-      if (M_ > 0) {
-        f_.tail(M_).noalias() += 2.0 * (fs.phi_L.transpose() * F);
-        f_.tail(M_).noalias() += (2.0 * Mc.dot(e_s_[j])) * fs.psi_twist.transpose();
-      }
-      Eigen::VectorXd& nu = nu_strip_[j];
+      Fall_.segment<3>(3 * i) = F;
+      mpitch_[i] = Mc.dot(e_s_[j]);
       const Vec3& n = n_[j];
-      nu[0] = n.dot(exW);
-      nu[1] = n.dot(ezW);
-      nu[2] = n.dot(dQlin + eyW.cross(s_mid_[j]));
-      if (M_ > 0) nu.tail(M_) = fs.psi_mid;
-      b_strip_[i] = 0.5 * (1.0 + b.separation_f[i]) * apparent_mass_kg_[i];
-      A_.selfadjointView<Eigen::Lower>().rankUpdate(nu, 2.0 * b_strip_[i]);
-      // Apparent rotary inertia: the kernel's couple -f k_couple2 theta'' (M17) about
-      // a_pitch = e_s, with theta'' partials (0, 0, e_y.e_s, psi_twist).
-      Eigen::VectorXd& nut = nu_twist_strip_[j];
-      nut[2] = eyW.dot(e_s_[j]);
-      if (M_ > 0) nut.tail(M_) = fs.psi_twist.transpose();
-      k_twist_[i] = b.separation_f[i] * b.k_couple2[i];
-      A_.selfadjointView<Eigen::Lower>().rankUpdate(nut, 2.0 * k_twist_[i]);
+      const double nu[3] = {n.dot(exW), n.dot(ezW), n.dot(dQlin + eyW.cross(s_mid_[j]))};
+      nuU_[i] = nu[0];
+      nuW_[i] = nu[1];
+      nuQ_[i] = nu[2];
+      nutQ_[i] = eyW.dot(e_s_[j]);
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c <= r; ++c) Abb[r][c] += b_strip_[i] * nu[r] * nu[c];
+      Abb[2][2] += k_twist_[i] * nutQ_[i] * nutQ_[i];
       const double a = b.chord_m[i] * b.width_m[i];
       separated += (1.0 - b.separation_f[i]) * a;
       area += a;
+    }
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c <= r; ++c) A_(r, c) += 2.0 * Abb[r][c];
+    if (M_ > 0) {
+      auto fq = f_.tail(M_);
+      fq.noalias() += 2.0 * (PhiL_.transpose() * Fall_);
+      fq.noalias() += 2.0 * (PsiTw_.transpose() * mpitch_);
+      auto Aqb = A_.block(3, 0, M_, 3);
+      const Eigen::VectorXd* nus[3] = {&nuU_, &nuW_, &nuQ_};
+      for (int c = 0; c < 3; ++c) {
+        tmp_ns_ = b_strip_.cwiseProduct(*nus[c]);
+        Aqb.col(c).noalias() += 2.0 * (PsiMid_.transpose() * tmp_ns_);
+      }
+      tmp_ns_ = k_twist_.cwiseProduct(nutQ_);
+      Aqb.col(2).noalias() += 2.0 * (PsiTw_.transpose() * tmp_ns_);
+      weights_2ns_.head(nsi_) = b_strip_;
+      weights_2ns_.tail(nsi_) = k_twist_;
+      Aqq_vec_.noalias() = Pouter_ * weights_2ns_;
+      A_.bottomRightCorner(M_, M_) += 2.0 * Eigen::Map<const Eigen::MatrixXd>(Aqq_vec_.data(), M_, M_);
     }
     separated_fraction_ = area > 0.0 ? separated / area : 0.0;
     f_[0] += 2.0 * exW.dot(F_aero_W_);
@@ -294,14 +367,16 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   if (M_ > 0) {
     c_W_.noalias() += L_ * q_;
     Lqd.noalias() = L_ * qd_;
+    Sq_.noalias() = Smat_ * q_;
+    Sqd_.noalias() = Smat_ * qd_;
     Mat3 T;  // T_kl = S_kl . q: the first moment of the deformation, J(q) linear part
     for (int k = 0; k < 3; ++k)
-      for (int l = 0; l < 3; ++l) T(k, l) = S_[static_cast<std::size_t>(3 * k + l)].dot(q_);
+      for (int l = 0; l < 3; ++l) T(k, l) = Sq_[3 * k + l];
     J_W_ += 2.0 * T.trace() * Mat3::Identity() - T - T.transpose();
     // Coriolis moment 2 sum m s x (w x Phi q') = 2 [w (sum_k S_kk.q') - sum_l w_l (S_kl.q')_k].
     Mat3 Td;
     for (int k = 0; k < 3; ++k)
-      for (int l = 0; l < 3; ++l) Td(k, l) = S_[static_cast<std::size_t>(3 * k + l)].dot(qd_);
+      for (int l = 0; l < 3; ++l) Td(k, l) = Sqd_[3 * k + l];
     Mcor = 2.0 * (omega_W_ * Td.trace() - Td * omega_W_);
   }
   const Vec3 F_acc0 = m_w_ * a_O0_W_ + alpha0_W_.cross(c_W_) +
@@ -340,19 +415,22 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     r.noalias() = -(L_.transpose() * (a_O0_W_ - g_W_));
     r.noalias() -= H_.transpose() * al;
     // K_w q = sum_kl w_k w_l P_kl q - |w|^2 M_qq q; h_w = sum_kl w_k w_l S_kl - |w|^2 sum S_kk.
+    Pq_all_.noalias() = Pstack_ * q_;
+    Cq_all_.noalias() = Cstack_ * q_;
+    Cqd_all_.noalias() = Cstack_ * qd_;
     for (int k = 0; k < 3; ++k)
       for (int l = 0; l < 3; ++l) {
         const double wkl = w[k] * w[l];
-        const auto idx = static_cast<std::size_t>(3 * k + l);
-        r.noalias() -= wkl * (*P_[idx] * q_);
-        r.noalias() -= wkl * S_[idx];
+        const int idx = 3 * k + l;
+        r -= wkl * Pq_all_.segment(idx * M_, M_);
+        r -= wkl * S_[static_cast<std::size_t>(idx)];
       }
     const double w2 = w.squaredNorm();
     r.noalias() += w2 * (M_qq_ * q_);
-    r.noalias() += w2 * S_trace_;
+    r += w2 * S_trace_;
     for (int k = 0; k < 3; ++k) {
-      r.noalias() -= (2.0 * w[k]) * (C_[k] * qd_);
-      r.noalias() -= al[k] * (C_[k] * q_);
+      r -= (2.0 * w[k]) * Cqd_all_.segment(k * M_, M_);
+      r -= al[k] * Cq_all_.segment(k * M_, M_);
     }
     r.noalias() -= stiffness_.cwiseProduct(q_);
     if (switches_.damping) r.noalias() -= damping_.cwiseProduct(qd_);
@@ -388,8 +466,20 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     f_[2] += tail_.M_tail_Nm;
   }
 
-  ldlt_.compute(A_);  // reads the lower triangle only
-  ud_ = ldlt_.solve(f_);
+  llt_.compute(A_);  // SPD mass matrix; reads the lower triangle only
+  ud_ = llt_.solve(f_);
+}
+
+void FreeFlightSystem::apparentAccelerations() {
+  // Normal mid-chord and pitch accelerations of u' per strip; force -b nu.u', couple -k nut.u'.
+  extra_force_ = nuU_ * ud_[0] + nuW_ * ud_[1] + nuQ_ * ud_[2];
+  extra_couple_ = nutQ_ * ud_[2];
+  if (M_ > 0) {
+    extra_force_.noalias() += PsiMid_ * ud_.tail(M_);
+    extra_couple_.noalias() += PsiTw_ * ud_.tail(M_);
+  }
+  extra_force_ = -b_strip_.cwiseProduct(extra_force_);
+  extra_couple_ = -k_twist_.cwiseProduct(extra_couple_);
 }
 
 void FreeFlightSystem::rhs(double t_s, const double* y, double* ydot) {
@@ -407,37 +497,30 @@ void FreeFlightSystem::rhs(double t_s, const double* y, double* ydot) {
     ydot[kBody + M_ + i] = ud_[3 + i];
   }
   // Aerodynamic power of both wings relative to the fuselage (kernel loads plus the apparent-mass
-  // force of u', which the kernel could not know).
+  // force and couple of u', which the kernel could not know).
   double power = 0.0;
   if (switches_.aerodynamics) {
+    apparentAccelerations();
     const aero::StripBatch& b = data_.batch;
     const FlapState flap =
         flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
     const Vec3 w_rel = flap.phi_dot_radps * Vec3::UnitX();
     for (std::size_t j = 0; j < strips_.size(); ++j) {
       const auto i = static_cast<Eigen::Index>(j);
-      const FlexibleStrip& fs = strips_[j];
-      Vec3 ud_L = Vec3::Zero();
-      double twist_rate = 0.0;
-      if (M_ > 0) {
-        ud_L.noalias() = fs.phi_L * qd_;
-        twist_rate = fs.psi_twist.dot(qd_);
-      }
-      const Vec3 w_strip = w_rel + twist_rate * e_s_[j];
-      const Vec3 v_rel_L = w_rel.cross(s_L_[j]) + ud_L;
+      const Vec3 w_strip = w_rel + twist_rate_[i] * e_s_[j];
+      const Vec3 v_rel_L = w_rel.cross(s_L_[j]) + UdL_.segment<3>(3 * i);
       const Vec3 v_rel_mid = v_rel_L + w_strip.cross(s_mid_[j] - s_L_[j]);
       const Vec3 F(b.Fx[i], b.Fy[i], b.Fz[i]);
       const Vec3 Mc(b.Mx[i], b.My[i], b.Mz[i]);
-      const double extra = -b_strip_[i] * nu_strip_[j].dot(ud_);
-      const double extra_couple = -k_twist_[i] * nu_twist_strip_[j].dot(ud_);
-      power -= F.dot(v_rel_L) + Mc.dot(w_strip) + extra * n_[j].dot(v_rel_mid) +
-               extra_couple * e_s_[j].dot(w_strip);
+      power -= F.dot(v_rel_L) + Mc.dot(w_strip) + extra_force_[i] * n_[j].dot(v_rel_mid) +
+               extra_couple_[i] * e_s_[j].dot(w_strip);
     }
   }
   ydot[powerOffset()] = 2.0 * power;
 }
 
-void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out) {
+void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out,
+                              bool with_energy) {
   evaluate(t_s, y, nullptr);
   FreeFlightSample& s = *out;
   s = FreeFlightSample{};
@@ -448,13 +531,15 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   // Aerodynamic loads of both wings about P1 in the flight-path frame, with the apparent-mass
   // force of the solved u' at each strip's mid-chord.
   Vec3 F = F_aero_W_, M = M_aero_P2_W_;
-  if (switches_.aerodynamics)
+  if (switches_.aerodynamics) {
+    apparentAccelerations();
     for (std::size_t j = 0; j < strips_.size(); ++j) {
       const auto i = static_cast<Eigen::Index>(j);
-      const Vec3 F_extra = (-b_strip_[i] * nu_strip_[j].dot(ud_)) * n_[j];
+      const Vec3 F_extra = extra_force_[i] * n_[j];
       F += F_extra;
-      M += s_mid_[j].cross(F_extra) - (k_twist_[i] * nu_twist_strip_[j].dot(ud_)) * e_s_[j];
+      M += s_mid_[j].cross(F_extra) + extra_couple_[i] * e_s_[j];
     }
+  }
   const Vec3 F_B = R_BW_ * F;
   const Vec3 M_P1_B = R_BW_ * M + r2_B_.cross(F_B);
   const Vec3 v(U, 0.0, W);
@@ -476,6 +561,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
     o.tip_twist_rad = tip.psi_twist.dot(q_);
   }
 
+  if (!with_energy) return;
   // Energies (exact for the rigid wing without flapping; see the header).
   Eigen::VectorXd u(n_u_);
   u[0] = U;

@@ -61,8 +61,8 @@ class FreeFlightSystem {
   void absoluteTolerances(double rel_tol, double lag_abs_tol, double separation_abs_tol,
                           std::vector<double>* atol) const;
   void rhs(double t_s, const double* y, double* ydot);
-  /// Accelerations, loads and energies at (t, y).
-  void sample(double t_s, const double* y, FreeFlightSample* out);
+  /// Accelerations and loads at (t, y); the energies too when `with_energy` (one more evaluation).
+  void sample(double t_s, const double* y, FreeFlightSample* out, bool with_energy = true);
 
   static int rhsCallback(double t, const double* y, double* ydot, void* self) {
     static_cast<FreeFlightSystem*>(self)->rhs(t, y, ydot);
@@ -109,14 +109,26 @@ class FreeFlightSystem {
 
   // Workspace (evaluate).
   int n_u_ = 3;
-  Eigen::VectorXd q_, qd_, ud_, f_, Pq_[9], scratch_M_;
+  Eigen::VectorXd q_, qd_, ud_, f_, scratch_M_;
+  Eigen::MatrixXd Pstack_, Cstack_, Smat_, Pouter_;  // stacked invariants (constructor)
+  Eigen::VectorXd Pq_all_, Cq_all_, Cqd_all_, Sq_{9}, Sqd_{9}, weights_2ns_, Aqq_vec_;
+  Eigen::Index nsi_ = 0;
   Eigen::MatrixXd A_;
-  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
   Eigen::VectorXd nu_;
-  Eigen::VectorXd b_strip_;
+  Eigen::VectorXd b_strip_;  // 0.5 (1 + f) m_a per strip
   std::vector<Vec3> s_L_, e_c_, n_, e_s_, s_mid_;
-  std::vector<Eigen::VectorXd> nu_strip_, nu_twist_strip_;
-  Eigen::VectorXd k_twist_;  // f k_couple2 per strip (apparent rotary inertia)
+  // Stacked strip data: rows 3j..3j+2 (or j) belong to strip j.
+  Eigen::VectorXd xL_, xT_;                   // undeformed sample points (3 ns)
+  Eigen::MatrixXd PhiL_, PhiT_;               // translational shapes at L and T (3 ns x M)
+  Eigen::MatrixXd PsiTw_, PsiMid_;            // twist and mid-chord normal shapes (ns x M)
+  Eigen::VectorXd SL_, ST_, UdL_, Fall_;      // 3 ns
+  Eigen::VectorXd twist_rate_, mpitch_;       // ns
+  Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;    // body partials of the apparent accelerations
+  Eigen::VectorXd extra_force_, extra_couple_;  // apparent-mass force and couple of u' (ns)
+  Eigen::MatrixXd tmpB_;                      // ns x M
+  Eigen::VectorXd k_twist_, tmp_ns_;          // f k_couple2 per strip (apparent rotary inertia)
+  void apparentAccelerations();
   Vec3 r_f_B_ = Vec3::Zero();  // fuselage CG from P1 (vehicle CG at P1 at zero flap)
   // Results of the last evaluate.
   Vec3 F_aero_W_ = Vec3::Zero(), M_aero_P2_W_ = Vec3::Zero();  // one wing, kernel loads

@@ -135,6 +135,7 @@ void ErkIntegrator::reset(double t0, const double* y0) {
     if (opts_.method == ErkMethod::kVerner6) table = ARKODE_VERNER_8_5_6;
     if (opts_.method == ErkMethod::kFehlberg8) table = ARKODE_FEHLBERG_13_7_8;
     if (opts_.method == ErkMethod::kBogackiShampine3) table = ARKODE_BOGACKI_SHAMPINE_4_2_3;
+    if (opts_.method == ErkMethod::kArk436) table = ARKODE_ARK436L2SA_ERK_6_3_4;
     ERKStepSetTableNum(mem_, table);
     ERKStepSetMaxNumSteps(mem_, opts_.max_steps);
     if (opts_.max_step > 0.0) ERKStepSetMaxStep(mem_, opts_.max_step);

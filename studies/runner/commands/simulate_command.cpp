@@ -196,7 +196,7 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
                .set("tip_twist_amplitude_deg",
                     kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)))
       .set("integrator", JsonObject()
-                             .set("method", "ARKODE ERKStep Dormand-Prince 5(4)")
+                             .set("method", model.flexible ? "ARKODE ERKStep ARK4(3)6L[2]SA explicit table" : "ARKODE ERKStep Dormand-Prince 5(4)")
                              .set("rel_tol", opts.rel_tol)
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
