@@ -52,6 +52,35 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   h_x = inv.S(0, 0) - (inv.S(0, 0) + inv.S(1, 1) + inv.S(2, 2));
   H_x = inv.rotational_participation.row(0).transpose();
   if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
+  stacked = stackStrips(strips, M);
+}
+
+StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count) {
+  const int M = mode_count;
+  const auto ns = static_cast<Eigen::Index>(strips.size());
+  StackedStrips st;
+  st.x_L.resize(3 * ns);
+  st.x_T.resize(3 * ns);
+  st.phi_L.setZero(3 * ns, M);
+  st.phi_T.setZero(3 * ns, M);
+  st.psi_twist.setZero(ns, M);
+  st.psi_mid.setZero(ns, M);
+  st.apparent_outer.setZero(static_cast<Eigen::Index>(M) * M, 2 * ns);
+  for (Eigen::Index i = 0; i < ns; ++i) {
+    const FlexibleStrip& fs = strips[static_cast<std::size_t>(i)];
+    st.x_L.segment<3>(3 * i) = fs.x_L_W_m;
+    st.x_T.segment<3>(3 * i) = fs.x_T_W_m;
+    if (M == 0) continue;
+    st.phi_L.middleRows(3 * i, 3) = fs.phi_L;
+    st.phi_T.middleRows(3 * i, 3) = fs.phi_T;
+    st.psi_twist.row(i) = fs.psi_twist;
+    st.psi_mid.row(i) = fs.psi_mid.transpose();
+    Eigen::Map<Eigen::MatrixXd>(st.apparent_outer.col(i).data(), M, M) =
+        fs.psi_mid * fs.psi_mid.transpose();
+    Eigen::Map<Eigen::MatrixXd>(st.apparent_outer.col(ns + i).data(), M, M) =
+        fs.psi_twist.transpose() * fs.psi_twist;
+  }
+  return st;
 }
 
 void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,

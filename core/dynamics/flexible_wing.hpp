@@ -31,6 +31,21 @@ struct FlexibleStrip {
   double lever_T_m = 0.0;           ///< |x_T - x_L|
 };
 
+/// The strips' modal data stacked for one matrix product per evaluation (rows 3j..3j+2, or j,
+/// belong to strip j).
+struct StackedStrips {
+  Eigen::VectorXd x_L, x_T;             ///< undeformed sample points (3 ns)
+  Eigen::MatrixXd phi_L, phi_T;         ///< translational shapes at L and T (3 ns x M)
+  Eigen::MatrixXd psi_twist, psi_mid;   ///< twist and mid-chord normal shapes (ns x M)
+  /// Apparent-mass outer products (M^2 x 2 ns): column j = vec(psi_mid,j psi_mid,j^T), column
+  /// ns + j = vec(psi_twist,j^T psi_twist,j), so sum_j b_j psi psi^T + k_j psi_t psi_t^T is one
+  /// product with [b; k].
+  Eigen::MatrixXd apparent_outer;
+};
+
+/// Stack per-strip modal data with M modes (M = 0: rigid wing, positions only).
+StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count);
+
 /// Built once from the vehicle and its ModalWing; immutable.
 struct FlexibleWingModel {
   std::shared_ptr<const structure::ModalWing> modal;
@@ -45,6 +60,7 @@ struct FlexibleWingModel {
   Eigen::VectorXd H_x;              ///< row x of H (Euler load per unit alpha_x)
   Eigen::VectorXd apparent_mass_kg; ///< m_a,j = rho pi c_j^2/4 dy_j per strip
   Eigen::Index tip_strip = 0;
+  StackedStrips stacked;
 
   FlexibleWingModel(const VehicleModel& vehicle,
                     std::shared_ptr<const structure::ModalWing> modal_wing,

@@ -138,24 +138,14 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   const auto nsi = static_cast<Eigen::Index>(ns);
   nsi_ = nsi;
   k_twist_.setZero(nsi);
-  xL_.resize(3 * nsi);
-  xT_.resize(3 * nsi);
-  PhiL_.setZero(3 * nsi, M_);
-  PhiT_.setZero(3 * nsi, M_);
-  PsiTw_.setZero(nsi, M_);
-  PsiMid_.setZero(nsi, M_);
-  for (std::size_t j = 0; j < ns; ++j) {
-    const auto i = static_cast<Eigen::Index>(j);
-    const FlexibleStrip& fs = strips_[j];
-    xL_.segment<3>(3 * i) = fs.x_L_W_m;
-    xT_.segment<3>(3 * i) = fs.x_T_W_m;
-    if (M_ > 0) {
-      PhiL_.middleRows(3 * i, 3) = fs.phi_L;
-      PhiT_.middleRows(3 * i, 3) = fs.phi_T;
-      PsiTw_.row(i) = fs.psi_twist;
-      PsiMid_.row(i) = fs.psi_mid.transpose();
-    }
-  }
+  const StackedStrips st = flex ? flex->stacked : stackStrips(strips_, 0);
+  xL_ = st.x_L;
+  xT_ = st.x_T;
+  PhiL_ = st.phi_L;
+  PhiT_ = st.phi_T;
+  PsiTw_ = st.psi_twist;
+  PsiMid_ = st.psi_mid;
+  Pouter_ = st.apparent_outer;
   SL_ = xL_;
   ST_ = xT_;
   UdL_.setZero(3 * nsi);
@@ -169,14 +159,6 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   extra_force_.setZero(nsi);
   extra_couple_.setZero(nsi);
   tmp_ns_.setZero(nsi);
-  // Apparent-mass outer products per strip, vec(psi psi^T), mid-chord then twist (M^2 x 2 ns):
-  // A_qq += reshape(Pouter * [b; k]) is one product per evaluation.
-  Pouter_.setZero(M_ * M_, 2 * nsi);
-  for (Eigen::Index i = 0; i < nsi && M_ > 0; ++i) {
-    const Eigen::VectorXd pm = PsiMid_.row(i).transpose(), pt = PsiTw_.row(i).transpose();
-    Eigen::Map<Eigen::MatrixXd>(Pouter_.col(i).data(), M_, M_) = pm * pm.transpose();
-    Eigen::Map<Eigen::MatrixXd>(Pouter_.col(nsi + i).data(), M_, M_) = pt * pt.transpose();
-  }
   weights_2ns_.setZero(2 * nsi);
   Aqq_vec_.setZero(M_ * M_);
   data_.batch.airx.setZero();

@@ -126,7 +126,6 @@ class FreeFlightSystem {
   Eigen::VectorXd twist_rate_, mpitch_;       // ns
   Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;    // body partials of the apparent accelerations
   Eigen::VectorXd extra_force_, extra_couple_;  // apparent-mass force and couple of u' (ns)
-  Eigen::MatrixXd tmpB_;                      // ns x M
   Eigen::VectorXd k_twist_, tmp_ns_;          // f k_couple2 per strip (apparent rotary inertia)
   void apparentAccelerations();
   Vec3 r_f_B_ = Vec3::Zero();  // fuselage CG from P1 (vehicle CG at P1 at zero flap)
