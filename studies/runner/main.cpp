@@ -7,15 +7,19 @@
 #include <iostream>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/study_file.hpp"
+#include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/grid_spec.hpp"
 
 namespace fs = std::filesystem;
 using namespace orni;
@@ -40,15 +44,36 @@ void requireRange(const char* flag, double v, double lo, double hi, bool lo_open
                    ", got " + std::to_string(v));
 }
 
+/// A grid axis from a command-line spec "A:B:N", every value checked like requireRange.
+GridAxis axisOption(const char* flag, const std::string& text, double lo, double hi,
+                    bool hi_closed, const char* expected) {
+  trim::GridSpec spec;
+  std::string reason;
+  if (!trim::tryParseGridSpec(text, &spec, &reason))
+    throw CliError(std::string("command line: option ") + flag + ": expected A:B:N (" +
+                   trim::kGridSpecMeaning + "), got '" + text + "' (" + reason + ")");
+  GridAxis axis = gridAxis(spec);
+  for (const double v : axis.values)
+    if (!(std::isfinite(v) && v > lo && (hi_closed ? v <= hi : v < hi)))
+      throw CliError(std::string("command line: option ") + flag + ": expected values " +
+                     expected + ", got '" + text + "' (value " + formatShortest(v) + ")");
+  return axis;
+}
+
 fs::path outputFolder(const std::string& out_opt, const Study& study, bool several) {
   if (out_opt.empty()) return fs::path("results") / study.name;
   return several ? fs::path(out_opt) / study.name : fs::path(out_opt);
 }
 
-int runStudy(const Study& study, const fs::path& out_dir) {
+int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
   switch (study.kind) {
     case StudyKind::kSimulate:
       return runSimulateStudy(study, out_dir);
+    case StudyKind::kAeromap: {
+      AeromapRunOptions opts;
+      opts.threads = jobs;
+      return runAeromapStudy(study, out_dir, opts);
+    }
     case StudyKind::kModes:
       return runModesStudy(study, out_dir);
     default:
@@ -109,8 +134,29 @@ int main(int argc, char** argv) {
   modes->add_option("-o,--output", modes_out, "Output folder (default results/<vehicle name>)");
   modes->add_option("--export-ccx", modes_ccx, "Also write the FE model as a CalculiX deck (.inp)");
 
+  // aeromap
+  auto* am = app.add_subcommand(
+      "aeromap", "Aero map: cycle-mean tethered loads over a grid of speed, frequency, pitch and "
+                 "tail angle (paper Fig. 5); resumable");
+  std::string am_vehicle, am_speed, am_freq, am_theta, am_tail, am_out;
+  std::optional<int> am_cycles;
+  int am_jobs = 1;
+  am->add_option("VEHICLE", am_vehicle, "Vehicle file (TOML)")->required();
+  am->add_option("--speed", am_speed, "Speeds U (m/s) A:B:N: N values from A to B inclusive")
+      ->required();
+  am->add_option("--freq", am_freq, "Flapping frequencies f (Hz) A:B:N")->required();
+  am->add_option("--theta", am_theta, "Mean pitch attitudes (deg) A:B:N")->required();
+  am->add_option("--tail", am_tail,
+                 "Tail elevation angles delta_T (deg) A:B:N (default: the vehicle's "
+                 "operating-point tail angle)");
+  am->add_option("--cycles", am_cycles, "Maximum flapping cycles per point (default 40)");
+  am->add_option("-j,--jobs", am_jobs, "Worker threads")->check(CLI::Range(1, 1024));
+  am->add_option("-o,--output", am_out,
+                 "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
+                 "resumes from the journal there");
+
   // Later issues: listed so that --help shows the whole contract.
-  for (const char* name : {"aeromap", "trim", "optimize"}) {
+  for (const char* name : {"trim", "optimize"}) {
     auto* c = app.add_subcommand(name, std::string(name) + " (not available in this version)");
     c->allow_extras();
   }
@@ -148,7 +194,7 @@ int main(int argc, char** argv) {
                      "a whole number of cycles in [1, 100000]");
         study.simulate.cycles = *sim_cycles;
       }
-      return runStudy(study, outputFolder(sim_out, study, false));
+      return runStudy(study, outputFolder(sim_out, study, false), 1);
     }
     if (run->parsed()) {
       // Load (and validate) every study first, so a typo in the last one fails before any work.
@@ -156,10 +202,28 @@ int main(int argc, char** argv) {
       for (const std::string& f : run_files) studies.push_back(loadStudyFile(f));
       int rc = kExitOk;
       for (const Study& s : studies) {
-        const int r = runStudy(s, outputFolder(run_out, s, studies.size() > 1));
+        const int r = runStudy(s, outputFolder(run_out, s, studies.size() > 1), run_jobs);
         if (r != kExitOk) rc = r;
       }
       return rc;
+    }
+    if (am->parsed()) {
+      GridAxis speed = axisOption("--speed", am_speed, 0.0, 1e3, false, "in m/s in (0, 1000)");
+      GridAxis freq = axisOption("--freq", am_freq, 0.0, 200.0, true, "in Hz in (0, 200]");
+      GridAxis theta = axisOption("--theta", am_theta, -90.0, 90.0, false, "in deg in (-90, 90)");
+      std::optional<GridAxis> tail;
+      if (!am_tail.empty())
+        tail = axisOption("--tail", am_tail, -90.0, 90.0, false, "in deg in (-90, 90)");
+      Study study = aeromapStudyFromVehicle(am_vehicle, std::move(speed), std::move(freq),
+                                            std::move(theta), std::move(tail));
+      if (am_cycles) {
+        requireRange("--cycles", *am_cycles, 1.0, 100001.0, false,
+                     "a whole number of cycles in [1, 100000]");
+        study.aeromap.options.cycles = *am_cycles;
+      }
+      AeromapRunOptions opts;
+      opts.threads = am_jobs;
+      return runAeromapStudy(study, outputFolder(am_out, study, false), opts);
     }
     if (modes->parsed()) {
       const fs::path out = modes_out.empty()

@@ -1,6 +1,7 @@
 #include "studies/runner/config/study_file.hpp"
 
 #include <array>
+#include <charconv>
 #include <limits>
 #include <memory>
 #include <system_error>
@@ -71,7 +72,106 @@ void mergeOverride(toml::table& into, toml::table& from) {
   }
 }
 
+/// SimulationOptions::IsValid says "<field> must be <condition>"; the fields are named like the
+/// keys, so the error names the key (or the section header when the default is at fault).
+[[noreturn]] void throwInvalidOptions(const TableReader& section, const std::string& why) {
+  const std::size_t space = why.find(' ');
+  const std::string key = why.substr(0, space);
+  const std::string must = " must be ";
+  std::string expected = why;
+  if (why.compare(space, must.size(), must) == 0)
+    expected = "a value " + why.substr(space + must.size());
+  const toml::node* n = section.table().get(key);
+  throw section.valueError(key, expected, n ? describeNode(*n) : std::string("the default"));
+}
+
+/// The integrator tolerances shared by [simulate] and [aeromap].
+void readTolerances(TableReader& r, SimulationOptions& o) {
+  o.rel_tol = r.optionalDouble("rel_tol", o.rel_tol, Range::any());
+  o.abs_tol = r.optionalDouble("abs_tol", o.abs_tol, Range::any());
+  o.separation_abs_tol = r.optionalDouble("separation_abs_tol", o.separation_abs_tol, Range::any());
+  o.steady_tol = r.optionalDouble("steady_tol", o.steady_tol, Range::any());
+}
+
+/// One [aeromap] axis: "A:B:N", an array of values or one number, every value inside `range`.
+GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range) {
+  const std::string expected = std::string("a grid spec \"A:B:N\" (") + trim::kGridSpecMeaning +
+                               "), an array of values or a number, " +
+                               range.describe("each value");
+  const toml::node* n = r.take(key);
+  if (!n) throw r.missingError(key, expected);
+  GridAxis axis;
+  if (const auto* text = n->as_string()) {
+    trim::GridSpec spec;
+    std::string reason;
+    if (!trim::tryParseGridSpec(text->get(), &spec, &reason))
+      throw r.valueError(key, expected, describeNode(*n) + " (" + reason + ")");
+    axis = gridAxis(spec);
+    for (const double v : axis.values)
+      if (!range.contains(v))
+        throw r.valueError(key, expected, describeNode(*n) + " (value " + formatNumber(v) + ")");
+  } else if (n->is_array()) {
+    axis.values = r.requiredNumberArray(key, 0, range);
+    if (axis.values.empty()) throw r.valueError(key, expected, "an empty array");
+  } else if (n->is_number()) {
+    axis.values = {r.requiredDouble(key, range)};
+  } else {
+    throw r.valueError(key, expected, describeNode(*n));
+  }
+  return axis;
+}
+
+/// The value d in file units with d * si_per_file_unit == si exactly, when one exists.
+double fileUnits(double si, double si_per_file_unit) {
+  const std::string text = TomlWriter::scaledText(si, si_per_file_unit);
+  double d = si / si_per_file_unit;
+  std::from_chars(text.data(), text.data() + text.size(), d);
+  return d;
+}
+
+void readAeromap(TableReader& am, Study& study) {
+  AeromapSettings& a = study.aeromap;
+  constexpr int kIntMin = std::numeric_limits<int>::min();
+  constexpr int kIntMax = std::numeric_limits<int>::max();
+  a.speed_mps = readGridAxis(am, "speed_mps", Range::open(0.0, 1000.0));
+  a.freq_hz = readGridAxis(am, "freq_hz", Range::openClosed(0.0, 200.0));
+  a.theta_deg = readGridAxis(am, "theta_deg", Range::open(-90.0, 90.0));
+  if (am.has("tail_angle_deg")) {
+    a.tail_angle_deg = readGridAxis(am, "tail_angle_deg", Range::open(-90.0, 90.0));
+  } else {
+    a.tail_angle_deg.values = {fileUnits(study.point.tail_angle_rad, orni::kDegToRad)};
+  }
+  std::size_t points = 1;
+  for (const GridAxis* axis : {&a.speed_mps, &a.freq_hz, &a.theta_deg, &a.tail_angle_deg}) {
+    if (axis->values.size() > trim::kMaxAeroMapPoints / points)
+      throw am.valueError("speed_mps", "a grid of at most " +
+                                           std::to_string(trim::kMaxAeroMapPoints) + " points",
+                          "a larger grid");
+    points *= axis->values.size();
+  }
+  SimulationOptions& o = a.options;
+  o.cycles = am.optionalInt("cycles", o.cycles, kIntMin, kIntMax);
+  readTolerances(am, o);
+  std::string why;
+  if (!o.IsValid(&why)) throwInvalidOptions(am, why);
+  am.finish();
+}
+
+void writeGridAxis(TomlWriter& out, std::string_view key, const GridAxis& axis) {
+  if (axis.spec)
+    out.string(key, trim::toString(*axis.spec));
+  else
+    out.numberArray(key, axis.values);
+}
+
 }  // namespace
+
+GridAxis gridAxis(const trim::GridSpec& spec) {
+  GridAxis axis;
+  axis.spec = spec;
+  axis.values = trim::gridValues(spec);
+  return axis;
+}
 
 std::string_view toString(StudyKind kind) {
   for (const auto& k : kKinds)
@@ -92,7 +192,8 @@ Study loadStudyFile(const fs::path& study_file) {
   study_ctx->file = study_name;
 
   TableReader top(root, std::string(), study_ctx,
-                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate"});
+                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
+                   "aeromap"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -167,26 +268,24 @@ Study loadStudyFile(const fs::path& study_file) {
     if (auto d = sim->maybeDouble("tail_angle_deg", Range::open(-90.0, 90.0)))
       p.tail_angle_rad = *d * orni::kDegToRad;
     o.cycles = sim->optionalInt("cycles", o.cycles, kIntMin, kIntMax);
-    o.rel_tol = sim->optionalDouble("rel_tol", o.rel_tol, Range::any());
-    o.abs_tol = sim->optionalDouble("abs_tol", o.abs_tol, Range::any());
-    o.separation_abs_tol =
-        sim->optionalDouble("separation_abs_tol", o.separation_abs_tol, Range::any());
-    o.steady_tol = sim->optionalDouble("steady_tol", o.steady_tol, Range::any());
+    readTolerances(*sim, o);
     o.samples_per_cycle =
         sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
     std::string why;
-    if (!o.IsValid(&why)) {
-      // IsValid says "<field> must be <condition>"; the fields are named like the keys.
-      const std::size_t space = why.find(' ');
-      const std::string key = why.substr(0, space);
-      const std::string must = " must be ";
-      std::string expected = why;
-      if (why.compare(space, must.size(), must) == 0)
-        expected = "a value " + why.substr(space + must.size());
-      const toml::node* n = sim->table().get(key);
-      throw sim->valueError(key, expected, n ? describeNode(*n) : std::string("the default"));
-    }
+    if (!o.IsValid(&why)) throwInvalidOptions(*sim, why);
     sim->finish();
+  }
+
+  if (top.has("aeromap") && study.kind != StudyKind::kAeromap)
+    throw InputError::unknownKey(top.fileOf("aeromap"), top.lineOf("aeromap"), "aeromap",
+                                 "[aeromap] is only allowed in a study of kind \"aeromap\", "
+                                 "this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (study.kind == StudyKind::kAeromap) {
+    TableReader am = top.requiredTable(
+        "aeromap", {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles", "rel_tol",
+                    "abs_tol", "separation_abs_tol", "steady_tol"});
+    readAeromap(am, study);
   }
   top.finish();
   return study;
@@ -199,6 +298,22 @@ Study studyFromVehicle(const fs::path& vehicle_file) {
   study.name = runNameFromStem(vehicle_file);
   study.vehicle_path = vehicle_file;
   study.point = study.vehicle.operating_point;
+  return study;
+}
+
+Study aeromapStudyFromVehicle(const fs::path& vehicle_file, GridAxis speed_mps, GridAxis freq_hz,
+                              GridAxis theta_deg, std::optional<GridAxis> tail_angle_deg) {
+  Study study = studyFromVehicle(vehicle_file);
+  study.kind = StudyKind::kAeromap;
+  study.name += "_aeromap";
+  AeromapSettings& a = study.aeromap;
+  a.speed_mps = std::move(speed_mps);
+  a.freq_hz = std::move(freq_hz);
+  a.theta_deg = std::move(theta_deg);
+  if (tail_angle_deg)
+    a.tail_angle_deg = std::move(*tail_angle_deg);
+  else
+    a.tail_angle_deg.values = {fileUnits(study.point.tail_angle_rad, orni::kDegToRad)};
   return study;
 }
 
@@ -227,6 +342,19 @@ std::string resolvedStudyToml(const Study& study) {
     out.number("separation_abs_tol", o.separation_abs_tol);
     out.number("steady_tol", o.steady_tol);
     out.integer("samples_per_cycle", o.samples_per_cycle);
+  }
+  if (study.kind == StudyKind::kAeromap) {
+    const AeromapSettings& a = study.aeromap;
+    out.header({"aeromap"});
+    writeGridAxis(out, "speed_mps", a.speed_mps);
+    writeGridAxis(out, "freq_hz", a.freq_hz);
+    writeGridAxis(out, "theta_deg", a.theta_deg);
+    writeGridAxis(out, "tail_angle_deg", a.tail_angle_deg);
+    out.integer("cycles", a.options.cycles, "the maximum per point (each stops when steady)");
+    out.number("rel_tol", a.options.rel_tol);
+    out.number("abs_tol", a.options.abs_tol);
+    out.number("separation_abs_tol", a.options.separation_abs_tol);
+    out.number("steady_tol", a.options.steady_tol);
   }
   writeVehicleToml(study.vehicle, out, {"vehicle"});
   return out.str();

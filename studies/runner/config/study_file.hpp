@@ -16,17 +16,30 @@
 //   [simulate] (optional, kind = "simulate" only) mode "tethered"|"free", speed_mps, freq_hz,
 //            theta_deg, tail_angle_deg (default: the vehicle's operating point), cycles, rel_tol,
 //            abs_tol, steady_tol, samples_per_cycle (default: SimulationOptions).
-// Sections of the other kinds ([aeromap], [trim], ...) are not defined yet and are rejected.
+//   [aeromap] (required for kind = "aeromap", rejected otherwise) the grid of an aero map (paper
+//            Fig. 5). Axes speed_mps, freq_hz, theta_deg (required) and tail_angle_deg (optional,
+//            default: the vehicle's operating-point tail angle), each given as
+//              - a grid spec string "A:B:N": N evenly spaced values from A to B inclusive
+//                (N >= 1; N = 1 needs A == B), e.g. speed_mps = "10:20:6", or
+//              - an array of values, e.g. theta_deg = [0, 5, 12.5], or a single number.
+//            (A three-number array is a list of three values, never a spec: "A:B:N" is a string
+//            so that the two cannot be confused.) Options: cycles (the maximum per point,
+//            default 40), steady_tol, rel_tol, abs_tol, separation_abs_tol (default:
+//            SimulationOptions). Every point stops at its periodic steady state.
+// Sections of the other kinds ([trim], ...) are not defined yet and are rejected.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 #include "studies/runner/config/input_error.hpp"
+#include "trim/aero_map_options.hpp"
+#include "trim/grid_spec.hpp"
 
 namespace orni::studies {
 
@@ -36,6 +49,19 @@ enum class StudyKind { kSimulate, kModes, kAeromap, kTrim, kOptimize, kSweep };
 std::string_view toString(StudyKind kind);
 /// The kind of that spelling, or nullopt.
 std::optional<StudyKind> parseStudyKind(std::string_view text);
+
+/// One axis of an aero map in file units (m/s, Hz, deg): a grid spec "A:B:N" or a list.
+struct GridAxis {
+  std::optional<orni::trim::GridSpec> spec;  ///< set when the axis was given as "A:B:N"
+  std::vector<double> values;                ///< the values (gridValues(spec), or as listed)
+};
+
+/// The [aeromap] section (kind "aeromap").
+struct AeromapSettings {
+  GridAxis speed_mps, freq_hz, theta_deg, tail_angle_deg;
+  /// Per-point options; cycles is the maximum (default 40), stop_when_steady is always on.
+  orni::SimulationOptions options = orni::trim::AeroMapOptions::defaultSimulation();
+};
 
 struct Study {
   StudyKind kind = StudyKind::kSimulate;
@@ -48,7 +74,11 @@ struct Study {
   orni::VehicleModel vehicle;          ///< resolved, overrides applied, SI
   orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
+  AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
 };
+
+/// The axis of a grid spec (values = gridValues(spec)).
+GridAxis gridAxis(const orni::trim::GridSpec& spec);
 
 /// Reads and validates a study file and the vehicle it names. Throws InputError.
 Study loadStudyFile(const std::filesystem::path& study_file);
@@ -57,8 +87,17 @@ Study loadStudyFile(const std::filesystem::path& study_file);
 /// stem, point = the vehicle's operating point, default options. Throws InputError.
 Study studyFromVehicle(const std::filesystem::path& vehicle_file);
 
+/// The study behind `ornithopter aeromap VEHICLE.toml --speed .. --freq .. --theta .. [--tail ..]`:
+/// kind aeromap, name "<vehicle stem>_aeromap", the given axes (file units, values already checked
+/// by the caller), the vehicle's operating-point tail angle when `tail_angle_deg` is empty,
+/// default options. Throws InputError for a bad vehicle file.
+Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxis speed_mps,
+                              GridAxis freq_hz, GridAxis theta_deg,
+                              std::optional<GridAxis> tail_angle_deg);
+
 /// study.resolved.toml: a complete TOML document with every default filled in: kind, name,
-/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate), and the
+/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate) or
+/// [aeromap] with its axes (specs as "A:B:N", lists as arrays) and options (kind aeromap), and the
 /// resolved vehicle as a [vehicle] table in file units and key names. loadStudyFile reads it back
 /// into the same Study (apart from study_path).
 std::string resolvedStudyToml(const Study& study);

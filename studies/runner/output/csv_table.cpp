@@ -1,17 +1,43 @@
 #include "studies/runner/output/csv_table.hpp"
 
 #include <stdexcept>
+#include <utility>
 
 #include "studies/runner/output/atomic_file.hpp"
 
 namespace orni::studies {
 
-void CsvTable::addColumn(std::string name, std::string unit, std::vector<double> values) {
-  if (!columns_.empty() && values.size() != columns_.front().size())
+namespace {
+
+std::string csvCell(const std::string& text) {
+  if (text.find_first_of("\n\r") != std::string::npos)
+    throw std::logic_error("CsvTable: a cell contains a newline");
+  if (text.find_first_of(",\"") == std::string::npos) return text;
+  std::string q = "\"";
+  for (const char c : text) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+}  // namespace
+
+void CsvTable::add(std::string name, std::string unit, std::vector<std::string> cells) {
+  if (!columns_.empty() && cells.size() != columns_.front().size())
     throw std::logic_error("CsvTable: column '" + name + "' has a different length");
   names_.push_back(std::move(name));
   units_.push_back(std::move(unit));
-  columns_.push_back(std::move(values));
+  columns_.push_back(std::move(cells));
+}
+
+void CsvTable::addColumn(std::string name, std::string unit, const std::vector<double>& values) {
+  std::vector<std::string> cells;
+  cells.reserve(values.size());
+  for (const double v : values) cells.push_back(formatShortest(v));
+  add(std::move(name), std::move(unit), std::move(cells));
+}
+
+void CsvTable::addTextColumn(std::string name, std::string unit, std::vector<std::string> cells) {
+  for (std::string& c : cells) c = csvCell(c);
+  add(std::move(name), std::move(unit), std::move(cells));
 }
 
 std::size_t CsvTable::rows() const { return columns_.empty() ? 0 : columns_.front().size(); }
@@ -30,7 +56,7 @@ std::string CsvTable::toString() const {
   for (std::size_t r = 0; r < rows(); ++r) {
     for (std::size_t c = 0; c < columns_.size(); ++c) {
       if (c) out += ',';
-      out += formatShortest(columns_[c][r]);
+      out += columns_[c][r];
     }
     out += '\n';
   }

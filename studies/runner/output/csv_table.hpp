@@ -8,15 +8,20 @@ namespace orni::studies {
 
 class CsvTable {
  public:
-  /// Add a column; every column must end up with the same number of rows.
-  void addColumn(std::string name, std::string unit, std::vector<double> values);
+  /// Add a column of numbers (shortest round-trip formatting); every column must end up with the
+  /// same number of rows.
+  void addColumn(std::string name, std::string unit, const std::vector<double>& values);
+  /// Add a column of text cells as they are ("" = empty cell, e.g. no value). A cell with a comma
+  /// or a double quote is quoted (RFC 4180); newlines are not allowed (std::logic_error).
+  void addTextColumn(std::string name, std::string unit, std::vector<std::string> cells);
   std::size_t rows() const;
-  /// Text: names row, units row, then the values (shortest round-trip formatting).
+  /// Text: names row, units row, then the values.
   std::string toString() const;
 
  private:
+  void add(std::string name, std::string unit, std::vector<std::string> cells);
   std::vector<std::string> names_, units_;
-  std::vector<std::vector<double>> columns_;
+  std::vector<std::vector<std::string>> columns_;  // formatted cells
 };
 
 }  // namespace orni::studies

@@ -202,6 +202,118 @@ TEST_F(ConfigStudyFile, SimulateSectionRules) {
   EXPECT_EQ(errorOfStudy(d).key(), "name");
 }
 
+TEST_F(ConfigStudyFile, AeromapSection) {
+  const fs::path f = writeStudy("map.toml", "kind = \"aeromap\"\nvehicle = \"" + efw() + R"("
+[aeromap]
+speed_mps = "10:20:6"
+freq_hz = [10, 12.5, 15]
+theta_deg = 7
+cycles = 25
+steady_tol = 2e-3
+)");
+  const Study s = loadStudyFile(f);
+  EXPECT_EQ(s.kind, StudyKind::kAeromap);
+  const AeromapSettings& a = s.aeromap;
+  ASSERT_TRUE(a.speed_mps.spec.has_value());
+  EXPECT_EQ(a.speed_mps.values, (std::vector<double>{10, 12, 14, 16, 18, 20}));
+  EXPECT_FALSE(a.freq_hz.spec.has_value());
+  EXPECT_EQ(a.freq_hz.values, (std::vector<double>{10, 12.5, 15}));
+  EXPECT_EQ(a.theta_deg.values, (std::vector<double>{7}));
+  // The tail defaults to the vehicle's operating point (11.85 deg), exactly in SI.
+  ASSERT_EQ(a.tail_angle_deg.values.size(), 1u);
+  EXPECT_EQ(a.tail_angle_deg.values[0], 11.85);
+  EXPECT_EQ(a.tail_angle_deg.values[0] * kDegToRad, s.vehicle.operating_point.tail_angle_rad);
+  EXPECT_EQ(a.options.cycles, 25);
+  EXPECT_EQ(a.options.steady_tol, 2e-3);
+  EXPECT_TRUE(a.options.stop_when_steady);
+  EXPECT_FALSE(a.options.record_history);
+  EXPECT_EQ(a.options.rel_tol, SimulationOptions{}.rel_tol);
+
+  // The resolved study writes the section back; it reloads to the same map and is a fixed point.
+  const std::string text = resolvedStudyToml(s);
+  for (const char* expected :
+       {"[aeromap]\n", "speed_mps = \"10:20:6\"\n", "freq_hz = [10.0, 12.5, 15.0]\n",
+        "theta_deg = [7.0]\n", "tail_angle_deg = [11.85]\n", "cycles = 25", "steady_tol = 0.002\n"})
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+  const Study back = loadStudyFile(writeStudy("study.resolved.toml", text));
+  EXPECT_EQ(back.aeromap.speed_mps.values, a.speed_mps.values);
+  EXPECT_EQ(back.aeromap.freq_hz.values, a.freq_hz.values);
+  EXPECT_EQ(back.aeromap.theta_deg.values, a.theta_deg.values);
+  EXPECT_EQ(back.aeromap.tail_angle_deg.values, a.tail_angle_deg.values);
+  EXPECT_EQ(back.aeromap.options.cycles, a.options.cycles);
+  EXPECT_EQ(back.aeromap.options.steady_tol, a.options.steady_tol);
+  EXPECT_EQ(resolvedStudyToml(back), text);
+}
+
+TEST_F(ConfigStudyFile, LoadsPaperAeromapStudy) {
+  const Study s = loadStudyFile(repo() / "studies" / "paper" / "fig5_efw_aeromap.toml");
+  EXPECT_EQ(s.kind, StudyKind::kAeromap);
+  EXPECT_EQ(s.name, "fig5_efw_aeromap");
+  const AeromapSettings& a = s.aeromap;
+  EXPECT_EQ(a.speed_mps.values.size() * a.freq_hz.values.size() * a.theta_deg.values.size() *
+                a.tail_angle_deg.values.size(),
+            180u);
+  EXPECT_EQ(a.theta_deg.values, (std::vector<double>{0, 5, 10, 15, 20}));
+}
+
+TEST_F(ConfigStudyFile, AeromapSectionRules) {
+  const std::string head = "kind = \"aeromap\"\nvehicle = \"" + efw() + "\"\n";
+  struct Case {
+    const char* body;
+    const char* key;
+    int line;
+    const char* says;
+  };
+  const Case cases[] = {
+      {"", "aeromap", 1, "missing required key 'aeromap'"},
+      {"[aeromap]\nspeed_mps = \"10:20\"\nfreq_hz = 12\ntheta_deg = 0\n", "aeromap.speed_mps", 4,
+       "(three fields separated by ':' are needed)"},
+      {"[aeromap]\nspeed_mps = 10\nfreq_hz = \"10:20:1\"\ntheta_deg = 0\n", "aeromap.freq_hz", 5,
+       "(N = 1 needs A == B)"},
+      {"[aeromap]\nspeed_mps = 10\nfreq_hz = 12\ntheta_deg = \"0:90:4\"\n", "aeromap.theta_deg",
+       6, "(value 90)"},
+      {"[aeromap]\nspeed_mps = 10\nfreq_hz = 12\ntheta_deg = []\n", "aeromap.theta_deg", 6,
+       "got an empty array"},
+      {"[aeromap]\nspeed_mps = [10, 0]\nfreq_hz = 12\ntheta_deg = 0\n", "aeromap.speed_mps", 4,
+       "at index 1"},
+      {"[aeromap]\nspeed_mps = true\nfreq_hz = 12\ntheta_deg = 0\n", "aeromap.speed_mps", 4,
+       "got a boolean true"},
+      {"[aeromap]\nspeed_mps = 10\nfreq_hz = 12\n", "aeromap.theta_deg", 3,
+       "missing required key 'aeromap.theta_deg'"},
+      {"[aeromap]\nspeed_mps = 10\nfreq_hz = 12\ntheta_deg = 0\ntail_deg = 3\n",
+       "aeromap.tail_deg", 7, "unknown key 'aeromap.tail_deg'"},
+      {"[aeromap]\nspeed_mps = 10\nfreq_hz = 12\ntheta_deg = 0\ncycles = 0\n", "aeromap.cycles",
+       7, "expected a value in [1, 100000]"},
+  };
+  int n = 0;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.body);
+    const fs::path f = writeStudy("rules" + std::to_string(n++) + ".toml", head + c.body);
+    const InputError e = errorOfStudy(f);
+    EXPECT_EQ(e.key(), c.key);
+    EXPECT_EQ(e.line(), c.line);
+    EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+  }
+  const fs::path in_simulate = writeStudy(
+      "sim.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n[aeromap]\nspeed_mps = 10\n");
+  const InputError e = errorOfStudy(in_simulate);
+  EXPECT_EQ(e.key(), "aeromap");
+  EXPECT_EQ(e.line(), 3);
+}
+
+TEST_F(ConfigStudyFile, AeromapStudyFromVehicle) {
+  const Study s = aeromapStudyFromVehicle(vehiclePath("efw_magpie.toml"),
+                                          gridAxis(trim::parseGridSpec("10:20:6")),
+                                          gridAxis(trim::parseGridSpec("12:12:1")),
+                                          gridAxis(trim::parseGridSpec("0:20:5")), std::nullopt);
+  EXPECT_EQ(s.kind, StudyKind::kAeromap);
+  EXPECT_EQ(s.name, "efw_magpie_aeromap");
+  EXPECT_EQ(s.aeromap.tail_angle_deg.values, (std::vector<double>{11.85}));
+  EXPECT_EQ(s.aeromap.options.cycles, 40);
+  const Study back = loadStudyFile(writeStudy("r.toml", resolvedStudyToml(s)));
+  EXPECT_EQ(resolvedStudyToml(back), resolvedStudyToml(s));
+}
+
 TEST_F(ConfigStudyFile, StudyFromVehicle) {
   const Study s = studyFromVehicle(vehiclePath("efw_magpie.toml"));
   EXPECT_EQ(s.kind, StudyKind::kSimulate);

@@ -1,0 +1,139 @@
+// The aero-map journal (studies/runner/output/aeromap_journal.hpp): records round-trip exactly,
+// torn or corrupt lines are never trusted, and reopening keeps only the valid records of a journal
+// with the same fingerprint.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+
+#include "studies/runner/output/aeromap_journal.hpp"
+
+namespace orni::studies {
+namespace {
+
+namespace fs = std::filesystem;
+
+trim::AeroMapPoint samplePoint() {
+  trim::AeroMapPoint p;
+  p.status = SimulationStatus::kOk;
+  p.message = "periodic steady state reached at cycle 3 (change 4.6e-04, 1e-3), \"quoted\"";
+  p.cycles_run = 3;
+  p.steady_state_cycle = 3;
+  p.last_cycle_change = 4.598539070786259e-04;
+  p.mean.FV_N = -0.27854481485727844;
+  p.mean.FH_N = 0.1 + 0.2;
+  p.mean.M_Nm = 1e-300;
+  p.mean.power_aero_W = 10.53251939200516;
+  p.mean.power_hinge_W = -0.0;
+  return p;
+}
+
+std::string readAll(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(OutputAeromapJournal, RecordsRoundTripExactly) {
+  const trim::AeroMapPoint p = samplePoint();
+  const std::string line = journalRecord(17, p);
+  ASSERT_EQ(line.back(), '\n');
+  std::size_t index = 0;
+  trim::AeroMapPoint q;
+  ASSERT_TRUE(parseJournalRecord(std::string_view(line).substr(0, line.size() - 1), 18, &index,
+                                 &q));
+  EXPECT_EQ(index, 17u);
+  EXPECT_EQ(q.status, p.status);
+  EXPECT_EQ(q.message, p.message);
+  EXPECT_EQ(q.cycles_run, p.cycles_run);
+  EXPECT_EQ(q.steady_state_cycle, p.steady_state_cycle);
+  EXPECT_EQ(q.last_cycle_change, p.last_cycle_change);
+  EXPECT_EQ(q.mean.FV_N, p.mean.FV_N);
+  EXPECT_EQ(q.mean.FH_N, p.mean.FH_N);
+  EXPECT_EQ(q.mean.M_Nm, p.mean.M_Nm);
+  EXPECT_EQ(q.mean.power_aero_W, p.mean.power_aero_W);
+  EXPECT_EQ(q.mean.power_hinge_W, 0.0);
+
+  trim::AeroMapPoint failed;
+  failed.status = SimulationStatus::kDiverged;
+  failed.mean.FV_N = std::numeric_limits<double>::quiet_NaN();
+  failed.message = "non-finite loads";
+  const std::string l2 = journalRecord(0, failed);
+  ASSERT_TRUE(parseJournalRecord(std::string_view(l2).substr(0, l2.size() - 1), 1, &index, &q));
+  EXPECT_EQ(q.status, SimulationStatus::kDiverged);
+  EXPECT_TRUE(std::isnan(q.mean.FV_N));
+  EXPECT_EQ(q.steady_state_cycle, -1);
+}
+
+TEST(OutputAeromapJournal, RejectsTornAndCorruptRecords) {
+  const std::string full = journalRecord(5, samplePoint());
+  const std::string_view line = std::string_view(full).substr(0, full.size() - 1);
+  std::size_t index = 0;
+  trim::AeroMapPoint q;
+  ASSERT_TRUE(parseJournalRecord(line, 6, &index, &q));
+  for (std::size_t cut = 0; cut < line.size(); ++cut)
+    EXPECT_FALSE(parseJournalRecord(line.substr(0, cut), 6, &index, &q)) << "cut at " << cut;
+  std::string flipped(line);
+  flipped[30] = flipped[30] == '1' ? '2' : '1';
+  EXPECT_FALSE(parseJournalRecord(flipped, 6, &index, &q));
+  EXPECT_FALSE(parseJournalRecord(line, 5, &index, &q));  // index 5 of a 5-point map
+}
+
+TEST(OutputAeromapJournal, ReopenKeepsOnlyValidRecordsOfTheSameStudy) {
+  const fs::path dir = fs::temp_directory_path() / "orni_output_journal";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const fs::path file = dir / "aeromap.journal";
+  {
+    JournalResume r;
+    AeroMapJournal j(file, 0x1234, 4, &r);
+    EXPECT_FALSE(r.existed);
+    j.append(2, samplePoint());
+    j.append(0, samplePoint());
+  }
+  const std::string good = readAll(file);
+  {  // a torn third record and a corrupt line in the middle
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    const std::string third = journalRecord(3, samplePoint());
+    out << good.substr(0, good.find('\n') + 1) << "garbage line\n"
+        << good.substr(good.find('\n') + 1) << third.substr(0, third.size() / 2);
+  }
+  {
+    JournalResume r;
+    AeroMapJournal j(file, 0x1234, 4, &r);
+    EXPECT_TRUE(r.existed);
+    EXPECT_TRUE(r.fingerprint_matched);
+    EXPECT_EQ(r.records, 2u);
+    EXPECT_EQ(r.rejected_lines, 2u);
+    EXPECT_TRUE(r.points[0].has_value());
+    EXPECT_FALSE(r.points[1].has_value());
+    EXPECT_TRUE(r.points[2].has_value());
+    EXPECT_FALSE(r.points[3].has_value());
+    j.append(3, samplePoint());
+  }
+  {  // the rewrite dropped the fragments, so the appended record is whole and trusted
+    JournalResume r;
+    AeroMapJournal j(file, 0x1234, 4, &r);
+    EXPECT_EQ(r.records, 3u);
+    EXPECT_EQ(r.rejected_lines, 0u);
+    EXPECT_TRUE(r.points[3].has_value());
+  }
+  {  // another fingerprint (or point count): everything is discarded
+    JournalResume r;
+    AeroMapJournal j(file, 0x9999, 4, &r);
+    EXPECT_TRUE(r.existed);
+    EXPECT_FALSE(r.fingerprint_matched);
+    EXPECT_EQ(r.records, 0u);
+    j.remove();
+  }
+  EXPECT_FALSE(fs::exists(file));
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace orni::studies
