@@ -19,11 +19,11 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       data_(model),
       q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_), frame_inertia_(M_),
       A_(M_, M_),
-      ldlt_(M_),
-      b_strip_(static_cast<Eigen::Index>(model.strips.size())),
-      s_L_(model.strips.size()), e_c_(model.strips.size()), n_(model.strips.size()),
-      e_s_(model.strips.size()), v_rel_L_(model.strips.size()),
-      twist_rate_(static_cast<Eigen::Index>(model.strips.size())) {
+      llt_(M_),
+      kin_(flex.stacked, flex.mode_count),
+      packed_(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2),
+      extra_force_(static_cast<Eigen::Index>(model.strips.size())),
+      extra_couple_(static_cast<Eigen::Index>(model.strips.size())) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw std::invalid_argument(
         "the flexible wing needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -73,88 +73,44 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   alpha_W_ = Vec3(flap.phi_ddot_radps2, 0.0, 0.0);
   q_ = Eigen::Map<const Eigen::VectorXd>(y, M_);
   qd_ = Eigen::Map<const Eigen::VectorXd>(y + M_, M_);
-  const Vec3 v_body_W = R_BW_.transpose() * body_.v_P1_B;
 
-  // Strip kinematics from rigid motion plus modes (structure.md 4.2), W components.
+  // Strip kinematics from rigid motion plus modes (structure.md 4.2), all strips at once.
+  WingFrameMotion m;
+  m.v_O_W = R_BW_.transpose() * body_.v_P1_B;
+  m.omega_W = omega_W_;
+  m.alpha0_W = alpha_W_;
+  m.omega_rel_W = omega_W_;
   aero::StripBatch& b = data_.batch;
-  const std::size_t ns = flex_.strips.size();
-  for (std::size_t j = 0; j < ns; ++j) {
-    const FlexibleStrip& fs = flex_.strips[j];
-    const auto i = static_cast<Eigen::Index>(j);
-    const Vec3 s_L = fs.x_L_W_m + fs.phi_L * q_;
-    const Vec3 s_T = fs.x_T_W_m + fs.phi_T * q_;
-    const Vec3 ud_L = fs.phi_L * qd_;
-    const Vec3 e_c = (s_L - s_T).normalized();                       // TE -> LE
-    const Vec3 e_s = (Vec3::UnitY() - e_c.y() * e_c).normalized();   // span, normal to e_c
-    const Vec3 n = e_s.cross(e_c);                                   // up
-    const double twist_rate = fs.psi_twist.dot(qd_);
-    const Vec3 v_rel = omega_W_.cross(s_L) + ud_L;
-    const Vec3 a0 = alpha_W_.cross(s_L) + omega_W_.cross(omega_W_.cross(s_L)) +
-                    2.0 * omega_W_.cross(ud_L);
-    const Vec3 w = omega_W_ + twist_rate * e_s;
-    const Vec3 wd0 = alpha_W_ + omega_W_.cross(twist_rate * e_s);
-    const Vec3 v = v_body_W + v_rel;
-    b.ecx[i] = e_c.x(); b.ecy[i] = e_c.y(); b.ecz[i] = e_c.z();
-    b.nx[i] = n.x(); b.ny[i] = n.y(); b.nz[i] = n.z();
-    b.vx[i] = v.x(); b.vy[i] = v.y(); b.vz[i] = v.z();
-    b.ax[i] = a0.x(); b.ay[i] = a0.y(); b.az[i] = a0.z();
-    b.wx[i] = w.x(); b.wy[i] = w.y(); b.wz[i] = w.z();
-    b.wdx[i] = wd0.x(); b.wdy[i] = wd0.y(); b.wdz[i] = wd0.z();
-    s_L_[j] = s_L;
-    e_c_[j] = e_c;
-    n_[j] = n;
-    e_s_[j] = e_s;
-    v_rel_L_[j] = v_rel;
-    twist_rate_[i] = twist_rate;
-  }
+  kin_.compute(q_, qd_, m, b);
   aero::evalMstTdBatch(model_.aero_context, b, y + aeroOffset(), aero_derivatives);
 
-  // Generalised aerodynamic forces (structure.md 4.3) and apparent mass on the left (4.4).
-  Q_.setZero();
+  // Generalised aerodynamic forces (structure.md 4.3) and, on the left (4.4), the apparent air
+  // mass along each strip's mid-chord normal and the apparent rotary inertia about e_s.
+  kin_.modalForce(b, &Q_);
   A_ = flex_.M_qq;
-  for (std::size_t j = 0; j < ns; ++j) {
-    const FlexibleStrip& fs = flex_.strips[j];
-    const auto i = static_cast<Eigen::Index>(j);
-    const Vec3 F(b.Fx[i], b.Fy[i], b.Fz[i]);
-    const double m_pitch = b.Mx[i] * e_s_[j].x() + b.My[i] * e_s_[j].y() + b.Mz[i] * e_s_[j].z();
-    Q_.noalias() += fs.phi_L.transpose() * F;
-    Q_.noalias() += fs.psi_twist.transpose() * m_pitch;
-    b_strip_[i] = 0.5 * (1.0 + b.separation_f[i]) * flex_.apparent_mass_kg[i];
-    A_.noalias() += b_strip_[i] * fs.psi_mid * fs.psi_mid.transpose();
-  }
+  addApparentModalMass(flex_.stacked, b.separation_f, 1.0, &packed_, A_);
+
   // Modal equation (structure.md 3.4) with w = phi' e_x, alpha = phi'' e_x.
   modalFrameInertia(flex_, q_, qd_, flap.phi_dot_radps, flap.phi_ddot_radps2, &frame_inertia_);
   rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_) -
              frame_inertia_;
-  ldlt_.compute(A_);
-  qdd_ = ldlt_.solve(rhs_vec_);
+  llt_.compute(A_);  // lower triangle
+  qdd_ = llt_.solve(rhs_vec_);
 
   // Aerodynamic resultant of the wing on the frame, about P2 (W), including the apparent-mass
-  // force of q'' (normal, at mid-chord) that the kernel could not know.
+  // force and couple of q'' that the kernel could not know.
   if (aero) {
-    Vec3 F = Vec3::Zero(), M = Vec3::Zero();
-    double power = 0.0, separated = 0.0, area = 0.0;
-    for (std::size_t j = 0; j < ns; ++j) {
-      const FlexibleStrip& fs = flex_.strips[j];
-      const auto i = static_cast<Eigen::Index>(j);
-      const Vec3 F_j(b.Fx[i], b.Fy[i], b.Fz[i]);
-      const Vec3 M_j(b.Mx[i], b.My[i], b.Mz[i]);
-      const double extra = -b_strip_[i] * fs.psi_mid.dot(qdd_);
-      const Vec3 F_extra = extra * n_[j];
-      const Vec3 s_mid = s_L_[j] - 0.5 * b.chord_m[i] * e_c_[j];
-      F += F_j + F_extra;
-      M += s_L_[j].cross(F_j) + M_j + s_mid.cross(F_extra);
-      const Vec3 w_rel = omega_W_ + twist_rate_[i] * e_s_[j];
-      const Vec3 v_rel_mid = v_rel_L_[j] + w_rel.cross(-0.5 * b.chord_m[i] * e_c_[j]);
-      power -= F_j.dot(v_rel_L_[j]) + M_j.dot(w_rel) + F_extra.dot(v_rel_mid);
-      const double a = b.chord_m[i] * b.width_m[i];
-      separated += (1.0 - b.separation_f[i]) * a;
-      area += a;
-    }
-    aero->F_W = F;
-    aero->M_P2_W = M;
-    aero->power_aero_W = power;
-    aero->separated_fraction = area > 0 ? separated / area : 0.0;
+    const StackedStrips& st = flex_.stacked;
+    extra_force_.noalias() = st.psi_mid * qdd_;
+    extra_force_ = -(0.5 * (1.0 + b.separation_f) * flex_.apparent_mass_kg.array() *
+                     extra_force_.array()).matrix();
+    extra_couple_.noalias() = st.psi_twist * qdd_;
+    extra_couple_ = -(b.separation_f * flex_.apparent_rotary_kgm2.array() *
+                      extra_couple_.array()).matrix();
+    kin_.resultant(b, extra_force_, extra_couple_, omega_W_, &aero->F_W, &aero->M_P2_W,
+                   &aero->power_aero_W);
+    aero->separated_fraction = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() /
+                               (b.chord_m * b.width_m).sum();
   }
 }
 

@@ -7,6 +7,7 @@
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/strip_kinematics.hpp"
 
 namespace orni {
 
@@ -59,10 +60,9 @@ class FlexibleTetheredSystem {
   Vec3 omega_W_ = Vec3::Zero(), alpha_W_ = Vec3::Zero();
   Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
   Eigen::MatrixXd A_;
-  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
-  Eigen::VectorXd b_strip_;  // apparent-mass blend 0.5 (1 + f) per strip
-  std::vector<Vec3> s_L_, e_c_, n_, e_s_, v_rel_L_;
-  Eigen::VectorXd twist_rate_;
+  Eigen::LLT<Eigen::MatrixXd> llt_;
+  StripKinematics kin_;
+  Eigen::VectorXd packed_, extra_force_, extra_couple_;
 };
 
 }  // namespace orni

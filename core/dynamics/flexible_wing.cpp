@@ -25,6 +25,7 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   const Vec3 n_W = -Vec3::UnitZ();  // upper-surface normal of the flat wing (structure.md 1.1)
   strips.resize(ns);
   apparent_mass_kg.resize(static_cast<Eigen::Index>(ns));
+  apparent_rotary_kgm2.resize(static_cast<Eigen::Index>(ns));
   const double rho = vehicle.air.density_kgpm3;
   for (std::size_t j = 0; j < ns; ++j) {
     const structure::StripSampleNodes& sn = mw.mesh.strip_nodes[j];
@@ -39,6 +40,8 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
     const double c = strip_chords_m[j];
     s.psi_mid = ((s.phi_L + (0.5 * c / s.lever_T_m) * dphi).transpose() * n_W);
     apparent_mass_kg[static_cast<Eigen::Index>(j)] = rho * kPi * c * c / 4.0 * strip_widths_m[j];
+    apparent_rotary_kgm2[static_cast<Eigen::Index>(j)] =
+        rho * kPi * c * c * c * c / 128.0 * strip_widths_m[j];
   }
   tip_strip = static_cast<Eigen::Index>(ns) - 1;
   stiffness = mw.stiffnessDiagonal();
@@ -52,10 +55,12 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   h_x = inv.S(0, 0) - (inv.S(0, 0) + inv.S(1, 1) + inv.S(2, 2));
   H_x = inv.rotational_participation.row(0).transpose();
   if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
-  stacked = stackStrips(strips, M);
+  stacked = stackStrips(strips, M, apparent_mass_kg, apparent_rotary_kgm2);
 }
 
-StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count) {
+StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count,
+                          const Eigen::VectorXd& apparent_mass_kg,
+                          const Eigen::VectorXd& apparent_rotary_kgm2) {
   const int M = mode_count;
   const auto ns = static_cast<Eigen::Index>(strips.size());
   StackedStrips st;
@@ -65,22 +70,41 @@ StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_cou
   st.phi_T.setZero(3 * ns, M);
   st.psi_twist.setZero(ns, M);
   st.psi_mid.setZero(ns, M);
-  st.apparent_outer.setZero(static_cast<Eigen::Index>(M) * M, 2 * ns);
+  st.apparent_const.setZero(M, M);
+  st.apparent_per_f.setZero(static_cast<Eigen::Index>(M) * (M + 1) / 2, ns);
   for (Eigen::Index i = 0; i < ns; ++i) {
     const FlexibleStrip& fs = strips[static_cast<std::size_t>(i)];
-    st.x_L.segment<3>(3 * i) = fs.x_L_W_m;
-    st.x_T.segment<3>(3 * i) = fs.x_T_W_m;
+    for (int k = 0; k < 3; ++k) {  // component-major: row k ns + i
+      st.x_L[k * ns + i] = fs.x_L_W_m[k];
+      st.x_T[k * ns + i] = fs.x_T_W_m[k];
+      if (M > 0) {
+        st.phi_L.row(k * ns + i) = fs.phi_L.row(k);
+        st.phi_T.row(k * ns + i) = fs.phi_T.row(k);
+      }
+    }
     if (M == 0) continue;
-    st.phi_L.middleRows(3 * i, 3) = fs.phi_L;
-    st.phi_T.middleRows(3 * i, 3) = fs.phi_T;
     st.psi_twist.row(i) = fs.psi_twist;
     st.psi_mid.row(i) = fs.psi_mid.transpose();
-    Eigen::Map<Eigen::MatrixXd>(st.apparent_outer.col(i).data(), M, M) =
-        fs.psi_mid * fs.psi_mid.transpose();
-    Eigen::Map<Eigen::MatrixXd>(st.apparent_outer.col(ns + i).data(), M, M) =
-        fs.psi_twist.transpose() * fs.psi_twist;
+    const Eigen::MatrixXd mid = 0.5 * apparent_mass_kg[i] * fs.psi_mid * fs.psi_mid.transpose();
+    const Eigen::MatrixXd per_f =
+        mid + apparent_rotary_kgm2[i] * fs.psi_twist.transpose() * fs.psi_twist;
+    st.apparent_const += mid;
+    Eigen::Index r = 0;
+    for (int c = 0; c < M; ++c)
+      for (int l = c; l < M; ++l) st.apparent_per_f(r++, i) = per_f(l, c);
   }
   return st;
+}
+
+void addApparentModalMass(const StackedStrips& st, const Eigen::ArrayXd& f, double scale,
+                          Eigen::VectorXd* packed, Eigen::Ref<Eigen::MatrixXd> out) {
+  const auto M = st.apparent_const.rows();
+  if (M == 0) return;
+  packed->noalias() = st.apparent_per_f * f.matrix();
+  Eigen::Index r = 0;
+  for (Eigen::Index c = 0; c < M; ++c)
+    for (Eigen::Index l = c; l < M; ++l)
+      out(l, c) += scale * (st.apparent_const(l, c) + (*packed)[r++]);
 }
 
 void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,

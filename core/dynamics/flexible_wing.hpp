@@ -31,20 +31,30 @@ struct FlexibleStrip {
   double lever_T_m = 0.0;           ///< |x_T - x_L|
 };
 
-/// The strips' modal data stacked for one matrix product per evaluation (rows 3j..3j+2, or j,
-/// belong to strip j).
+/// The strips' modal data stacked for one matrix product per evaluation. Point data are
+/// component-major: row k ns + j is component k (x, y, z) of strip j; scalar data row j.
 struct StackedStrips {
   Eigen::VectorXd x_L, x_T;             ///< undeformed sample points (3 ns)
   Eigen::MatrixXd phi_L, phi_T;         ///< translational shapes at L and T (3 ns x M)
   Eigen::MatrixXd psi_twist, psi_mid;   ///< twist and mid-chord normal shapes (ns x M)
-  /// Apparent-mass outer products (M^2 x 2 ns): column j = vec(psi_mid,j psi_mid,j^T), column
-  /// ns + j = vec(psi_twist,j^T psi_twist,j), so sum_j b_j psi psi^T + k_j psi_t psi_t^T is one
-  /// product with [b; k].
-  Eigen::MatrixXd apparent_outer;
+  /// Apparent air mass on the modes (structure.md 4.4) with separation fractions f_j:
+  ///   A(f) = sum_j 0.5 (1 + f_j) m_a,j psi_mid psi_mid^T + f_j k_j psi_t^T psi_t
+  /// (k_j = rho pi c^4/128 dy, the apparent rotary inertia of M17) = apparent_const +
+  /// unpack(apparent_per_f f), the second as packed lower triangles (M(M+1)/2 x ns).
+  Eigen::MatrixXd apparent_const;
+  Eigen::MatrixXd apparent_per_f;
 };
 
-/// Stack per-strip modal data with M modes (M = 0: rigid wing, positions only).
-StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count);
+/// Stack per-strip modal data with M modes (M = 0: rigid wing, positions only); m_a and k per
+/// strip for the apparent mass.
+StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count,
+                          const Eigen::VectorXd& apparent_mass_kg,
+                          const Eigen::VectorXd& apparent_rotary_kgm2);
+
+/// out (lower triangle only) += scale * A(f) of StackedStrips; `packed` is workspace of
+/// M(M+1)/2 entries. No allocation.
+void addApparentModalMass(const StackedStrips& st, const Eigen::ArrayXd& f, double scale,
+                          Eigen::VectorXd* packed, Eigen::Ref<Eigen::MatrixXd> out);
 
 /// Built once from the vehicle and its ModalWing; immutable.
 struct FlexibleWingModel {
@@ -59,6 +69,7 @@ struct FlexibleWingModel {
   Eigen::VectorXd h_x;              ///< S_xx - sum_k S_kk (centrifugal load about x_W per w^2)
   Eigen::VectorXd H_x;              ///< row x of H (Euler load per unit alpha_x)
   Eigen::VectorXd apparent_mass_kg; ///< m_a,j = rho pi c_j^2/4 dy_j per strip
+  Eigen::VectorXd apparent_rotary_kgm2;  ///< k_j = rho pi c_j^4/128 dy_j per strip (M17)
   Eigen::Index tip_strip = 0;
   StackedStrips stacked;
 

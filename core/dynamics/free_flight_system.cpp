@@ -37,14 +37,17 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
       control_(control),
       M_(flex ? flex->mode_count : 0),
       n_aero_(model.aeroStateCount()),
-      data_(model) {
+      data_(model),
+      strips_(flex ? flex->strips : rigidStrips(model)),
+      rigid_stacked_(flex ? StackedStrips{}
+                          : stackStrips(strips_, 0, Eigen::VectorXd(), Eigen::VectorXd())),
+      kin_(flex ? flex->stacked : rigid_stacked_, M_) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw std::invalid_argument(
         "free flight needs aero model mst-td with the Scherer lag and a smooth stall "
         "(stall_width_deg > 0)");
   const std::size_t ns = model.strips.size();
   if (flex) {
-    strips_ = flex->strips;
     apparent_mass_kg_ = flex->apparent_mass_kg;
     const structure::InertiaInvariants& inv = flex->modal->invariants;
     m_w_ = inv.mass_kg;
@@ -65,7 +68,6 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
     C_[2] = inv.P(1, 0) - inv.P(0, 1);
     S_trace_ = inv.S(0, 0) + inv.S(1, 1) + inv.S(2, 2);
   } else {
-    strips_ = rigidStrips(model);
     apparent_mass_kg_.resize(static_cast<Eigen::Index>(ns));
     for (std::size_t j = 0; j < ns; ++j) {
       const double c = model.strip_geometry[j].chord_m;
@@ -128,39 +130,18 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   Cqd_all_.setZero(3 * M_);
   A_.setZero(n_u_, n_u_);
   llt_ = Eigen::LLT<Eigen::MatrixXd>(n_u_);
-  nu_.setZero(n_u_);
-  b_strip_.setZero(static_cast<Eigen::Index>(ns));
-  s_L_.resize(ns);
-  e_c_.resize(ns);
-  n_.resize(ns);
-  e_s_.resize(ns);
-  s_mid_.resize(ns);
   const auto nsi = static_cast<Eigen::Index>(ns);
-  nsi_ = nsi;
+  b_strip_.setZero(nsi);
   k_twist_.setZero(nsi);
-  const StackedStrips st = flex ? flex->stacked : stackStrips(strips_, 0);
-  xL_ = st.x_L;
-  xT_ = st.x_T;
-  PhiL_ = st.phi_L;
-  PhiT_ = st.phi_T;
-  PsiTw_ = st.psi_twist;
-  PsiMid_ = st.psi_mid;
-  Pouter_ = st.apparent_outer;
-  SL_ = xL_;
-  ST_ = xT_;
-  UdL_.setZero(3 * nsi);
-  Fall_.setZero(3 * nsi);
-  twist_rate_.setZero(nsi);
-  mpitch_.setZero(nsi);
   nuU_.setZero(nsi);
   nuW_.setZero(nsi);
   nuQ_.setZero(nsi);
   nutQ_.setZero(nsi);
   extra_force_.setZero(nsi);
   extra_couple_.setZero(nsi);
+  zero_ns_.setZero(nsi);
   tmp_ns_.setZero(nsi);
-  weights_2ns_.setZero(2 * nsi);
-  Aqq_vec_.setZero(M_ * M_);
+  packed_.setZero(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2);
   data_.batch.airx.setZero();
   data_.batch.airy.setZero();
   data_.batch.airz.setZero();
@@ -241,100 +222,58 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
 
   f_.setZero();
   A_.setZero();
-  const std::size_t ns = strips_.size();
   aero::StripBatch& b = data_.batch;
   F_aero_W_.setZero();
   M_aero_P2_W_.setZero();
   power_aero_one_wing_W_ = 0.0;
   separated_fraction_ = 0.0;
   if (switches_.aerodynamics) {
-    // Strip kinematics from rigid plus modal motion (structure.md 4.2) at u' = 0. The modal
-    // parts of all strips are one product each with the stacked shapes (3 ns x M).
-    if (M_ > 0) {
-      SL_ = xL_;
-      SL_.noalias() += PhiL_ * q_;
-      ST_ = xT_;
-      ST_.noalias() += PhiT_ * q_;
-      UdL_.noalias() = PhiL_ * qd_;
-      twist_rate_.noalias() = PsiTw_ * qd_;
-    }
-    for (std::size_t j = 0; j < ns; ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      const Vec3 s_L = SL_.segment<3>(3 * i);
-      const Vec3 ud_L = UdL_.segment<3>(3 * i);
-      const double twist_rate = twist_rate_[i];
-      const Vec3 e_c = (s_L - ST_.segment<3>(3 * i)).normalized();
-      const Vec3 e_s = (Vec3::UnitY() - e_c.y() * e_c).normalized();
-      const Vec3 n = e_s.cross(e_c);
-      const Vec3 v = v_O + omega_W_.cross(s_L) + ud_L;
-      const Vec3 a0 = a_O0_W_ + alpha0_W_.cross(s_L) + omega_W_.cross(omega_W_.cross(s_L)) +
-                      2.0 * omega_W_.cross(ud_L);
-      const Vec3 w = omega_W_ + twist_rate * e_s;
-      const Vec3 wd0 = alpha0_W_ + omega_W_.cross(twist_rate * e_s);
-      b.ecx[i] = e_c.x(); b.ecy[i] = e_c.y(); b.ecz[i] = e_c.z();
-      b.nx[i] = n.x(); b.ny[i] = n.y(); b.nz[i] = n.z();
-      b.vx[i] = v.x(); b.vy[i] = v.y(); b.vz[i] = v.z();
-      b.ax[i] = a0.x(); b.ay[i] = a0.y(); b.az[i] = a0.z();
-      b.wx[i] = w.x(); b.wy[i] = w.y(); b.wz[i] = w.z();
-      b.wdx[i] = wd0.x(); b.wdy[i] = wd0.y(); b.wdz[i] = wd0.z();
-      s_L_[j] = s_L;
-      e_c_[j] = e_c;
-      n_[j] = n;
-      e_s_[j] = e_s;
-      s_mid_[j] = s_L - 0.5 * model_.strip_geometry[j].chord_m * e_c;
-    }
+    // Strip kinematics from rigid plus modal motion (structure.md 4.2) at u' = 0.
+    WingFrameMotion fm;
+    fm.v_O_W = v_O;
+    fm.a_O0_W = a_O0_W_;
+    fm.omega_W = omega_W_;
+    fm.alpha0_W = alpha0_W_;
+    fm.omega_rel_W = flap.phi_dot_radps * ex;
+    kin_.compute(q_, qd_, fm, b);
     aero::evalMstTdBatch(model_.aero_context, b, y + aeroOffset(), aero_derivatives);
 
     // Generalised aerodynamic forces (structure.md 4.3) and the apparent air mass along each
-    // strip's mid-chord normal acceleration (4.4), A += b_j m_a nu_j nu_j^T, with the body
-    // partials nu = (n.e_x, n.e_z, n.(e_y x rho_mid)) and the modal ones psi_mid; plus the
-    // apparent rotary inertia of the kernel's couple -f k_couple2 theta'' (M17) about
-    // a_pitch = e_s, with theta'' partials (0, 0, e_y.e_s, psi_twist).
+    // strip's mid-chord normal acceleration (4.4), A += b_j nu_j nu_j^T, b_j = 0.5 (1 + f) m_a,
+    // with the body partials nu = (n.e_x, n.e_z, n.(e_y x rho_mid)) and the modal ones psi_mid;
+    // plus the apparent rotary inertia of the kernel's couple -f k theta'' (M17) about e_s, with
+    // theta'' partials (0, 0, e_y.e_s, psi_twist).
+    kin_.resultant(b, zero_ns_, zero_ns_, fm.omega_rel_W, &F_aero_W_, &M_aero_P2_W_, nullptr);
     b_strip_ = (0.5 * (1.0 + b.separation_f) * apparent_mass_kg_.array()).matrix();
     k_twist_ = (b.separation_f * b.k_couple2).matrix();
-    double separated = 0.0, area = 0.0;
-    double Abb[3][3] = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
-    for (std::size_t j = 0; j < ns; ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      const Vec3 F(b.Fx[i], b.Fy[i], b.Fz[i]);
-      const Vec3 Mc(b.Mx[i], b.My[i], b.Mz[i]);
-      F_aero_W_ += F;
-      M_aero_P2_W_ += s_L_[j].cross(F) + Mc;
-      Fall_.segment<3>(3 * i) = F;
-      mpitch_[i] = Mc.dot(e_s_[j]);
-      const Vec3& n = n_[j];
-      const double nu[3] = {n.dot(exW), n.dot(ezW), n.dot(dQlin + eyW.cross(s_mid_[j]))};
-      nuU_[i] = nu[0];
-      nuW_[i] = nu[1];
-      nuQ_[i] = nu[2];
-      nutQ_[i] = eyW.dot(e_s_[j]);
-      for (int r = 0; r < 3; ++r)
-        for (int c = 0; c <= r; ++c) Abb[r][c] += b_strip_[i] * nu[r] * nu[c];
-      Abb[2][2] += k_twist_[i] * nutQ_[i] * nutQ_[i];
-      const double a = b.chord_m[i] * b.width_m[i];
-      separated += (1.0 - b.separation_f[i]) * a;
-      area += a;
-    }
+    const Vec3 rQ = dQlin;  // n.(dQlin + eyW x mid)
+    nuU_ = (b.nx * exW.x() + b.ny * exW.y() + b.nz * exW.z()).matrix();
+    nuW_ = (b.nx * ezW.x() + b.ny * ezW.y() + b.nz * ezW.z()).matrix();
+    nuQ_ = (b.nx * (rQ.x() + eyW.y() * kin_.midz() - eyW.z() * kin_.midy()) +
+            b.ny * (rQ.y() + eyW.z() * kin_.midx() - eyW.x() * kin_.midz()) +
+            b.nz * (rQ.z() + eyW.x() * kin_.midy() - eyW.y() * kin_.midx()))
+               .matrix();
+    nutQ_ = (kin_.esx() * eyW.x() + kin_.esy() * eyW.y() + kin_.esz() * eyW.z()).matrix();
+    const Eigen::VectorXd* nus[3] = {&nuU_, &nuW_, &nuQ_};
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c <= r; ++c) A_(r, c) += 2.0 * Abb[r][c];
+      for (int c = 0; c <= r; ++c)
+        A_(r, c) += 2.0 * (b_strip_.array() * nus[r]->array() * nus[c]->array()).sum();
+    A_(2, 2) += 2.0 * (k_twist_.array() * nutQ_.array().square()).sum();
     if (M_ > 0) {
-      auto fq = f_.tail(M_);
-      fq.noalias() += 2.0 * (PhiL_.transpose() * Fall_);
-      fq.noalias() += 2.0 * (PsiTw_.transpose() * mpitch_);
+      const StackedStrips& st = flex_->stacked;
+      kin_.modalForce(b, &scratch_M_);
+      f_.tail(M_) += 2.0 * scratch_M_;
       auto Aqb = A_.block(3, 0, M_, 3);
-      const Eigen::VectorXd* nus[3] = {&nuU_, &nuW_, &nuQ_};
       for (int c = 0; c < 3; ++c) {
         tmp_ns_ = b_strip_.cwiseProduct(*nus[c]);
-        Aqb.col(c).noalias() += 2.0 * (PsiMid_.transpose() * tmp_ns_);
+        Aqb.col(c).noalias() += 2.0 * (st.psi_mid.transpose() * tmp_ns_);
       }
       tmp_ns_ = k_twist_.cwiseProduct(nutQ_);
-      Aqb.col(2).noalias() += 2.0 * (PsiTw_.transpose() * tmp_ns_);
-      weights_2ns_.head(nsi_) = b_strip_;
-      weights_2ns_.tail(nsi_) = k_twist_;
-      Aqq_vec_.noalias() = Pouter_ * weights_2ns_;
-      A_.bottomRightCorner(M_, M_) += 2.0 * Eigen::Map<const Eigen::MatrixXd>(Aqq_vec_.data(), M_, M_);
+      Aqb.col(2).noalias() += 2.0 * (st.psi_twist.transpose() * tmp_ns_);
+      addApparentModalMass(st, b.separation_f, 2.0, &packed_, A_.bottomRightCorner(M_, M_));
     }
-    separated_fraction_ = area > 0.0 ? separated / area : 0.0;
+    separated_fraction_ = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() /
+                          (b.chord_m * b.width_m).sum();
     f_[0] += 2.0 * exW.dot(F_aero_W_);
     f_[1] += 2.0 * ezW.dot(F_aero_W_);
     f_[2] += 2.0 * (dQlin.dot(F_aero_W_) + eyW.dot(M_aero_P2_W_));
@@ -457,8 +396,8 @@ void FreeFlightSystem::apparentAccelerations() {
   extra_force_ = nuU_ * ud_[0] + nuW_ * ud_[1] + nuQ_ * ud_[2];
   extra_couple_ = nutQ_ * ud_[2];
   if (M_ > 0) {
-    extra_force_.noalias() += PsiMid_ * ud_.tail(M_);
-    extra_couple_.noalias() += PsiTw_ * ud_.tail(M_);
+    extra_force_.noalias() += flex_->stacked.psi_mid * ud_.tail(M_);
+    extra_couple_.noalias() += flex_->stacked.psi_twist * ud_.tail(M_);
   }
   extra_force_ = -b_strip_.cwiseProduct(extra_force_);
   extra_couple_ = -k_twist_.cwiseProduct(extra_couple_);
@@ -483,20 +422,11 @@ void FreeFlightSystem::rhs(double t_s, const double* y, double* ydot) {
   double power = 0.0;
   if (switches_.aerodynamics) {
     apparentAccelerations();
-    const aero::StripBatch& b = data_.batch;
     const FlapState flap =
         flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
-    const Vec3 w_rel = flap.phi_dot_radps * Vec3::UnitX();
-    for (std::size_t j = 0; j < strips_.size(); ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      const Vec3 w_strip = w_rel + twist_rate_[i] * e_s_[j];
-      const Vec3 v_rel_L = w_rel.cross(s_L_[j]) + UdL_.segment<3>(3 * i);
-      const Vec3 v_rel_mid = v_rel_L + w_strip.cross(s_mid_[j] - s_L_[j]);
-      const Vec3 F(b.Fx[i], b.Fy[i], b.Fz[i]);
-      const Vec3 Mc(b.Mx[i], b.My[i], b.Mz[i]);
-      power -= F.dot(v_rel_L) + Mc.dot(w_strip) + extra_force_[i] * n_[j].dot(v_rel_mid) +
-               extra_couple_[i] * e_s_[j].dot(w_strip);
-    }
+    Vec3 F, M;
+    kin_.resultant(data_.batch, extra_force_, extra_couple_,
+                   flap.phi_dot_radps * Vec3::UnitX(), &F, &M, &power);
   }
   ydot[powerOffset()] = 2.0 * power;
 }
@@ -515,12 +445,10 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   Vec3 F = F_aero_W_, M = M_aero_P2_W_;
   if (switches_.aerodynamics) {
     apparentAccelerations();
-    for (std::size_t j = 0; j < strips_.size(); ++j) {
-      const auto i = static_cast<Eigen::Index>(j);
-      const Vec3 F_extra = extra_force_[i] * n_[j];
-      F += F_extra;
-      M += s_mid_[j].cross(F_extra) + extra_couple_[i] * e_s_[j];
-    }
+    const FlapState flap =
+        flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
+    kin_.resultant(data_.batch, extra_force_, extra_couple_,
+                   flap.phi_dot_radps * Vec3::UnitX(), &F, &M, nullptr);
   }
   const Vec3 F_B = R_BW_ * F;
   const Vec3 M_P1_B = R_BW_ * M + r2_B_.cross(F_B);
@@ -539,7 +467,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   o.M_Nm = o.M_wing_aero_Nm + o.M_tail_Nm;
   if (M_ > 0) {
     const FlexibleStrip& tip = strips_.back();
-    o.tip_deflection_m = -(tip.phi_L * q_).z();
+    o.tip_deflection_m = -(tip.phi_L * q_).z();  // z_W is down
     o.tip_twist_rad = tip.psi_twist.dot(q_);
   }
 

@@ -20,6 +20,7 @@
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/strip_kinematics.hpp"
 
 namespace orni {
 
@@ -92,6 +93,8 @@ class FreeFlightSystem {
   int n_aero_ = 0;
   FlightCoreData data_;
   std::vector<FlexibleStrip> strips_;        // rigid wing: strips with zero modes
+  StackedStrips rigid_stacked_;              // the rigid wing's (flexible: flex_->stacked)
+  StripKinematics kin_;
   Eigen::VectorXd apparent_mass_kg_;
   // Wing inertia invariants about P2 (W), one wing.
   double m_w_ = 0.0;
@@ -106,29 +109,20 @@ class FreeFlightSystem {
   Eigen::VectorXd stiffness_, damping_;
   double m_f_ = 0.0, I_f_ = 0.0;
   Vec3 r2_B_ = Vec3::Zero();
+  Vec3 r_f_B_ = Vec3::Zero();  // fuselage CG from P1 (vehicle CG at P1 at zero flap)
 
   // Workspace (evaluate).
   int n_u_ = 3;
   Eigen::VectorXd q_, qd_, ud_, f_, scratch_M_;
-  Eigen::MatrixXd Pstack_, Cstack_, Smat_, Pouter_;  // stacked invariants (constructor)
-  Eigen::VectorXd Pq_all_, Cq_all_, Cqd_all_, Sq_{9}, Sqd_{9}, weights_2ns_, Aqq_vec_;
-  Eigen::Index nsi_ = 0;
+  Eigen::MatrixXd Pstack_, Cstack_, Smat_;  // stacked invariants (constructor)
+  Eigen::VectorXd Pq_all_, Cq_all_, Cqd_all_, Sq_{9}, Sqd_{9};
   Eigen::MatrixXd A_;
   Eigen::LLT<Eigen::MatrixXd> llt_;
-  Eigen::VectorXd nu_;
-  Eigen::VectorXd b_strip_;  // 0.5 (1 + f) m_a per strip
-  std::vector<Vec3> s_L_, e_c_, n_, e_s_, s_mid_;
-  // Stacked strip data: rows 3j..3j+2 (or j) belong to strip j.
-  Eigen::VectorXd xL_, xT_;                   // undeformed sample points (3 ns)
-  Eigen::MatrixXd PhiL_, PhiT_;               // translational shapes at L and T (3 ns x M)
-  Eigen::MatrixXd PsiTw_, PsiMid_;            // twist and mid-chord normal shapes (ns x M)
-  Eigen::VectorXd SL_, ST_, UdL_, Fall_;      // 3 ns
-  Eigen::VectorXd twist_rate_, mpitch_;       // ns
-  Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;    // body partials of the apparent accelerations
+  Eigen::VectorXd b_strip_, k_twist_;           // 0.5 (1 + f) m_a and f k per strip
+  Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;      // body partials of the apparent accelerations
   Eigen::VectorXd extra_force_, extra_couple_;  // apparent-mass force and couple of u' (ns)
-  Eigen::VectorXd k_twist_, tmp_ns_;          // f k_couple2 per strip (apparent rotary inertia)
+  Eigen::VectorXd zero_ns_, tmp_ns_, packed_;
   void apparentAccelerations();
-  Vec3 r_f_B_ = Vec3::Zero();  // fuselage CG from P1 (vehicle CG at P1 at zero flap)
   // Results of the last evaluate.
   Vec3 F_aero_W_ = Vec3::Zero(), M_aero_P2_W_ = Vec3::Zero();  // one wing, kernel loads
   double power_aero_one_wing_W_ = 0.0, separated_fraction_ = 0.0;

@@ -1,0 +1,69 @@
+// Strip kinematics of the wing from rigid frame motion plus modes (structure.md 4.2), for all
+// strips at once in structure-of-arrays form (the batch layout of the MST-TD kernel), and the
+// projection of the strip loads back on the modes (4.3). Shared by the tethered and the free
+// flexible wing; with zero modes it is the rigid wing. No allocation after construction.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "core/aero/mst_td_batch.hpp"
+#include "core/dynamics/flexible_wing.hpp"
+#include "core/model/frames.hpp"
+
+namespace orni {
+
+/// Motion of the wing frame W at one instant, W components; "0" = the part without the
+/// generalised accelerations the caller solves for (structure.md 3.2: a = V u' + a0).
+struct WingFrameMotion {
+  Vec3 v_O_W = Vec3::Zero();       ///< velocity of P2
+  Vec3 a_O0_W = Vec3::Zero();      ///< acceleration of P2
+  Vec3 omega_W = Vec3::Zero();     ///< angular velocity of W
+  Vec3 alpha0_W = Vec3::Zero();    ///< angular acceleration of W
+  Vec3 omega_rel_W = Vec3::Zero(); ///< angular velocity of W relative to the fuselage (power)
+};
+
+/// Per-strip kinematic results (component-major stacks: x of all strips, then y, then z).
+class StripKinematics {
+ public:
+  StripKinematics(const StackedStrips& stacked, int mode_count);
+
+  /// Deformed sample points, frames and inertial motion of every strip into the kernel batch
+  /// (e_c, n, v_P, a_P at the leading edge, w_s, wdot_s).
+  void compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const WingFrameMotion& m,
+               aero::StripBatch& b);
+
+  /// After the kernel: generalised aerodynamic force on the modes, Phi_L^T F + psi_twist^T m_e
+  /// (structure.md 4.3). `Q` has mode_count entries.
+  void modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q);
+
+  /// Resultant of the strip loads on one wing about P2 (W components) including the
+  /// apparent-mass force along n at mid-chord (extra_force per strip) and couple about e_s
+  /// (extra_couple per strip), and their power relative to the fuselage (M19 sign: power put
+  /// into the air).
+  void resultant(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
+                 const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W, Vec3* F_W,
+                 Vec3* M_P2_W, double* power_W);
+
+  int strips() const { return ns_; }
+  // Component arrays of the last compute() (length ns).
+  Eigen::Ref<const Eigen::ArrayXd> sLx() const { return SL_.segment(0, ns_).array(); }
+  Eigen::Ref<const Eigen::ArrayXd> sLy() const { return SL_.segment(ns_, ns_).array(); }
+  Eigen::Ref<const Eigen::ArrayXd> sLz() const { return SL_.segment(2 * ns_, ns_).array(); }
+  const Eigen::ArrayXd& esx() const { return esx_; }
+  const Eigen::ArrayXd& esy() const { return esy_; }
+  const Eigen::ArrayXd& esz() const { return esz_; }
+  const Eigen::ArrayXd& midx() const { return midx_; }
+  const Eigen::ArrayXd& midy() const { return midy_; }
+  const Eigen::ArrayXd& midz() const { return midz_; }
+  const Eigen::VectorXd& twistRate() const { return twist_rate_; }
+
+ private:
+  const StackedStrips& st_;
+  int M_;
+  int ns_;
+  Eigen::VectorXd SL_, ST_, UdL_, twist_rate_, Fall_, mpitch_;
+  Eigen::ArrayXd esx_, esy_, esz_, midx_, midy_, midz_, t0_, t1_;
+  Eigen::ArrayXd vx_, vy_, vz_, wsx_, wsy_, wsz_, vmn_;  // resultant() workspace
+};
+
+}  // namespace orni
