@@ -243,3 +243,37 @@ TEST(DynamicsFreeFlight, UntrimmedTailAngleIsReportedNotBoundedWithAReason) {
 
 }  // namespace
 }  // namespace orni
+
+namespace orni {
+namespace {
+
+// Two implementations of the flexible wing on the flapping hinge: the free-flight Kane system
+// (general invariants, body rows) with a body too heavy to move and no gravity must give the
+// tethered system's cycle-mean aerodynamic loads (structure.md 3.4 with w = phi' e_x).
+TEST(DynamicsFreeFlight, ImmovableBodyReproducesTheTetheredFlexibleWing) {
+  VehicleModel v = efw(StructureLevel::kFlexible);
+  v.air.gravity_mps2 = 0.0;
+  v.body.mass_kg *= 1e9;
+  v.body.pitch_inertia_kgm2 *= 1e9;
+  const FlightCoreModel model(v);
+  SimulationOptions o;
+  o.cycles = 6;
+  o.rel_tol = 1e-6;
+  o.abs_tol = 1e-8;
+  o.separation_abs_tol = 1e-7;
+  const SimulationSummary teth = simulateTethered(model, v.operating_point, o, nullptr);
+  ASSERT_EQ(teth.status, SimulationStatus::kOk) << teth.message;
+  FreeFlightHistory h;
+  const FreeFlightSummary fr = simulateFree(model, v.operating_point, o, &h);
+  ASSERT_EQ(fr.status, SimulationStatus::kOk) << fr.message;
+  // The body has not moved (so the comparison is of the wing, not of a different flight).
+  EXPECT_LT(std::abs(h.body.back().theta_rad - v.operating_point.theta_rad), 1e-7);
+  const double scale = std::abs(teth.mean.FV_N) + std::abs(teth.mean.FH_N);
+  EXPECT_NEAR(fr.mean.FV_N, teth.mean.FV_N, 2e-3 * scale);
+  EXPECT_NEAR(fr.mean.FH_N, teth.mean.FH_N, 2e-3 * scale);
+  EXPECT_NEAR(fr.mean.M_Nm, teth.mean.M_Nm, 2e-3 * scale * 0.05);
+  EXPECT_NEAR(fr.mean.power_aero_W, teth.mean.power_aero_W, 2e-3 * teth.mean.power_aero_W);
+}
+
+}  // namespace
+}  // namespace orni
