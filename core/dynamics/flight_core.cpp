@@ -320,8 +320,12 @@ void addTailAndTotals(const FlightCoreModel& model, const BodyMotion& body,
     o.M_tail_Nm = model.p_P1P4_B.cross(F_tail).y();
     o.tail_alpha_rad = tl.alpha_rad;
   }
+  if (veh.body.drag_area_m2 > 0.0) {
+    const double speed = body.v_P1_B.norm();
+    o.FH_body_N = -0.5 * veh.air.density_kgpm3 * speed * speed * veh.body.drag_area_m2;
+  }
   o.FV_N = o.FV_wing_aero_N + o.FV_wing_inertial_N + o.FV_tail_N;
-  o.FH_N = o.FH_wing_aero_N + o.FH_wing_inertial_N + o.FH_tail_N;
+  o.FH_N = o.FH_wing_aero_N + o.FH_wing_inertial_N + o.FH_tail_N + o.FH_body_N;
   o.M_Nm = o.M_wing_aero_Nm + o.M_wing_inertial_Nm + o.M_tail_Nm;
 }
 

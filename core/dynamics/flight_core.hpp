@@ -36,6 +36,7 @@ struct LoadSample {
   double FV_wing_aero_N = 0, FH_wing_aero_N = 0, M_wing_aero_Nm = 0;
   double FV_wing_inertial_N = 0, FH_wing_inertial_N = 0, M_wing_inertial_Nm = 0;
   double FV_tail_N = 0, FH_tail_N = 0, M_tail_Nm = 0;
+  double FH_body_N = 0;       ///< fuselage parasite drag (body.drag_area_m2), at P1
   double power_aero_W = 0;    ///< aerodynamic input power of both wings (M19 generalised)
   double power_hinge_W = 0;   ///< mechanical power at the two hinges (aero + wing inertia)
   double separated_fraction = 0;  ///< area-weighted mean of (1 - f) over the strips
@@ -105,8 +106,8 @@ std::array<double, kQuadratureChannels> quadratureScales(const FlightCoreModel& 
                                                          double speed_mps);
 
 /// Tail loads about P1 (paper Eq. 3 with the incidence of aero-mst.md 10) into the tail fields of
-/// `out`, then the totals FV, FH, M from the wing and tail fields. Shared by the rigid and the
-/// flexible wing.
+/// `out`, the fuselage parasite drag into FH_body_N, then the totals FV, FH, M from the wing, tail
+/// and body fields. Shared by the rigid and the flexible wing and by free flight.
 void addTailAndTotals(const FlightCoreModel& model, const BodyMotion& body,
                       const ControlInput& control, LoadSample* out);
 

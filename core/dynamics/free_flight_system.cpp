@@ -372,7 +372,7 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
 
   // Tail (paper Eq. 3 with the incidence of aero-mst.md 10), B components.
   tail_ = LoadSample{};
-  if (switches_.tail) {
+  if (switches_.tail) {  // tail and fuselage drag
     BodyMotion bm;
     bm.v_P1_B = Vec3(U, 0.0, W);
     bm.theta_rad = theta;
@@ -381,7 +381,7 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     const double speed = bm.v_P1_B.norm();
     const Vec3 e_v = speed > 0.0 ? Vec3(bm.v_P1_B / speed) : Vec3::UnitX();
     const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
-    const Vec3 F_tail = tail_.FH_tail_N * e_v + tail_.FV_tail_N * e_L;
+    const Vec3 F_tail = (tail_.FH_tail_N + tail_.FH_body_N) * e_v + tail_.FV_tail_N * e_L;
     f_[0] += F_tail.x();
     f_[1] += F_tail.z();
     f_[2] += tail_.M_tail_Nm;
@@ -463,7 +463,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   o.M_wing_aero_Nm = 2.0 * M_P1_B.y();
   o.separated_fraction = separated_fraction_;
   o.FV_N = o.FV_wing_aero_N + o.FV_tail_N;
-  o.FH_N = o.FH_wing_aero_N + o.FH_tail_N;
+  o.FH_N = o.FH_wing_aero_N + o.FH_tail_N + o.FH_body_N;
   o.M_Nm = o.M_wing_aero_Nm + o.M_tail_Nm;
   if (M_ > 0) {
     const FlexibleStrip& tip = strips_.back();

@@ -106,6 +106,8 @@ struct BodyModel {
   bool present = false;          ///< false for a wind-tunnel rig without flight data
   double mass_kg = 0.0;          ///< total vehicle mass including wings and tail, > 0
   double pitch_inertia_kgm2 = 0.0;  ///< I_YB of the whole vehicle about P1, > 0
+  double drag_area_m2 = 0.0;     ///< fuselage parasite drag C_D S (acts at P1 against the flight
+                                 ///< velocity), >= 0; 0 = none (the paper's Eq. 4 has none)
 };
 
 /// Horizontal tail, paper Eq. (3) with the incidence of aero-mst.md section 10.

@@ -51,6 +51,7 @@ CsvTable historyTable(const TimeHistory& h) {
               column(h, [](const LoadSample& s) { return s.M_wing_inertial_Nm; }));
   t.addColumn("FV_tail", "N", column(h, [](const LoadSample& s) { return s.FV_tail_N; }));
   t.addColumn("FH_tail", "N", column(h, [](const LoadSample& s) { return s.FH_tail_N; }));
+  t.addColumn("FH_body", "N", column(h, [](const LoadSample& s) { return s.FH_body_N; }));
   t.addColumn("M_tail", "N m", column(h, [](const LoadSample& s) { return s.M_tail_Nm; }));
   t.addColumn("separated_fraction", "-",
               column(h, [](const LoadSample& s) { return s.separated_fraction; }));

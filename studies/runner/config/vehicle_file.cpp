@@ -243,11 +243,13 @@ VehicleModel parseVehicleTable(const toml::table& root, const ReadContext& conte
     k.finish();
   }
 
-  std::optional<TableReader> body = top.optionalTable("body", {"mass_kg", "pitch_inertia_kgm2"});
+  std::optional<TableReader> body =
+      top.optionalTable("body", {"mass_kg", "pitch_inertia_kgm2", "drag_area_m2"});
   if (body) {
     v.body.present = true;
     v.body.mass_kg = body->requiredDouble("mass_kg", Range::positive());
     v.body.pitch_inertia_kgm2 = body->requiredDouble("pitch_inertia_kgm2", Range::positive());
+    v.body.drag_area_m2 = body->optionalDouble("drag_area_m2", 0.0, Range::nonNegative());
     body->finish();
   }
 
@@ -380,6 +382,7 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
     out.header(path({"body"}));
     out.number("mass_kg", v.body.mass_kg);
     out.number("pitch_inertia_kgm2", v.body.pitch_inertia_kgm2);
+    out.number("drag_area_m2", v.body.drag_area_m2);
   }
   if (v.tail.present) {
     const TailModel& t = v.tail;
