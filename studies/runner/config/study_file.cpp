@@ -9,6 +9,7 @@
 
 #include "core/model/frames.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
 namespace orni::studies {
@@ -92,7 +93,7 @@ Study loadStudyFile(const fs::path& study_file) {
   study_ctx->file = study_name;
 
   TableReader top(root, std::string(), study_ctx,
-                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate"});
+                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate", "trim"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -188,17 +189,42 @@ Study loadStudyFile(const fs::path& study_file) {
     }
     sim->finish();
   }
+  if (top.has("trim") && study.kind != StudyKind::kTrim)
+    throw InputError::unknownKey(top.fileOf("trim"), top.lineOf("trim"), "trim",
+                                 "[trim] is only allowed in a study of kind \"trim\", this one is "
+                                 "kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (study.kind == StudyKind::kTrim) {
+    if (!study.vehicle.body.present)
+      throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
+                                      "trim)",
+                           "a vehicle without [body]");
+    if (std::optional<TableReader> trim = top.optionalTable("trim", trimSectionKeys())) {
+      study.trim = readTrimSection(*trim, study.vehicle);
+    } else {
+      // No [trim]: the defaults, validated like an empty section.
+      toml::table empty;
+      TableReader none(empty, "trim", study_ctx, trimSectionKeys());
+      study.trim = readTrimSection(none, study.vehicle);
+    }
+  }
   top.finish();
   return study;
 }
 
-Study studyFromVehicle(const fs::path& vehicle_file) {
+Study studyFromVehicle(const fs::path& vehicle_file, StudyKind kind) {
   Study study;
-  study.kind = StudyKind::kSimulate;
+  study.kind = kind;
   study.vehicle = loadVehicleFile(vehicle_file);
   study.name = runNameFromStem(vehicle_file);
   study.vehicle_path = vehicle_file;
   study.point = study.vehicle.operating_point;
+  if (kind == StudyKind::kTrim) {
+    if (!study.vehicle.body.present)
+      throw InputError::missingKey(displayPath(vehicle_file), 0, "body",
+                                   "a [body] table: a trim needs the vehicle's mass");
+    study.trim = orni::defaultTrimOptions(study.vehicle);
+  }
   return study;
 }
 
@@ -228,6 +254,7 @@ std::string resolvedStudyToml(const Study& study) {
     out.number("steady_tol", o.steady_tol);
     out.integer("samples_per_cycle", o.samples_per_cycle);
   }
+  if (study.kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
   return out.str();
 }

@@ -16,7 +16,13 @@
 //   [simulate] (optional, kind = "simulate" only) mode "tethered"|"free", speed_mps, freq_hz,
 //            theta_deg, tail_angle_deg (default: the vehicle's operating point), cycles, rel_tol,
 //            abs_tol, steady_tol, samples_per_cycle (default: SimulationOptions).
-// Sections of the other kinds ([aeromap], [trim], ...) are not defined yet and are rejected.
+//   [trim]   (optional, kind = "trim" only) freq_hz, unknowns = ["theta_mean_deg", "speed_mps",
+//            "tail_angle_deg"] (any 1-3 of these and "freq_hz"), initial = { theta_mean_deg,
+//            speed_mps, tail_angle_deg } (default: the vehicle's operating point), bounds =
+//            { <unknown> = [lower, upper] }, max_iterations, residual_tol, function_tol, rel_tol,
+//            steady_tol, max_cycles, derivative_cycles; see config/trim_section.hpp for ranges and
+//            defaults. A trim study needs a vehicle with a [body] (its mass sets the weight).
+// Sections of the other kinds ([aeromap], ...) are not defined yet and are rejected.
 #pragma once
 
 #include <filesystem>
@@ -27,6 +33,7 @@
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 #include "studies/runner/config/input_error.hpp"
+#include "trim/trim_options.hpp"
 
 namespace orni::studies {
 
@@ -48,17 +55,22 @@ struct Study {
   orni::VehicleModel vehicle;          ///< resolved, overrides applied, SI
   orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
+  orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
 };
 
 /// Reads and validates a study file and the vehicle it names. Throws InputError.
 Study loadStudyFile(const std::filesystem::path& study_file);
 
-/// The study behind `ornithopter simulate VEHICLE.toml`: kind simulate, name = the vehicle file
-/// stem, point = the vehicle's operating point, default options. Throws InputError.
-Study studyFromVehicle(const std::filesystem::path& vehicle_file);
+/// The study behind `ornithopter simulate VEHICLE.toml` (and `trim VEHICLE.toml` with kind trim):
+/// name = the vehicle file stem, point = the vehicle's operating point, default options (for trim:
+/// defaultTrimOptions, not yet validated against the bounds; the caller applies its flags and
+/// checks TrimOptions::IsValid). Throws InputError (also for a trim of a vehicle without [body]).
+Study studyFromVehicle(const std::filesystem::path& vehicle_file,
+                       StudyKind kind = StudyKind::kSimulate);
 
 /// study.resolved.toml: a complete TOML document with every default filled in: kind, name,
-/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate), and the
+/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate), [trim]
+/// with all options (kind trim), and the
 /// resolved vehicle as a [vehicle] table in file units and key names. loadStudyFile reads it back
 /// into the same Study (apart from study_path).
 std::string resolvedStudyToml(const Study& study);
