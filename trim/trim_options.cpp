@@ -78,6 +78,10 @@ bool TrimOptions::IsValid(std::string* why) const {
   if (!(gradient_tol >= 0.0 && gradient_tol < 1.0)) return fail("gradient_tol must be in [0, 1)");
   if (!(parameter_tol >= 0.0 && parameter_tol < 1.0))
     return fail("parameter_tol must be in [0, 1)");
+  if (stall_iterations < 0 || stall_iterations > 1000)
+    return fail("stall_iterations must be in [0, 1000]");
+  if (!(stall_decrease > 0.0 && stall_decrease < 1.0))
+    return fail("stall_decrease must be in (0, 1)");
   if (derivative_cycles < 1 || derivative_cycles > 1000)
     return fail("derivative_cycles must be in [1, 1000]");
   std::string sim_why;

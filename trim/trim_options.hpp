@@ -38,6 +38,10 @@ struct TrimOptions {
   double function_tol = 1e-12;  ///< Ceres function_tolerance (relative cost change), (0, 1)
   double gradient_tol = 1e-16;  ///< Ceres gradient_tolerance, [0, 1)
   double parameter_tol = 1e-10; ///< Ceres parameter_tolerance (relative step), [0, 1)
+  /// Stall test: stop (not converged) when the cost fell by less than stall_decrease (relative)
+  /// over the last stall_iterations iterations; 0 iterations = off. [0, 1000], (0, 1).
+  int stall_iterations = 8;
+  double stall_decrease = 0.01;
 
   /// Periodic runs of the residual (stop_when_steady; `cycles` is the maximum). Defaults tightened
   /// for trim: rel_tol 1e-6, steady_tol 1e-5, at most 40 cycles.

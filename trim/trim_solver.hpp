@@ -43,6 +43,7 @@ enum class TrimTermination {
   kResidualTolerance,  ///< equilibrium found (max scaled residual <= residual_tol)
   kCeresConvergence,   ///< Ceres' function/gradient/parameter tolerance, residual above tol
   kIterationLimit,     ///< max_iterations reached
+  kStalled,            ///< the cost stopped falling (TrimOptions::stall_iterations)
   kSimulationFailure,  ///< the periodic core failed at the initial guess (Ceres could not start)
   kCeresFailure,       ///< any other Ceres failure
 };
