@@ -6,10 +6,11 @@
 //   sum M  = (M_M)_mean  + (M_T)_mean        = 0     r_M =  mean M       / (W c_mean)
 //
 // W = m g is the weight, c_mean = S / b the mean chord of the wing pair (paper Eq. 7). The means
-// are the tethered core's cycle means (tethered_simulation.hpp): wings (aerodynamic + inertial) plus
-// tail, about P1 = the CG, in the flight-path frame of level flight (FV up, FH forward), gravity not
-// included. The weight acts at the CG, so it enters r_V only. Eq. (4) has no fuselage term and
-// neither has the vehicle model: there is no body drag (FH is wing thrust minus tail drag).
+// are the tethered core's cycle means (tethered_simulation.hpp): wings (aerodynamic + inertial)
+// plus tail, about P1 = the CG, in the flight-path frame of level flight (FV up, FH forward),
+// gravity not included. The weight acts at the CG, so it enters r_V only. Eq. (4) has no fuselage
+// term and neither has the vehicle model: there is no body drag (FH is the wings' mean thrust minus
+// the tail drag).
 //
 // The unknowns are a subset of (theta_mean, U, delta_T, f); the others are held at their given
 // values. The solver works in "solver units" (deg, m/s, deg, Hz), in which all four are O(1-10)

@@ -1,25 +1,30 @@
-// The trim solver: Ceres drives the residuals of paper Eq. (4) (trim_problem.hpp) to zero over the
-// chosen unknowns (architecture.md 1, data flow of a trim study), then hands a converged trim to the
-// free-flight check (free_flight_check.hpp).
+// The trim solver: Ceres drives the residuals of paper Eq. (4) (trim_problem.hpp) to zero over
+// the chosen unknowns (architecture.md 1, data flow of a trim study), then hands a converged trim
+// to the free-flight check (free_flight_check.hpp).
 //
-// Style (style.md habit 5, Ceres): TrimOptions with documented defaults and IsValid(); TrimSummary
-// with a status and a termination reason instead of exceptions for "did not converge", and a
-// one-line BriefReport(). solveTrim() does no I/O and is thread-compatible (one model may be shared
-// by solves on several threads; each solve owns its workspaces), so sweeps call it directly.
+// Style (style.md habit 5, Ceres): TrimOptions (trim_options.hpp) with documented defaults and
+// IsValid(); TrimSummary with a status and a termination reason instead of exceptions for "did not
+// converge", and a one-line BriefReport(). solveTrim() does no I/O and is thread-compatible (one
+// model may be shared by solves on several threads; each solve owns its workspaces), so sweeps
+// call it directly.
 //
-// Method: Levenberg-Marquardt (Ceres trust region, dense QR) with bounds on every unknown, in solver
-// units (deg, m/s, deg, Hz). Derivatives: central differences with fixed absolute steps (0.05 deg,
-// 0.02 m/s, 0.05 deg, 0.02 Hz), one-sided at a bound. Every periodic run uses rel_tol 1e-6: the
-// cycle mean of an adaptive integrator is a noisy function of the point (the step sequence
-// changes), about 2e-5 N at the default rel_tol 1e-4 and 3e-6 N at 1e-6 for efw_magpie, against
-// differences of ~1e-2 N over a step. Residual runs stop at the periodic steady state (steady_tol
-// 1e-5 of q S, i.e. ~3e-5 N, well below the 1e-4 W equilibrium tolerance); derivative runs use a
-// fixed 3 cycles from the quasi-steady start, whose transient is a smooth function of the point
-// and cancels in the difference (the derivative moves by ~0.1 % against fully periodic runs).
+// Method: Levenberg-Marquardt (Ceres trust region, dense QR) with bounds on every unknown, in
+// solver units (deg, m/s, deg, Hz). Derivatives: central differences with fixed absolute steps
+// (0.05 deg, 0.02 m/s, 0.05 deg, 0.02 Hz), one-sided at a bound. Every periodic run uses rel_tol
+// 1e-6: the cycle mean of an adaptive integrator is a noisy function of the point (the step
+// sequence changes), about 2e-5 N at the default rel_tol 1e-4 and 3e-6 N at 1e-6 for efw_magpie,
+// against differences of ~1e-2 N over a step. Residual runs stop at the periodic steady state
+// (steady_tol 1e-5 of q S, i.e. ~3e-5 N, well below the 1e-4 W equilibrium tolerance); derivative
+// runs use a fixed 3 cycles from the quasi-steady start, whose transient is a smooth function of
+// the point and cancels in the difference (the derivative moves by ~0.1 % against fully periodic
+// runs). A step that leaves the bounds is projected and line-searched by bisection on residual
+// runs only (Ceres' default cubic search would evaluate a Jacobian per trial).
 //
 // Stopping: converged when max(|FV - W|, |FH|, |M| / c_mean) <= residual_tol * W at an accepted
-// iterate (checked after every iteration). Ceres' own tolerances (function, gradient, parameter)
-// and the iteration limit end an unsuccessful solve; the summary then says why.
+// iterate (checked after every iteration). Otherwise not converged when the cost stalls (less than
+// 1 % decrease over 8 iterations, typically creeping along a bound), at Ceres' own tolerances
+// (function, gradient, parameter) or at the iteration limit; the summary says which and names any
+// unknown left on a bound.
 #pragma once
 
 #include <array>

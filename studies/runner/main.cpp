@@ -119,7 +119,8 @@ int main(int argc, char** argv) {
               "about the CG = 0) with Ceres; initial guess = the vehicle's operating point");
   std::string trim_vehicle, trim_out, trim_unknowns;
   std::optional<double> trim_freq, trim_theta, trim_speed, trim_tail;
-  trim->add_option("VEHICLE", trim_vehicle, "Vehicle file (TOML) with a [body] section")->required();
+  trim->add_option("VEHICLE", trim_vehicle, "Vehicle file (TOML) with a [body] section")
+      ->required();
   trim->add_option("--freq", trim_freq,
                    "Flapping frequency f (Hz): fixed, or the initial guess when freq is an unknown")
       ->required();

@@ -111,7 +111,8 @@ std::string convergenceFigure(const Study& study, const TrimSummary& s, double t
   std::ostringstream g;
   g << "set multiplot layout 2,1 title \"" << study.name << " trim (" << toString(s.status)
     << "): max(|FV-W|, |FH|, |M|/c_mean) / W per iteration\" noenhanced font ',13'\n";
-  g << "set lmargin 12\nset rmargin 30\nset tmargin 3\nset key outside right top vertical Left reverse noenhanced\n";
+  g << "set lmargin 12\nset rmargin 30\nset tmargin 3\n"
+       "set key outside right top vertical Left reverse noenhanced\n";
   g << "set xrange [-0.2:" << last + 0.2 << "]\nset xlabel 'iteration'\nset xtics 1\n";
   g << "set logscale y\nset format y '10^{%L}'\nset ylabel 'scaled residual (-)'\n";
   double ymin = 0.1 * tol;

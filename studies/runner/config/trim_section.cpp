@@ -52,7 +52,8 @@ std::vector<TrimUnknown> readUnknowns(TableReader& trim) {
   const toml::node* n = trim.take("unknowns");
   if (!n) return TrimOptions().unknowns;
   const toml::array* a = n->as_array();
-  if (!a || a->empty() || a->size() > 3) throw trim.valueError("unknowns", expected, describeNode(*n));
+  if (!a || a->empty() || a->size() > 3)
+    throw trim.valueError("unknowns", expected, describeNode(*n));
   std::vector<TrimUnknown> unknowns;
   for (std::size_t i = 0; i < a->size(); ++i) {
     const toml::node& e = *a->get(i);
@@ -113,7 +114,8 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
       }
       const std::vector<double> b = bounds->requiredNumberArray(name, 2, unknownRange(u));
       if (!(b[0] < b[1]))
-        throw bounds->valueError(name, "[lower, upper] with lower < upper", intervalText(b[0], b[1]));
+        throw bounds->valueError(name, "[lower, upper] with lower < upper",
+                                 intervalText(b[0], b[1]));
       const double scale = orni::trimUnknownScale(u);
       const std::size_t i = static_cast<std::size_t>(orni::trimIndex(u));
       if (!(o.fd_steps[i] <= 0.25 * (b[1] - b[0]) * scale))
@@ -197,7 +199,8 @@ void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out) {
   for (TrimUnknown u : orni::kAllTrimUnknowns) {
     const TrimBounds& b = o.bounds[static_cast<std::size_t>(orni::trimIndex(u))];
     const double scale = orni::trimUnknownScale(u);
-    out.numberArray(orni::trimUnknownName(u), {fileValue(b.lower, scale), fileValue(b.upper, scale)});
+    out.numberArray(orni::trimUnknownName(u),
+                    {fileValue(b.lower, scale), fileValue(b.upper, scale)});
   }
 }
 

@@ -95,13 +95,13 @@ TEST_F(TrimStudy, BoundsTolerancesAndFrequencyUnknown) {
 }
 
 TEST_F(TrimStudy, ResolvedStudyRoundTrip) {
-  const Study a = loadStudyFile(write("t.toml", "kind = \"trim\"\nname = \"rt\"\n" + efw() +
-                                                    "[trim]\nfreq_hz = 7.5\n"
-                                                    "unknowns = [\"speed_mps\", \"tail_angle_deg\", "
-                                                    "\"theta_mean_deg\"]\n"
-                                                    "initial = { theta_mean_deg = 12.3 }\n"
-                                                    "bounds = { tail_angle_deg = [-5.5, 33.3] }\n"
-                                                    "derivative_cycles = 4\n"));
+  const std::string text0 = "kind = \"trim\"\nname = \"rt\"\n" + efw() +
+                            "[trim]\nfreq_hz = 7.5\n"
+                            "unknowns = [\"speed_mps\", \"tail_angle_deg\", \"theta_mean_deg\"]\n"
+                            "initial = { theta_mean_deg = 12.3 }\n"
+                            "bounds = { tail_angle_deg = [-5.5, 33.3] }\n"
+                            "derivative_cycles = 4\n";
+  const Study a = loadStudyFile(write("t.toml", text0));
   const std::string text = resolvedStudyToml(a);
   EXPECT_NE(text.find("[trim]"), std::string::npos);
   const Study b = loadStudyFile(write("resolved.toml", text));
