@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <iostream>
 #include <optional>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
+#include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
@@ -76,6 +78,8 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
     }
     case StudyKind::kModes:
       return runModesStudy(study, out_dir);
+    case StudyKind::kTrim:
+      return runTrimStudy(study, out_dir);
     default:
       std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
                 << toString(study.kind)
@@ -155,8 +159,29 @@ int main(int argc, char** argv) {
                  "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
                  "resumes from the journal there");
 
+
+  // trim
+  auto* trim = app.add_subcommand(
+      "trim", "Solve the trim of a vehicle (paper Eq. 4: mean FV = weight, mean FH = 0, mean M "
+              "about the CG = 0) with Ceres; initial guess = the vehicle's operating point");
+  std::string trim_vehicle, trim_out, trim_unknowns;
+  std::optional<double> trim_freq, trim_theta, trim_speed, trim_tail;
+  trim->add_option("VEHICLE", trim_vehicle, "Vehicle file (TOML) with a [body] section")
+      ->required();
+  trim->add_option("--freq", trim_freq,
+                   "Flapping frequency f (Hz): fixed, or the initial guess when freq is an unknown")
+      ->required();
+  trim->add_option("--theta", trim_theta, "Initial guess of the mean pitch attitude (deg)");
+  trim->add_option("--speed", trim_speed, "Initial guess of the flight speed U (m/s)");
+  trim->add_option("--tail", trim_tail, "Initial guess of the tail angle delta_T (deg)");
+  trim->add_option("--unknowns", trim_unknowns,
+                   "Comma-separated unknowns from theta, speed, tail, freq (default "
+                   "theta,speed,tail; fewer than 3 = least squares); the others are held");
+  trim->add_option("-o,--output", trim_out,
+                   "Output folder (default results/<vehicle name>_trim)");
+
   // Later issues: listed so that --help shows the whole contract.
-  for (const char* name : {"trim", "optimize"}) {
+  for (const char* name : {"optimize"}) {
     auto* c = app.add_subcommand(name, std::string(name) + " (not available in this version)");
     c->allow_extras();
   }
@@ -230,6 +255,39 @@ int main(int argc, char** argv) {
                                ? fs::path("results") / fs::path(modes_vehicle).stem()
                                : fs::path(modes_out);
       return runModesCommand(modes_vehicle, out, modes_ccx);
+    }
+    if (trim->parsed()) {
+      Study study = studyFromVehicle(trim_vehicle, StudyKind::kTrim);
+      study.name += "_trim";
+      TrimOptions& o = study.trim;
+      requireRange("--freq", *trim_freq, 0.0, 200.0, true, "a frequency in Hz in (0, 200]");
+      o.initial.freq_hz = *trim_freq;
+      if (trim_theta) {
+        requireRange("--theta", *trim_theta, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
+        o.initial.theta_rad = *trim_theta * kDegToRad;
+      }
+      if (trim_speed) {
+        requireRange("--speed", *trim_speed, 0.0, 1e3, true, "a speed in m/s > 0");
+        o.initial.speed_mps = *trim_speed;
+      }
+      if (trim_tail) {
+        requireRange("--tail", *trim_tail, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
+        o.initial.tail_angle_rad = *trim_tail * kDegToRad;
+      }
+      if (!trim_unknowns.empty()) {
+        o.unknowns.clear();
+        std::stringstream list(trim_unknowns);
+        for (std::string item; std::getline(list, item, ',');) {
+          const std::optional<TrimUnknown> u = parseTrimUnknown(item);
+          if (!u)
+            throw CliError("command line: option --unknowns: expected a comma-separated list of "
+                           "theta, speed, tail, freq, got '" + item + "'");
+          o.unknowns.push_back(*u);
+        }
+      }
+      std::string why;
+      if (!o.IsValid(&why)) throw CliError("command line: trim options: " + why);
+      return runStudy(study, outputFolder(trim_out, study, false), 1);
     }
     if (plot->parsed()) {
       const int n = redrawFigures(plot_dir);

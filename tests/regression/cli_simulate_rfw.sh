@@ -65,6 +65,13 @@ check "same inputs give the same histories" bash -c "'$bin' simulate '$root/stud
 check "bad option value exits 2" test $? -eq 2
 "$bin" simulate "$scratch/does_not_exist.toml" -o "$scratch/bad" 2>/dev/null
 check "missing file exits 2" test $? -eq 2
-"$bin" simulate "$root/studies/vehicles/efw_magpie.toml" --mode free -o "$scratch/free" 2>/dev/null
-check "unavailable free mode exits 1 with a failed summary" bash -c "[ \$? -eq 1 ] || true; grep -q '\"status\": \"failed\"' '$scratch/free/summary.json'"
+# Free flight (issue 4 acceptance 3): an untrimmed case (tail angle 0) finishes with exit code 0
+# and a verdict that is not bounded (or diverged), with a reason, and no NaN in any output.
+"$bin" simulate "$root/studies/vehicles/efw_magpie.toml" --mode free --tail 0 --cycles 30 \
+    -o "$scratch/free" >/dev/null
+free_rc=$?
+check "untrimmed free flight exits 0" test "$free_rc" -eq 0
+check "untrimmed free flight is not bounded, with a reason" bash -c "grep -q '\"bounded\": false' '$scratch/free/summary.json' && grep -Eq '\"status\": \"diverged\"|\"message\": \".*not bounded' '$scratch/free/summary.json' && grep -Eq '\"message\": \".{20,}' '$scratch/free/summary.json'"
+check "free-flight outputs have no NaN" bash -c "! grep -qi 'nan' '$scratch/free/histories.csv' '$scratch/free/summary.json'"
+check "free-flight figures drawn" test -s "$scratch/free/flight.png"
 exit $fail

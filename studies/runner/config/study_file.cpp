@@ -10,6 +10,7 @@
 
 #include "core/model/frames.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
 namespace orni::studies {
@@ -193,7 +194,7 @@ Study loadStudyFile(const fs::path& study_file) {
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap"});
+                   "aeromap", "trim"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -287,17 +288,43 @@ Study loadStudyFile(const fs::path& study_file) {
                     "abs_tol", "separation_abs_tol", "steady_tol"});
     readAeromap(am, study);
   }
+
+  if (top.has("trim") && study.kind != StudyKind::kTrim)
+    throw InputError::unknownKey(top.fileOf("trim"), top.lineOf("trim"), "trim",
+                                 "[trim] is only allowed in a study of kind \"trim\", this one is "
+                                 "kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (study.kind == StudyKind::kTrim) {
+    if (!study.vehicle.body.present)
+      throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
+                                      "trim)",
+                           "a vehicle without [body]");
+    if (std::optional<TableReader> trim = top.optionalTable("trim", trimSectionKeys())) {
+      study.trim = readTrimSection(*trim, study.vehicle);
+    } else {
+      // No [trim]: the defaults, validated like an empty section.
+      toml::table empty;
+      TableReader none(empty, "trim", study_ctx, trimSectionKeys());
+      study.trim = readTrimSection(none, study.vehicle);
+    }
+  }
   top.finish();
   return study;
 }
 
-Study studyFromVehicle(const fs::path& vehicle_file) {
+Study studyFromVehicle(const fs::path& vehicle_file, StudyKind kind) {
   Study study;
-  study.kind = StudyKind::kSimulate;
+  study.kind = kind;
   study.vehicle = loadVehicleFile(vehicle_file);
   study.name = runNameFromStem(vehicle_file);
   study.vehicle_path = vehicle_file;
   study.point = study.vehicle.operating_point;
+  if (kind == StudyKind::kTrim) {
+    if (!study.vehicle.body.present)
+      throw InputError::missingKey(displayPath(vehicle_file), 0, "body",
+                                   "a [body] table: a trim needs the vehicle's mass");
+    study.trim = orni::defaultTrimOptions(study.vehicle);
+  }
   return study;
 }
 
@@ -356,6 +383,7 @@ std::string resolvedStudyToml(const Study& study) {
     out.number("separation_abs_tol", a.options.separation_abs_tol);
     out.number("steady_tol", a.options.steady_tol);
   }
+  if (study.kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
   return out.str();
 }

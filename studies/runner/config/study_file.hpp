@@ -26,7 +26,13 @@
 //            so that the two cannot be confused.) Options: cycles (the maximum per point,
 //            default 40), steady_tol, rel_tol, abs_tol, separation_abs_tol (default:
 //            SimulationOptions). Every point stops at its periodic steady state.
-// Sections of the other kinds ([trim], ...) are not defined yet and are rejected.
+//   [trim]   (optional, kind = "trim" only) freq_hz, unknowns = ["theta_mean_deg", "speed_mps",
+//            "tail_angle_deg"] (any 1-3 of these and "freq_hz"), initial = { theta_mean_deg,
+//            speed_mps, tail_angle_deg } (default: the vehicle's operating point), bounds =
+//            { <unknown> = [lower, upper] }, max_iterations, residual_tol, function_tol, rel_tol,
+//            steady_tol, max_cycles, derivative_cycles; see config/trim_section.hpp for ranges and
+//            defaults. A trim study needs a vehicle with a [body] (its mass sets the weight).
+// Sections of the other kinds ([optimize], [sweep]) are not defined yet and are rejected.
 #pragma once
 
 #include <filesystem>
@@ -40,6 +46,7 @@
 #include "studies/runner/config/input_error.hpp"
 #include "trim/aero_map_options.hpp"
 #include "trim/grid_spec.hpp"
+#include "trim/trim_options.hpp"
 
 namespace orni::studies {
 
@@ -75,6 +82,7 @@ struct Study {
   orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
+  orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
 };
 
 /// The axis of a grid spec (values = gridValues(spec)).
@@ -83,9 +91,12 @@ GridAxis gridAxis(const orni::trim::GridSpec& spec);
 /// Reads and validates a study file and the vehicle it names. Throws InputError.
 Study loadStudyFile(const std::filesystem::path& study_file);
 
-/// The study behind `ornithopter simulate VEHICLE.toml`: kind simulate, name = the vehicle file
-/// stem, point = the vehicle's operating point, default options. Throws InputError.
-Study studyFromVehicle(const std::filesystem::path& vehicle_file);
+/// The study behind `ornithopter simulate VEHICLE.toml` (and `trim VEHICLE.toml` with kind trim):
+/// name = the vehicle file stem, point = the vehicle's operating point, default options (for trim:
+/// defaultTrimOptions, not yet validated against the bounds; the caller applies its flags and
+/// checks TrimOptions::IsValid). Throws InputError (also for a trim of a vehicle without [body]).
+Study studyFromVehicle(const std::filesystem::path& vehicle_file,
+                       StudyKind kind = StudyKind::kSimulate);
 
 /// The study behind `ornithopter aeromap VEHICLE.toml --speed .. --freq .. --theta .. [--tail ..]`:
 /// kind aeromap, name "<vehicle stem>_aeromap", the given axes (file units, values already checked
@@ -96,8 +107,9 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
                               std::optional<GridAxis> tail_angle_deg);
 
 /// study.resolved.toml: a complete TOML document with every default filled in: kind, name,
-/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate) or
-/// [aeromap] with its axes (specs as "A:B:N", lists as arrays) and options (kind aeromap), and the
+/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate),
+/// [aeromap] with its axes (specs as "A:B:N", lists as arrays) and options (kind aeromap) or
+/// [trim] with all options (kind trim), and the
 /// resolved vehicle as a [vehicle] table in file units and key names. loadStudyFile reads it back
 /// into the same Study (apart from study_path).
 std::string resolvedStudyToml(const Study& study);

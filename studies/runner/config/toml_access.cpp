@@ -565,4 +565,12 @@ void TomlWriter::numberArray(std::string_view key, const std::vector<double>& va
   line(key, s, note);
 }
 
+void TomlWriter::stringArray(std::string_view key, const std::vector<std::string>& values,
+                             std::string_view note) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + stringText(values[i]);
+  s += "]";
+  line(key, s, note);
+}
+
 }  // namespace orni::studies

@@ -193,6 +193,8 @@ class TomlWriter {
   void scaled(std::string_view key, double si, double si_per_file_unit, std::string_view note = {});
   void numberArray(std::string_view key, const std::vector<double>& values,
                    std::string_view note = {});
+  void stringArray(std::string_view key, const std::vector<std::string>& values,
+                   std::string_view note = {});
 
   const std::string& str() const { return out_; }
 

@@ -66,6 +66,16 @@ JsonObject& JsonObject::set(const std::string& key, const std::vector<double>& v
   items_.emplace_back(key, s + "]");
   return *this;
 }
+JsonObject& JsonObject::setStrings(const std::string& key, const std::vector<std::string>& values) {
+  std::string s = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + jsonEscape(values[i]);
+  items_.emplace_back(key, s + "]");
+  return *this;
+}
+JsonObject& JsonObject::setNull(const std::string& key) {
+  items_.emplace_back(key, "null");
+  return *this;
+}
 
 std::string JsonObject::toString(int indent) const {
   const std::string pad(static_cast<std::size_t>(indent + 2), ' ');

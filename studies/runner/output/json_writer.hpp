@@ -17,6 +17,10 @@ class JsonObject {
   JsonObject& set(const std::string& key, const char* value);
   JsonObject& set(const std::string& key, const JsonObject& value);
   JsonObject& set(const std::string& key, const std::vector<double>& values);
+  /// An array of strings.
+  JsonObject& setStrings(const std::string& key, const std::vector<std::string>& values);
+  /// null (a value that does not exist for this run).
+  JsonObject& setNull(const std::string& key);
   /// Pretty text with two-space indentation. Non-finite numbers are written as null (never NaN).
   std::string toString(int indent = 0) const;
 

@@ -1,0 +1,219 @@
+#include "studies/runner/commands/trim_command.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/dynamics/flight_core.hpp"
+#include "core/model/frames.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/trim_solver.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+// Solver-unit value of an unknown (deg, m/s, deg, Hz).
+double fileUnits(const OperatingPoint& p, TrimUnknown u) {
+  return unknownValue(p, u) / trimUnknownScale(u);
+}
+
+JsonObject unknownsObject(const OperatingPoint& p) {
+  JsonObject o;
+  for (TrimUnknown u : kAllTrimUnknowns) o.set(trimUnknownName(u), fileUnits(p, u));
+  return o;
+}
+
+// Every periodic run: which iteration, what for, where, and the Eq. (4) residual there.
+CsvTable evaluationTable(const TrimSummary& s) {
+  CsvTable t;
+  std::vector<double> idx, it, purpose, ok, cycles, th, U, tail, f, fv, fh, m, rv, rh, rm, rmax;
+  for (const TrimEvaluationRecord& e : s.evaluation_log) {
+    idx.push_back(e.index);
+    it.push_back(e.iteration);
+    purpose.push_back(static_cast<double>(static_cast<int>(e.purpose)));
+    ok.push_back(e.result.ok ? 1.0 : 0.0);
+    cycles.push_back(e.result.cycles);
+    th.push_back(fileUnits(e.point, TrimUnknown::kThetaMean));
+    U.push_back(fileUnits(e.point, TrimUnknown::kSpeed));
+    tail.push_back(fileUnits(e.point, TrimUnknown::kTailAngle));
+    f.push_back(fileUnits(e.point, TrimUnknown::kFreq));
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    fv.push_back(e.result.ok ? e.result.mean.FV_N : nan);
+    fh.push_back(e.result.ok ? e.result.mean.FH_N : nan);
+    m.push_back(e.result.ok ? e.result.mean.M_Nm : nan);
+    rv.push_back(e.result.ok ? e.residual.FV_N : nan);
+    rh.push_back(e.result.ok ? e.residual.FH_N : nan);
+    rm.push_back(e.result.ok ? e.residual.M_Nm : nan);
+    rmax.push_back(e.result.ok ? e.scaled_max : nan);
+  }
+  t.addColumn("evaluation", "-", idx);
+  t.addColumn("iteration", "-", it);
+  t.addColumn("purpose", "0=residual 1=derivative", purpose);
+  t.addColumn("ok", "-", ok);
+  t.addColumn("cycles", "-", cycles);
+  t.addColumn("theta_mean", "deg", th);
+  t.addColumn("speed", "m/s", U);
+  t.addColumn("tail_angle", "deg", tail);
+  t.addColumn("freq", "Hz", f);
+  t.addColumn("FV_mean", "N", fv);
+  t.addColumn("FH_mean", "N", fh);
+  t.addColumn("M_mean", "N m", m);
+  t.addColumn("residual_FV", "N", rv);
+  t.addColumn("residual_FH", "N", rh);
+  t.addColumn("residual_M", "N m", rm);
+  t.addColumn("residual_scaled_max", "-", rmax);
+  return t;
+}
+
+// Every solver iteration: the accepted iterate and its residual.
+CsvTable progressTable(const TrimSummary& s) {
+  CsvTable t;
+  std::vector<double> it, ev, th, U, tail, f, cost, rmax, step, radius, success;
+  for (const TrimIterationRecord& r : s.iteration_log) {
+    it.push_back(r.iteration);
+    ev.push_back(r.evaluations);
+    th.push_back(fileUnits(r.point, TrimUnknown::kThetaMean));
+    U.push_back(fileUnits(r.point, TrimUnknown::kSpeed));
+    tail.push_back(fileUnits(r.point, TrimUnknown::kTailAngle));
+    f.push_back(fileUnits(r.point, TrimUnknown::kFreq));
+    cost.push_back(r.cost);
+    rmax.push_back(r.scaled_max);
+    step.push_back(r.step_norm);
+    radius.push_back(r.trust_region_radius);
+    success.push_back(r.step_successful ? 1.0 : 0.0);
+  }
+  t.addColumn("iteration", "-", it);
+  t.addColumn("evaluations", "-", ev);
+  t.addColumn("theta_mean", "deg", th);
+  t.addColumn("speed", "m/s", U);
+  t.addColumn("tail_angle", "deg", tail);
+  t.addColumn("freq", "Hz", f);
+  t.addColumn("cost", "-", cost);
+  t.addColumn("residual_scaled_max", "-", rmax);
+  t.addColumn("step_norm", "solver units", step);
+  t.addColumn("trust_region_radius", "-", radius);
+  t.addColumn("step_successful", "-", success);
+  return t;
+}
+
+// Residual norm per iteration (log scale) with every residual run, and the unknowns per iteration.
+std::string convergenceFigure(const Study& study, const TrimSummary& s, double tol) {
+  int last = 0;
+  for (const TrimEvaluationRecord& e : s.evaluation_log) last = std::max(last, e.iteration);
+  std::ostringstream g;
+  g << "set multiplot layout 2,1 title \"" << study.name << " trim (" << toString(s.status)
+    << "): max(|FV-W|, |FH|, |M|/c_mean) / W per iteration\" noenhanced font ',13'\n";
+  g << "set lmargin 12\nset rmargin 30\nset tmargin 3\n"
+       "set key outside right top vertical Left reverse noenhanced\n";
+  g << "set xrange [-0.2:" << last + 0.2 << "]\nset xlabel 'iteration'\nset xtics 1\n";
+  g << "set logscale y\nset format y '10^{%L}'\nset ylabel 'scaled residual (-)'\n";
+  double ymin = 0.1 * tol;
+  for (const TrimIterationRecord& r : s.iteration_log)
+    if (r.scaled_max > 0.0) ymin = std::min(ymin, 0.3 * r.scaled_max);
+  g << "set yrange [" << ymin << ":*]\n";
+  g << "plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' "
+       "title 'accepted iterate', "
+       "'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 "
+       "ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', "
+    << tol << " with lines dt 2 lc rgb '#333333' title 'tolerance'\n";
+  g << "unset logscale y\nset format y '%g'\nset yrange [*:*]\n";
+  g << "set ylabel 'unknowns (deg, m/s, Hz)'\n";
+  g << "plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 title 'theta mean "
+       "(deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 title 'speed (m/s)', "
+       "'' skip 2 using 1:5 with linespoints lw 2 pt 9 title 'tail angle (deg)', "
+       "'' skip 2 using 1:6 with linespoints lw 2 pt 11 title 'frequency (Hz)'\n";
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+JsonObject freeFlightObject(const FreeFlightVerification& v) {
+  JsonObject o;
+  o.set("status", toString(v.status)).set("message", v.message);
+  if (v.status == FreeFlightStatus::kBounded || v.status == FreeFlightStatus::kUnbounded)
+    o.set("bounded", v.bounded);
+  else
+    o.setNull("bounded");
+  o.set("norm_ratio_max", v.norm_ratio_max)
+      .set("theta_min_deg", v.theta_min_rad * kRadToDeg)
+      .set("theta_max_deg", v.theta_max_rad * kRadToDeg)
+      .set("altitude_p2p_m", v.altitude_p2p_m)
+      .set("dominant_freq_hz", v.dominant_freq_hz);
+  return o;
+}
+
+}  // namespace
+
+int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
+  const FlightCoreModel model(study.vehicle);
+  const TrimSummary s = solveTrim(model, study.trim);
+
+  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+  writeFileAtomic(out_dir / "trim_iterations.csv", evaluationTable(s).toString());
+  writeFileAtomic(out_dir / "trim_progress.csv", progressTable(s).toString());
+
+  std::vector<std::string> unknowns;
+  for (TrimUnknown u : s.unknowns) unknowns.emplace_back(trimUnknownName(u));
+  JsonObject summary;
+  summary.set("kind", "trim")
+      .set("status", toString(s.status))
+      .set("message", s.message)
+      .set("wall_time_s", s.wall_time_s)
+      .set("version", versionString())
+      .set("converged", s.converged)
+      .set("freq_hz", s.solution.freq_hz)
+      .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
+      .set("speed_mps", s.solution.speed_mps)
+      .set("tail_angle_deg", s.solution.tail_angle_rad * kRadToDeg)
+      .set("residual", JsonObject()
+                           .set("FV_N", s.residual.FV_N)
+                           .set("FH_N", s.residual.FH_N)
+                           .set("M_Nm", s.residual.M_Nm))
+      .set("free_flight", freeFlightObject(s.free_flight))
+      .set("termination", toString(s.termination))
+      .set("solve", s.least_squares ? "least_squares" : "square")
+      .setStrings("unknowns", unknowns)
+      .setStrings("at_bound", s.at_bound)
+      .set("residual_scaled", JsonObject()
+                                  .set("FV", s.scaled_residual[0])
+                                  .set("FH", s.scaled_residual[1])
+                                  .set("M", s.scaled_residual[2])
+                                  .set("max", s.scaled_residual_max)
+                                  .set("tolerance", study.trim.residual_tol))
+      .set("weight_N", s.reference.weight_N)
+      .set("mean_chord_m", s.reference.length_m)
+      .set("mean", JsonObject()
+                       .set("FV_N", s.mean.FV_N)
+                       .set("FH_N", s.mean.FH_N)
+                       .set("M_Nm", s.mean.M_Nm)
+                       .set("power_W", s.mean.power_aero_W))
+      .set("initial", unknownsObject(study.trim.initial))
+      .set("iterations", s.iterations)
+      .set("evaluations", s.evaluations)
+      .set("residual_evaluations", s.residual_evaluations)
+      .set("derivative_evaluations", s.derivative_evaluations)
+      .set("failed_evaluations", s.failed_evaluations)
+      .set("ceres", JsonObject()
+                        .set("method", "Levenberg-Marquardt, dense QR, bounds; central differences")
+                        .set("termination_message", s.ceres_message)
+                        .set("report", s.ceres_report))
+      .set("integrator", JsonObject()
+                             .set("rel_tol", study.trim.simulation.rel_tol)
+                             .set("steady_tol", study.trim.simulation.steady_tol)
+                             .set("max_cycles", study.trim.simulation.cycles)
+                             .set("derivative_cycles", study.trim.derivative_cycles));
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  drawFigure(out_dir, "trim_convergence", convergenceFigure(study, s, study.trim.residual_tol));
+  std::cout << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
+            << out_dir.string() << "\n";
+  return 0;
+}
+
+}  // namespace orni::studies

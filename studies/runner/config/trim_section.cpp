@@ -1,0 +1,207 @@
+#include "studies/runner/config/trim_section.hpp"
+
+#include <algorithm>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model/frames.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+using orni::TrimBounds;
+using orni::TrimOptions;
+using orni::TrimUnknown;
+
+std::vector<std::string> unknownNames() {
+  std::vector<std::string> names;
+  for (TrimUnknown u : orni::kAllTrimUnknowns) names.emplace_back(orni::trimUnknownName(u));
+  return names;
+}
+
+std::string quotedList(const std::vector<std::string>& names) {
+  std::string s;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    s += (i ? ", " : "") + TomlWriter::stringText(names[i]);
+  return s;
+}
+
+/// The file-unit range of an unknown's values (initial guesses and bounds).
+Range unknownRange(TrimUnknown u) {
+  switch (u) {
+    case TrimUnknown::kThetaMean:
+    case TrimUnknown::kTailAngle: return Range::open(-90.0, 90.0);
+    case TrimUnknown::kSpeed: return Range::positive();
+    case TrimUnknown::kFreq: return Range::openClosed(0.0, 200.0);
+  }
+  return Range::any();
+}
+
+std::string intervalText(double lo, double hi) {
+  return "[" + formatNumber(lo) + ", " + formatNumber(hi) + "]";
+}
+
+/// File-unit value that converts back to exactly `si` (see TomlWriter::scaled).
+double fileValue(double si, double scale) { return std::stod(TomlWriter::scaledText(si, scale)); }
+
+std::vector<TrimUnknown> readUnknowns(TableReader& trim) {
+  const std::vector<std::string> names = unknownNames();
+  const std::string expected = "an array of 1 to 3 distinct names from " + quotedList(names);
+  const toml::node* n = trim.take("unknowns");
+  if (!n) return TrimOptions().unknowns;
+  const toml::array* a = n->as_array();
+  if (!a || a->empty() || a->size() > 3)
+    throw trim.valueError("unknowns", expected, describeNode(*n));
+  std::vector<TrimUnknown> unknowns;
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    const toml::node& e = *a->get(i);
+    const std::string at = " at index " + std::to_string(i);
+    const auto* s = e.as_string();
+    if (!s) throw trim.valueError("unknowns", expected, describeNode(e) + at);
+    const auto it = std::find(names.begin(), names.end(), s->get());
+    if (it == names.end()) {
+      std::string got = describeNode(e) + at;
+      const std::string near = closestMatch(s->get(), names);
+      if (!near.empty()) got += " (did you mean " + TomlWriter::stringText(near) + "?)";
+      throw trim.valueError("unknowns", expected, got);
+    }
+    const TrimUnknown u = orni::kAllTrimUnknowns[static_cast<std::size_t>(it - names.begin())];
+    if (std::find(unknowns.begin(), unknowns.end(), u) != unknowns.end())
+      throw trim.valueError("unknowns", expected, describeNode(e) + " twice");
+    unknowns.push_back(u);
+  }
+  return unknowns;
+}
+
+}  // namespace
+
+std::vector<std::string> trimSectionKeys() {
+  return {"freq_hz",      "unknowns", "initial",    "bounds",     "max_iterations",
+          "residual_tol", "function_tol", "rel_tol", "steady_tol", "max_cycles",
+          "derivative_cycles"};
+}
+
+orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle) {
+  TrimOptions o = orni::defaultTrimOptions(vehicle);
+  const std::vector<std::string> names = unknownNames();
+
+  o.initial.freq_hz =
+      trim.optionalDouble("freq_hz", o.initial.freq_hz, unknownRange(TrimUnknown::kFreq));
+  o.unknowns = readUnknowns(trim);
+
+  // Initial guess (and fixed values) of theta, U and delta_T; the frequency is freq_hz.
+  std::optional<TableReader> initial =
+      trim.optionalTable("initial", {"theta_mean_deg", "speed_mps", "tail_angle_deg"});
+  if (initial) {
+    for (TrimUnknown u : {TrimUnknown::kThetaMean, TrimUnknown::kSpeed, TrimUnknown::kTailAngle}) {
+      if (auto v = initial->maybeDouble(orni::trimUnknownName(u), unknownRange(u)))
+        orni::setUnknownValue(&o.initial, u, *v * orni::trimUnknownScale(u));
+    }
+    initial->finish();
+  }
+
+  // Bounds per unknown: [lower, upper].
+  std::optional<TableReader> bounds =
+      trim.optionalTable("bounds", std::vector<std::string>(names.begin(), names.end()));
+  if (bounds) {
+    for (TrimUnknown u : orni::kAllTrimUnknowns) {
+      const char* name = orni::trimUnknownName(u);
+      if (!bounds->has(name)) {
+        bounds->take(name);
+        continue;
+      }
+      const std::vector<double> b = bounds->requiredNumberArray(name, 2, unknownRange(u));
+      if (!(b[0] < b[1]))
+        throw bounds->valueError(name, "[lower, upper] with lower < upper",
+                                 intervalText(b[0], b[1]));
+      const double scale = orni::trimUnknownScale(u);
+      const std::size_t i = static_cast<std::size_t>(orni::trimIndex(u));
+      if (!(o.fd_steps[i] <= 0.25 * (b[1] - b[0]) * scale))
+        throw bounds->valueError(name,
+                                 "an interval at least four finite-difference steps wide (" +
+                                     formatNumber(4.0 * o.fd_steps[i] / scale) + " " +
+                                     orni::trimUnknownUnit(u) + ")",
+                                 intervalText(b[0], b[1]));
+      o.bounds[i] = TrimBounds{b[0] * scale, b[1] * scale};
+    }
+    bounds->finish();
+  }
+
+  // Every unknown's initial value inside its bounds; the error names the key that was given.
+  for (TrimUnknown u : o.unknowns) {
+    const char* name = orni::trimUnknownName(u);
+    const double scale = orni::trimUnknownScale(u);
+    const TrimBounds& b = o.bounds[static_cast<std::size_t>(orni::trimIndex(u))];
+    const double v = orni::unknownValue(o.initial, u);
+    if (v >= b.lower && v <= b.upper) continue;
+    const std::string interval = intervalText(fileValue(b.lower, scale), fileValue(b.upper, scale));
+    const std::string value = formatNumber(fileValue(v, scale));
+    if (u == TrimUnknown::kFreq && trim.has("freq_hz"))
+      throw trim.valueError("freq_hz", "an initial frequency inside bounds " + interval, value);
+    if (initial && initial->has(name))
+      throw initial->valueError(name, "an initial value inside bounds " + interval, value);
+    if (bounds && bounds->has(name))
+      throw bounds->valueError(name,
+                               "bounds containing the initial value " + value +
+                                   " (the vehicle's operating point)",
+                               interval);
+    throw trim.valueError(u == TrimUnknown::kFreq ? "freq_hz" : "initial",
+                          std::string("an initial ") + name + " inside the default bounds " +
+                              interval,
+                          value + " (the vehicle's operating point)");
+  }
+
+  o.max_iterations = trim.optionalInt("max_iterations", o.max_iterations, 1, 1000);
+  o.residual_tol = trim.optionalDouble("residual_tol", o.residual_tol, Range::openClosed(0.0, 0.1));
+  o.function_tol = trim.optionalDouble("function_tol", o.function_tol, Range::open(0.0, 1.0));
+  o.simulation.rel_tol =
+      trim.optionalDouble("rel_tol", o.simulation.rel_tol, Range::openClosed(0.0, 1e-2));
+  o.simulation.steady_tol =
+      trim.optionalDouble("steady_tol", o.simulation.steady_tol, Range::openClosed(0.0, 0.1));
+  o.simulation.cycles = trim.optionalInt("max_cycles", o.simulation.cycles, 1, 100000);
+  o.derivative_cycles = trim.optionalInt("derivative_cycles", o.derivative_cycles, 1, 1000);
+  trim.finish();
+
+  std::string why;
+  if (!o.IsValid(&why)) {
+    // Backstop: the checks above name the key for every case known to fail IsValid.
+    const toml::table& t = trim.table();
+    const auto& src = t.source();
+    throw InputError::wrongValue(src.path ? *src.path : trim.context()->file,
+                                 static_cast<int>(src.begin.line), trim.path(),
+                                 "valid trim options", why);
+  }
+  return o;
+}
+
+void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out) {
+  out.header({"trim"});
+  out.number("freq_hz", o.initial.freq_hz,
+             "fixed, or the initial guess when freq_hz is an unknown");
+  std::vector<std::string> unknowns;
+  for (TrimUnknown u : o.unknowns) unknowns.emplace_back(orni::trimUnknownName(u));
+  out.stringArray("unknowns", unknowns,
+                  o.unknowns.size() == 3 ? "square solve" : "least-squares solve");
+  out.integer("max_iterations", o.max_iterations);
+  out.number("residual_tol", o.residual_tol, "fraction of the weight");
+  out.number("function_tol", o.function_tol);
+  out.number("rel_tol", o.simulation.rel_tol);
+  out.number("steady_tol", o.simulation.steady_tol);
+  out.integer("max_cycles", o.simulation.cycles);
+  out.integer("derivative_cycles", o.derivative_cycles);
+  out.header({"trim", "initial"});
+  for (TrimUnknown u : {TrimUnknown::kThetaMean, TrimUnknown::kSpeed, TrimUnknown::kTailAngle})
+    out.scaled(orni::trimUnknownName(u), orni::unknownValue(o.initial, u),
+               orni::trimUnknownScale(u));
+  out.header({"trim", "bounds"});
+  for (TrimUnknown u : orni::kAllTrimUnknowns) {
+    const TrimBounds& b = o.bounds[static_cast<std::size_t>(orni::trimIndex(u))];
+    const double scale = orni::trimUnknownScale(u);
+    out.numberArray(orni::trimUnknownName(u),
+                    {fileValue(b.lower, scale), fileValue(b.upper, scale)});
+  }
+}
+
+}  // namespace orni::studies

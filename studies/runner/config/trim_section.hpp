@@ -1,0 +1,49 @@
+// The [trim] section of a study file (architecture.md 5) <-> orni::TrimOptions.
+//
+// Private to orni_studies (includes toml++ through toml_access.hpp). Keys (all optional; file
+// units in the suffixes, converted to SI here):
+//
+//   freq_hz           flapping frequency (0, 200]: fixed, or the initial guess when "freq_hz" is an
+//                     unknown; default the vehicle's operating point
+//   unknowns          array of 1-3 distinct names from "theta_mean_deg", "speed_mps",
+//                     "tail_angle_deg", "freq_hz"; default the first three (3 = square solve,
+//                     fewer = least squares)
+//   initial           table { theta_mean_deg, speed_mps, tail_angle_deg }: initial guess of the
+//                     unknowns and the fixed value of the others; each defaults to the vehicle's
+//                     operating point
+//   bounds            table { <unknown name> = [lower, upper] } with lower < upper, per unknown;
+//                     defaults theta_mean_deg [-10, 40], speed_mps [2, 30], tail_angle_deg
+//                     [-30, 45], freq_hz [1, 40]; angles inside (-90, 90), speed and frequency > 0
+//   max_iterations    Ceres iterations [1, 1000], default 50
+//   residual_tol      equilibrium tolerance (0, 0.1] as a fraction of the weight: max(|FV - W|,
+//                     |FH|, |M| / c_mean) <= residual_tol * W, default 1e-4
+//   function_tol      Ceres function tolerance (0, 1), default 1e-12
+//   rel_tol           integrator relative tolerance of every periodic run (0, 1e-2], default 1e-6
+//   steady_tol        periodic steady-state tolerance of the residual runs (0, 0.1], default 1e-5
+//   max_cycles        cycle limit of a residual run [1, 100000], default 40
+//   derivative_cycles cycles of each finite-difference run [1, 1000], default 3
+//
+// Every error is an InputError naming file, line and key ('trim.bounds.speed_mps', ...).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/model/vehicle_model.hpp"
+#include "studies/runner/config/toml_access.hpp"
+#include "trim/trim_options.hpp"
+
+namespace orni::studies {
+
+/// The keys a [trim] table may have.
+std::vector<std::string> trimSectionKeys();
+
+/// Reads a [trim] table; `vehicle` supplies the defaults of the initial guess and the frequency.
+/// Calls trim.finish(). Throws InputError.
+orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle);
+
+/// Writes [trim] with every key (initial and bounds as sub-tables), so that readTrimSection
+/// reproduces `options`.
+void writeTrimSection(const orni::TrimOptions& options, TomlWriter& out);
+
+}  // namespace orni::studies

@@ -1,0 +1,41 @@
+// Speed of the trim solver (issue target: one trim solve of efw_magpie at 12 Hz in at most 2 s).
+//   BM_TrimEfw12Hz : `ornithopter trim efw_magpie.toml --freq 12` without I/O: default options,
+//                    initial guess = the vehicle's operating point (paper Table 3). With the
+//                    committed vehicle this solve ends not_converged on the tail bound (no
+//                    equilibrium inside the bounds), the costliest kind of solve.
+//   BM_TrimEfw6Hz  : the same at 6 Hz, where the vehicle trims (a converging solve).
+// Counters: periodic runs (residual + derivative), solver iterations, converged (0/1).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "studies/runner/config/vehicle_file.hpp"
+#include "trim/trim_solver.hpp"
+
+namespace {
+
+using namespace orni;
+
+void trimEfw(benchmark::State& state, double freq_hz) {
+  const VehicleModel v =
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  const FlightCoreModel model(v);
+  TrimOptions o = defaultTrimOptions(v);
+  o.initial.freq_hz = freq_hz;
+  TrimSummary s;
+  for (auto _ : state) {
+    s = solveTrim(model, o);
+    benchmark::DoNotOptimize(s.solution.speed_mps);
+  }
+  state.counters["periodic_runs"] = s.evaluations;
+  state.counters["residual_runs"] = s.residual_evaluations;
+  state.counters["iterations"] = s.iterations;
+  state.counters["converged"] = s.converged ? 1 : 0;
+}
+
+void BM_TrimEfw12Hz(benchmark::State& s) { trimEfw(s, 12.0); }
+void BM_TrimEfw6Hz(benchmark::State& s) { trimEfw(s, 6.0); }
+BENCHMARK(BM_TrimEfw12Hz)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TrimEfw6Hz)->Unit(benchmark::kMillisecond);
+
+}  // namespace

@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# CLI and output contract of `ornithopter trim` and `kind = "trim"` studies (architecture.md 3-5):
+# the contracted summary keys, status ok or not_converged with exit 0, the CSV names and units rows,
+# the resolved study as a fixed point, the figure, exit codes for bad input.
+#   usage: bash cli_trim.sh <ornithopter-binary> <repo-root> <scratch-dir>
+set -u
+bin=${1:?}; root=${2:?}; scratch=${3:?}
+rm -rf "$scratch"; mkdir -p "$scratch"
+fail=0
+check() {  # check "description" command...
+  local what=$1; shift
+  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fail=1; fi
+}
+json() {  # json FILE KEY: the first value of "KEY" in FILE
+  grep -m1 "\"$2\":" "$1" | sed -E 's/.*: *([-+0-9.eE]+|true|false|null|"[^"]*").*/\1/' | tr -d '"'
+}
+awk_true() { awk "BEGIN { exit !($1) }"; }
+root=$(cd "$root" && pwd)  # absolute: the study file below names the vehicle from $scratch
+efw="$root/studies/vehicles/efw_magpie.toml"
+
+check "trim --help exits 0" bash -c "'$bin' trim --help > /dev/null"
+check "trim --help documents --unknowns" bash -c "'$bin' trim --help | grep -q -- --unknowns"
+
+# The paper's vehicle at the Table 3 frequency.
+out="$scratch/efw12"
+"$bin" trim "$efw" --freq 12 -o "$out" > "$scratch/efw12.log" 2>&1
+check "trim efw_magpie --freq 12 exits 0" test $? -eq 0
+for f in summary.json study.resolved.toml trim_iterations.csv trim_progress.csv \
+         trim_convergence.png trim_convergence.svg trim_convergence.gp; do
+  check "writes $f" test -s "$out/$f"
+done
+check "no temporary files left" bash -c "! ls '$out' | grep -q tmp"
+for key in kind status message wall_time_s version converged freq_hz theta_mean_deg speed_mps \
+           tail_angle_deg residual FV_N FH_N M_Nm free_flight bounded norm_ratio_max \
+           theta_min_deg theta_max_deg altitude_p2p_m dominant_freq_hz iterations evaluations; do
+  check "summary has $key" grep -q "\"$key\":" "$out/summary.json"
+done
+check "kind is trim" test "$(json "$out/summary.json" kind)" = trim
+status=$(json "$out/summary.json" status)
+check "status ok or not_converged ($status)" bash -c "[ '$status' = ok ] || [ '$status' = not_converged ]"
+converged=$(json "$out/summary.json" converged)
+expected_converged=false; [ "$status" = ok ] && expected_converged=true
+check "converged agrees with status ($converged)" test "$converged" = "$expected_converged"
+check "a non-empty message" grep -q '"message": "[^"]' "$out/summary.json"
+check "freq_hz is 12" awk_true "$(json "$out/summary.json" freq_hz) == 12"
+check "free_flight not available yet" grep -q '"status": "\(not_available\|skipped\)"' "$out/summary.json"
+check "CSV names row" bash -c "head -1 '$out/trim_iterations.csv' | grep -q '^evaluation,iteration,purpose,ok,cycles,theta_mean,speed,tail_angle,freq,FV_mean,FH_mean,M_mean,residual_FV,residual_FH,residual_M,'"
+check "CSV units row" bash -c "sed -n 2p '$out/trim_iterations.csv' | grep -q '^-,-,0=residual 1=derivative,-,-,deg,m/s,deg,Hz,N,N,N m,N,N,N m,'"
+runs=$(( $(wc -l < "$out/trim_iterations.csv") - 2 ))
+check "one CSV row per periodic run ($runs)" test "$runs" -eq "$(json "$out/summary.json" evaluations)"
+check "progress CSV units row" bash -c "sed -n 2p '$out/trim_progress.csv' | grep -q '^-,-,deg,m/s,deg,Hz,'"
+check "no NaN in the tables" bash -c "! grep -qi nan '$out/trim_iterations.csv' '$out/trim_progress.csv'"
+check "resolved study re-runs" "$bin" run "$out/study.resolved.toml" -o "$scratch/resolved"
+check "resolved study is a fixed point" cmp -s "$out/study.resolved.toml" "$scratch/resolved/study.resolved.toml"
+check "same inputs give the same evaluations" cmp -s "$out/trim_iterations.csv" "$scratch/resolved/trim_iterations.csv"
+check "plot redraws the convergence figure" "$bin" plot "$out"
+
+# A case that trims (6 Hz) and a study file with an impossible request (10 kg).
+"$bin" trim "$efw" --freq 6 --theta 5 --speed 6 --tail 0 --unknowns theta,speed,tail \
+  -o "$scratch/efw6" > /dev/null 2>&1
+check "trim at 6 Hz exits 0" test $? -eq 0
+check "trim at 6 Hz converges" test "$(json "$scratch/efw6/summary.json" status)" = ok
+fv=$(json "$scratch/efw6/summary.json" FV_N); w=$(json "$scratch/efw6/summary.json" weight_N)
+check "6 Hz residual |FV - W| = |$fv| < 1e-4 W" awk_true "($fv) * ($fv) < (1e-4 * $w) * (1e-4 * $w)"
+cat > "$scratch/heavy.toml" <<EOF
+kind = "trim"
+name = "heavy"
+vehicle = "$efw"
+[override]
+body.mass_kg = 10.0
+[trim]
+freq_hz = 12.0
+EOF
+"$bin" run "$scratch/heavy.toml" -o "$scratch/heavy" > /dev/null 2>&1
+check "impossible trim (10 kg) exits 0" test $? -eq 0
+check "impossible trim is not_converged" test "$(json "$scratch/heavy/summary.json" status)" = not_converged
+check "impossible trim says why" grep -q '"message": ".*tolerance' "$scratch/heavy/summary.json"
+
+# Exit codes for bad input.
+"$bin" trim "$efw" -o "$scratch/bad" 2>/dev/null
+check "missing --freq exits 2" test $? -eq 2
+"$bin" trim "$efw" --freq 12 --unknowns theta,sped -o "$scratch/bad" 2>/dev/null
+check "bad --unknowns exits 2" test $? -eq 2
+"$bin" trim "$efw" --freq 12 --theta 60 -o "$scratch/bad" 2>/dev/null
+check "initial guess outside the bounds exits 2" test $? -eq 2
+"$bin" trim "$root/studies/vehicles/rfw_tunnel.toml" --freq 4 -o "$scratch/bad" 2>/dev/null
+check "vehicle without [body] exits 2" test $? -eq 2
+exit $fail

@@ -1,0 +1,65 @@
+// TrimOptions: the options of one trim solve (style.md habit 5: plain struct, documented
+// defaults, IsValid). Light header (no core dynamics) so that the study files can hold them; the
+// solver is trim_solver.hpp.
+#pragma once
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/dynamics/simulation_options.hpp"
+#include "core/model/vehicle_model.hpp"
+#include "trim/free_flight_check.hpp"
+#include "trim/trim_unknowns.hpp"
+
+namespace orni {
+
+/// Options of one trim solve. Angles in SI (rad) like every model field; file and CLI units are
+/// converted by the runner.
+struct TrimOptions {
+  /// The unknowns, 1 to 3 distinct (3: square solve; fewer: least squares). Default: theta_mean,
+  /// U and delta_T at the given frequency.
+  std::vector<TrimUnknown> unknowns = {TrimUnknown::kThetaMean, TrimUnknown::kSpeed,
+                                       TrimUnknown::kTailAngle};
+  /// Initial guess of the unknowns and the fixed value of every other quantity (e.g. the
+  /// frequency). The runner fills it from the vehicle's operating point, the study and the CLI.
+  /// speed > 0, freq > 0, every unknown inside its bounds.
+  OperatingPoint initial;
+  /// Bounds per unknown (indexed by TrimUnknown), SI; lower < upper, speed and frequency lower
+  /// > 0. Defaults: theta [-10, 40] deg, U [2, 30] m/s, delta_T [-30, 45] deg, f [1, 40] Hz.
+  std::array<TrimBounds, kTrimUnknownCount> bounds = defaultBounds();
+  /// Central-difference steps per unknown, SI, > 0 and at most a quarter of the bound interval.
+  /// Defaults 0.05 deg, 0.02 m/s, 0.05 deg, 0.02 Hz.
+  std::array<double, kTrimUnknownCount> fd_steps = defaultSteps();
+
+  int max_iterations = 50;      ///< Ceres iterations, [1, 1000]
+  double residual_tol = 1e-4;   ///< equilibrium: max(|FV - W|, |FH|, |M| / c_mean) <= tol * W,
+                                ///< (0, 0.1]
+  double function_tol = 1e-12;  ///< Ceres function_tolerance (relative cost change), (0, 1)
+  double gradient_tol = 1e-16;  ///< Ceres gradient_tolerance, [0, 1)
+  double parameter_tol = 1e-10; ///< Ceres parameter_tolerance (relative step), [0, 1)
+  /// Stall test: stop (not converged) when the cost fell by less than stall_decrease (relative)
+  /// over the last stall_iterations iterations; 0 iterations = off. [0, 1000], (0, 1).
+  int stall_iterations = 8;
+  double stall_decrease = 0.01;
+
+  /// Periodic runs of the residual (stop_when_steady; `cycles` is the maximum). Defaults tightened
+  /// for trim: rel_tol 1e-6, steady_tol 1e-5, at most 40 cycles.
+  SimulationOptions simulation = defaultSimulation();
+  int derivative_cycles = 3;    ///< cycles of each finite-difference run, [1, 1000]
+
+  bool verify_free_flight = true;  ///< run verifyFreeFlight() on a converged trim
+  FreeFlightCheckOptions free_flight;
+
+  /// True when every field is inside its range; otherwise false with the reason in *why.
+  bool IsValid(std::string* why) const;
+
+  static std::array<TrimBounds, kTrimUnknownCount> defaultBounds();
+  static std::array<double, kTrimUnknownCount> defaultSteps();
+  static SimulationOptions defaultSimulation();
+};
+
+/// Default options with the vehicle's operating point as initial guess and fixed values.
+TrimOptions defaultTrimOptions(const VehicleModel& vehicle);
+
+}  // namespace orni

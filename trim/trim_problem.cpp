@@ -1,0 +1,165 @@
+#include "trim/trim_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <utility>
+
+#include "core/model/frames.hpp"
+
+namespace orni {
+
+namespace {
+
+bool samePoint(const OperatingPoint& a, const OperatingPoint& b) {
+  return a.speed_mps == b.speed_mps && a.freq_hz == b.freq_hz && a.theta_rad == b.theta_rad &&
+         a.tail_angle_rad == b.tail_angle_rad;
+}
+
+}  // namespace
+
+TrimReference trimReference(const FlightCoreModel& model) {
+  const VehicleModel& v = model.vehicle;
+  if (!v.body.present || !(v.body.mass_kg > 0.0))
+    throw std::invalid_argument("trim needs the vehicle's [body] mass (a wind-tunnel rig cannot be "
+                                "trimmed)");
+  if (!(v.air.gravity_mps2 > 0.0)) throw std::invalid_argument("trim needs gravity > 0");
+  if (!(model.mean_chord_m > 0.0)) throw std::invalid_argument("trim needs a wing area > 0");
+  return TrimReference{v.body.mass_kg * v.air.gravity_mps2, model.mean_chord_m};
+}
+
+std::array<double, kTrimResidualCount> scaledResidual(const TrimReference& ref,
+                                                      const TrimResidual& r) {
+  return {r.FV_N / ref.weight_N, r.FH_N / ref.weight_N, r.M_Nm / (ref.weight_N * ref.length_m)};
+}
+
+double scaledResidualMax(const TrimReference& ref, const TrimResidual& r) {
+  const auto s = scaledResidual(ref, r);
+  return std::max({std::abs(s[0]), std::abs(s[1]), std::abs(s[2])});
+}
+
+MeanLoadsFunction tetheredMeanLoads(const FlightCoreModel& model,
+                                    const SimulationOptions& residual_options,
+                                    int derivative_cycles) {
+  SimulationOptions residual_opts = residual_options;
+  residual_opts.record_history = false;
+  SimulationOptions derivative_opts = residual_opts;
+  derivative_opts.stop_when_steady = false;
+  derivative_opts.cycles = derivative_cycles;
+  return [&model, residual_opts, derivative_opts](const OperatingPoint& point,
+                                                  TrimEvaluationPurpose purpose) {
+    PeriodicEvaluation e;
+    const SimulationOptions& o =
+        purpose == TrimEvaluationPurpose::kResidual ? residual_opts : derivative_opts;
+    try {
+      const SimulationSummary s = simulateTethered(model, point, o, nullptr);
+      e.ok = s.status == SimulationStatus::kOk || s.status == SimulationStatus::kNotConverged;
+      e.steady = s.steady_state_cycle > 0;
+      e.cycles = s.cycles_run;
+      e.mean = s.mean;
+      e.message = s.message;
+    } catch (const std::exception& ex) {
+      e.ok = false;
+      e.message = ex.what();
+    }
+    return e;
+  };
+}
+
+TrimProblem::TrimProblem(const TrimReference& reference, MeanLoadsFunction loads,
+                         const OperatingPoint& base, std::vector<TrimUnknown> unknowns,
+                         const std::array<double, kTrimUnknownCount>& steps,
+                         const std::array<TrimBounds, kTrimUnknownCount>& bounds)
+    : reference_(reference),
+      loads_(std::move(loads)),
+      base_(base),
+      unknowns_(std::move(unknowns)),
+      steps_(steps),
+      bounds_(bounds) {}
+
+OperatingPoint TrimProblem::pointAt(const double* x) const {
+  OperatingPoint p = base_;
+  for (std::size_t j = 0; j < unknowns_.size(); ++j)
+    setUnknownValue(&p, unknowns_[j], x[j] * trimUnknownScale(unknowns_[j]));
+  return p;
+}
+
+std::vector<double> TrimProblem::solverValues(const OperatingPoint& point) const {
+  std::vector<double> x;
+  x.reserve(unknowns_.size());
+  for (TrimUnknown u : unknowns_) x.push_back(unknownValue(point, u) / trimUnknownScale(u));
+  return x;
+}
+
+const TrimEvaluationRecord* TrimProblem::findResidual(const OperatingPoint& point) const {
+  for (auto it = log_.rbegin(); it != log_.rend(); ++it)
+    if (it->purpose == TrimEvaluationPurpose::kResidual && samePoint(it->point, point))
+      return &*it;
+  return nullptr;
+}
+
+const TrimEvaluationRecord& TrimProblem::run(const OperatingPoint& point,
+                                             TrimEvaluationPurpose purpose) {
+  TrimEvaluationRecord rec;
+  rec.index = static_cast<int>(log_.size());
+  rec.iteration = iteration_;
+  rec.purpose = purpose;
+  rec.point = point;
+  rec.result = loads_(point, purpose);
+  const CycleMeans& m = rec.result.mean;
+  if (rec.result.ok &&
+      !(std::isfinite(m.FV_N) && std::isfinite(m.FH_N) && std::isfinite(m.M_Nm))) {
+    rec.result.ok = false;
+    rec.result.message = "non-finite cycle means";
+  }
+  if (rec.result.ok) {
+    rec.residual = TrimResidual{m.FV_N - reference_.weight_N, m.FH_N, m.M_Nm};
+    rec.scaled_max = scaledResidualMax(reference_, rec.residual);
+  } else {
+    ++failed_;
+    last_failure_ = rec.result.message;
+  }
+  log_.push_back(std::move(rec));
+  return log_.back();
+}
+
+bool TrimProblem::residual(const double* x, double* r) {
+  const OperatingPoint p = pointAt(x);
+  const TrimEvaluationRecord* rec = findResidual(p);
+  if (!rec) rec = &run(p, TrimEvaluationPurpose::kResidual);
+  if (!rec->result.ok) return false;
+  const auto s = scaledResidual(reference_, rec->residual);
+  std::copy(s.begin(), s.end(), r);
+  return true;
+}
+
+bool TrimProblem::jacobian(const double* x, double* jacobian_row_major) {
+  const int n = unknownCount();
+  std::vector<double> xp(x, x + n), xm(x, x + n);
+  for (int j = 0; j < n; ++j) {
+    const TrimUnknown u = unknowns_[static_cast<std::size_t>(j)];
+    const double scale = trimUnknownScale(u);
+    const double h = steps_[static_cast<std::size_t>(trimIndex(u))] / scale;
+    const TrimBounds& b = bounds_[static_cast<std::size_t>(trimIndex(u))];
+    double lo = x[j] - h, hi = x[j] + h;
+    if (lo < b.lower / scale) lo = x[j];   // forward difference at the lower bound
+    if (hi > b.upper / scale) hi = x[j];   // backward difference at the upper bound
+    if (lo == hi) return false;            // interval narrower than a step (IsValid prevents it)
+    xp[static_cast<std::size_t>(j)] = hi;
+    xm[static_cast<std::size_t>(j)] = lo;
+    const TrimEvaluationRecord ep = run(pointAt(xp.data()), TrimEvaluationPurpose::kDerivative);
+    if (!ep.result.ok) return false;
+    const TrimEvaluationRecord em = run(pointAt(xm.data()), TrimEvaluationPurpose::kDerivative);
+    if (!em.result.ok) return false;
+    const auto rp = scaledResidual(reference_, ep.residual);
+    const auto rm = scaledResidual(reference_, em.residual);
+    for (int i = 0; i < kTrimResidualCount; ++i)
+      jacobian_row_major[i * n + j] =
+          (rp[static_cast<std::size_t>(i)] - rm[static_cast<std::size_t>(i)]) / (hi - lo);
+    xp[static_cast<std::size_t>(j)] = x[j];
+    xm[static_cast<std::size_t>(j)] = x[j];
+  }
+  return true;
+}
+
+}  // namespace orni

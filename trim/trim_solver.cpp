@@ -1,0 +1,311 @@
+#include "trim/trim_solver.hpp"
+
+#include <ceres/ceres.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include "core/model/frames.hpp"
+
+namespace orni {
+
+const char* toString(TrimStatus s) { return s == TrimStatus::kOk ? "ok" : "not_converged"; }
+
+const char* toString(TrimTermination t) {
+  switch (t) {
+    case TrimTermination::kResidualTolerance: return "residual_tolerance";
+    case TrimTermination::kCeresConvergence: return "ceres_convergence";
+    case TrimTermination::kIterationLimit: return "iteration_limit";
+    case TrimTermination::kStalled: return "stalled";
+    case TrimTermination::kSimulationFailure: return "simulation_failure";
+    case TrimTermination::kCeresFailure: return "ceres_failure";
+  }
+  return "ceres_failure";
+}
+
+namespace {
+
+// "12.34 deg" etc. for messages.
+std::string valueText(TrimUnknown u, double si) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6g %s", si / trimUnknownScale(u), trimUnknownUnit(u));
+  return buf;
+}
+
+std::string pointText(const OperatingPoint& p) {
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "theta %.4f deg, U %.4f m/s, tail %.4f deg, f %.4f Hz",
+                p.theta_rad * kRadToDeg, p.speed_mps, p.tail_angle_rad * kRadToDeg, p.freq_hz);
+  return buf;
+}
+
+}  // namespace
+
+std::string TrimSummary::BriefReport() const {
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%s: %s; residual FV-W %.3e N, FH %.3e N, M %.3e N m (max %.2e W); %d iterations, "
+                "%d periodic runs, %.3f s",
+                toString(status), pointText(solution).c_str(), residual.FV_N, residual.FH_N,
+                residual.M_Nm, scaled_residual_max, iterations, evaluations, wall_time_s);
+  return buf;
+}
+
+// ------------------------------------------------------------------------------------------------
+// Ceres side
+
+namespace {
+
+// Eq. (4) residuals and their central-difference Jacobian (trim_problem.hpp) as a Ceres cost.
+class TrimCostFunction final : public ceres::CostFunction {
+ public:
+  explicit TrimCostFunction(TrimProblem* problem) : problem_(problem) {
+    set_num_residuals(kTrimResidualCount);
+    mutable_parameter_block_sizes()->push_back(problem->unknownCount());
+  }
+  bool Evaluate(double const* const* parameters, double* residuals,
+                double** jacobians) const override {
+    // A failed periodic run makes the point infeasible: Ceres shrinks the trust region.
+    if (!problem_->residual(parameters[0], residuals)) return false;
+    if (jacobians && jacobians[0]) return problem_->jacobian(parameters[0], jacobians[0]);
+    return true;
+  }
+
+ private:
+  TrimProblem* problem_;
+};
+
+// Records every iteration, stops at the equilibrium tolerance (Ceres has no absolute residual
+// test) and aborts a stalled solve (typically creeping along a bound, where the projected
+// Levenberg-Marquardt steps shrink without reaching Ceres' own tolerances). Needs
+// Solver::Options::update_state_every_iteration so that x is the accepted iterate.
+class TrimCallback final : public ceres::IterationCallback {
+ public:
+  TrimCallback(TrimProblem* problem, const double* x, const TrimOptions& options,
+               std::vector<TrimIterationRecord>* log)
+      : problem_(problem),
+        x_(x),
+        tol_(options.residual_tol),
+        stall_iterations_(options.stall_iterations),
+        stall_decrease_(options.stall_decrease),
+        log_(log) {}
+  bool stalled() const { return stalled_; }
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    TrimIterationRecord r;
+    r.iteration = s.iteration;
+    r.point = problem_->pointAt(x_);
+    r.cost = s.cost;
+    r.step_norm = s.step_norm;
+    r.trust_region_radius = s.trust_region_radius;
+    r.step_successful = s.step_is_successful;
+    r.evaluations = static_cast<int>(problem_->log().size());
+    const TrimEvaluationRecord* e = problem_->findResidual(r.point);
+    r.scaled_max = e ? e->scaled_max : std::sqrt(2.0 * s.cost);
+    log_->push_back(r);
+    problem_->setIteration(s.iteration + 1);
+    if (e && e->result.ok && e->scaled_max <= tol_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    const std::size_t k = log_->size() - 1;
+    const std::size_t window = static_cast<std::size_t>(stall_iterations_);
+    if (stall_iterations_ > 0 && k >= window) {
+      const double before = (*log_)[k - window].cost;
+      if (before - s.cost < stall_decrease_ * before) {
+        stalled_ = true;  // USER_SUCCESS keeps the iterate (SOLVER_ABORT would restore x0)
+        return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+      }
+    }
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  TrimProblem* problem_;
+  const double* x_;
+  double tol_;
+  int stall_iterations_;
+  double stall_decrease_;
+  std::vector<TrimIterationRecord>* log_;
+  bool stalled_ = false;
+};
+
+}  // namespace
+
+TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& loads,
+                      const TrimOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string why;
+  if (!options.IsValid(&why)) throw std::invalid_argument("trim options: " + why);
+  if (!(reference.weight_N > 0.0 && reference.length_m > 0.0))
+    throw std::invalid_argument("trim reference: weight and length must be > 0");
+
+  TrimSummary summary;
+  summary.unknowns = options.unknowns;
+  summary.reference = reference;
+  summary.least_squares = options.unknowns.size() < static_cast<std::size_t>(kTrimResidualCount);
+
+  TrimProblem problem(reference, loads, options.initial, options.unknowns, options.fd_steps,
+                      options.bounds);
+  std::vector<double> x = problem.solverValues(options.initial);
+  const int n = problem.unknownCount();
+
+  ceres::Problem::Options problem_options;
+  problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
+  ceres::Problem ceres_problem(problem_options);
+  ceres_problem.AddResidualBlock(new TrimCostFunction(&problem), nullptr, x.data());
+  for (int j = 0; j < n; ++j) {
+    const TrimUnknown u = options.unknowns[static_cast<std::size_t>(j)];
+    const TrimBounds& b = options.bounds[static_cast<std::size_t>(trimIndex(u))];
+    ceres_problem.SetParameterLowerBound(x.data(), j, b.lower / trimUnknownScale(u));
+    ceres_problem.SetParameterUpperBound(x.data(), j, b.upper / trimUnknownScale(u));
+  }
+
+  TrimCallback callback(&problem, x.data(), options, &summary.iteration_log);
+  ceres::Solver::Options so;
+  so.minimizer_type = ceres::TRUST_REGION;
+  so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
+  so.linear_solver_type = ceres::DENSE_QR;
+  // A step that leaves the bounds is projected and followed by a line search (Ceres trust-region
+  // minimizer). With the default cubic interpolation every trial there costs a Jacobian, i.e. six
+  // periodic runs, and it may bisect 20 times; bisection on function values only and at most four
+  // trials cut the runs of a solve that ends on a bound by 2-5x (no change when none is active).
+  so.line_search_interpolation_type = ceres::BISECTION;
+  so.max_num_line_search_step_size_iterations = 4;
+  so.max_num_iterations = options.max_iterations;
+  so.function_tolerance = options.function_tol;
+  so.gradient_tolerance = options.gradient_tol;
+  so.parameter_tolerance = options.parameter_tol;
+  so.num_threads = 1;
+  so.logging_type = ceres::SILENT;
+  so.minimizer_progress_to_stdout = false;
+  so.update_state_every_iteration = true;
+  so.callbacks.push_back(&callback);
+
+  ceres::Solver::Summary cs;
+  ceres::Solve(so, &ceres_problem, &cs);
+
+  summary.ceres_message = cs.message;
+  summary.ceres_report = cs.BriefReport();
+  // The last iteration index the callback saw (Ceres counts iteration 0, the initial point, as a
+  // successful step).
+  summary.iterations = summary.iteration_log.empty() ? 0 : summary.iteration_log.back().iteration;
+
+  // The final iterate and its residual (normally already evaluated).
+  summary.solution = problem.pointAt(x.data());
+  const TrimEvaluationRecord* final_rec = problem.findResidual(summary.solution);
+  bool final_ok = final_rec && final_rec->result.ok;
+  if (!final_rec) {
+    std::array<double, kTrimResidualCount> r{};
+    final_ok = problem.residual(x.data(), r.data());
+    final_rec = problem.findResidual(summary.solution);
+  }
+  if (final_ok) {
+    summary.mean = final_rec->result.mean;
+    summary.residual = final_rec->residual;
+    summary.scaled_residual = scaledResidual(reference, summary.residual);
+    summary.scaled_residual_max = final_rec->scaled_max;
+  } else {
+    summary.scaled_residual_max = std::numeric_limits<double>::quiet_NaN();
+  }
+  summary.converged = final_ok && summary.scaled_residual_max <= options.residual_tol;
+  summary.status = summary.converged ? TrimStatus::kOk : TrimStatus::kNotConverged;
+
+  // Unknowns on a bound (within a thousandth of a step).
+  for (TrimUnknown u : options.unknowns) {
+    const std::size_t i = static_cast<std::size_t>(trimIndex(u));
+    const double v = unknownValue(summary.solution, u);
+    const double eps = 1e-3 * options.fd_steps[i];
+    if (v <= options.bounds[i].lower + eps)
+      summary.at_bound.push_back(std::string(trimUnknownName(u)) + " at its lower bound " +
+                                 valueText(u, options.bounds[i].lower));
+    else if (v >= options.bounds[i].upper - eps)
+      summary.at_bound.push_back(std::string(trimUnknownName(u)) + " at its upper bound " +
+                                 valueText(u, options.bounds[i].upper));
+  }
+
+  // Termination reason and message.
+  char tolerance_text[200];
+  std::snprintf(tolerance_text, sizeof tolerance_text,
+                "max scaled residual %.3e %s tolerance %.1e (|FV-W|, |FH|, |M|/c_mean vs W)",
+                summary.scaled_residual_max, summary.converged ? "<=" : ">",
+                options.residual_tol);
+  std::string msg;
+  if (summary.converged) {
+    summary.termination = TrimTermination::kResidualTolerance;
+    msg = std::string("equilibrium found: ") + tolerance_text;
+  } else if (problem.log().size() == 1 && !problem.log().front().result.ok) {
+    summary.termination = TrimTermination::kSimulationFailure;
+    msg = "the periodic simulation failed at the initial guess (" + pointText(options.initial) +
+          "): " + problem.log().front().result.message;
+  } else if (callback.stalled()) {
+    summary.termination = TrimTermination::kStalled;
+    char buf[160];
+    std::snprintf(buf, sizeof buf,
+                  "stalled: the cost fell by less than %g %% over the last %d iterations; ",
+                  100.0 * options.stall_decrease, options.stall_iterations);
+    msg = buf + std::string(tolerance_text);
+  } else if (cs.termination_type == ceres::NO_CONVERGENCE) {
+    summary.termination = TrimTermination::kIterationLimit;
+    msg = "iteration limit (" + std::to_string(options.max_iterations) + ") reached; " +
+          tolerance_text;
+  } else if (cs.termination_type == ceres::CONVERGENCE) {
+    summary.termination = TrimTermination::kCeresConvergence;
+    msg = std::string(summary.least_squares ? "least-squares minimum" : "Ceres stopped") +
+          " without equilibrium (" + cs.message + "); " + tolerance_text;
+  } else {
+    summary.termination = TrimTermination::kCeresFailure;
+    msg = "Ceres failure (" + cs.message + "); " + tolerance_text;
+  }
+  if (!summary.converged && !summary.at_bound.empty()) {
+    msg += "; ";
+    for (std::size_t i = 0; i < summary.at_bound.size(); ++i)
+      msg += (i ? ", " : "") + summary.at_bound[i];
+    msg += ": no equilibrium inside the bounds was found";
+  }
+  if (!summary.converged && summary.least_squares)
+    msg += "; least-squares solve with " + std::to_string(n) +
+           " unknown(s) for 3 equations: an exact equilibrium needs 3 unknowns in general";
+  if (problem.failedEvaluations() > 0 && !summary.converged)
+    msg += "; " + std::to_string(problem.failedEvaluations()) +
+           " periodic run(s) failed, last: " + problem.lastFailure();
+  summary.message = msg;
+
+  summary.evaluation_log = problem.log();
+  summary.evaluations = static_cast<int>(summary.evaluation_log.size());
+  for (const TrimEvaluationRecord& r : summary.evaluation_log) {
+    if (r.purpose == TrimEvaluationPurpose::kResidual)
+      ++summary.residual_evaluations;
+    else
+      ++summary.derivative_evaluations;
+  }
+  summary.failed_evaluations = problem.failedEvaluations();
+  summary.free_flight.status = FreeFlightStatus::kSkipped;
+  summary.free_flight.message = "not run";
+  summary.wall_time_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return summary;
+}
+
+TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string why;
+  if (!options.IsValid(&why)) throw std::invalid_argument("trim options: " + why);
+  TrimSummary s = solveTrim(trimReference(model),
+                            tetheredMeanLoads(model, options.simulation, options.derivative_cycles),
+                            options);
+  if (!options.verify_free_flight) {
+    s.free_flight.status = FreeFlightStatus::kSkipped;
+    s.free_flight.message = "free-flight check not requested";
+  } else if (!s.converged) {
+    s.free_flight.status = FreeFlightStatus::kSkipped;
+    s.free_flight.message = "trim not converged: no free-flight check";
+  } else {
+    s.free_flight = verifyFreeFlight(model, s.solution, options.free_flight);
+  }
+  s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s;
+}
+
+}  // namespace orni
