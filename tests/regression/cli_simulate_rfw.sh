@@ -27,7 +27,8 @@ check "simulate theta 0 exits 0" "$bin" simulate "$root/studies/vehicles/rfw_tun
   --mode tethered --speed 6 --freq 4 --theta 0 --cycles 10 -o "$out0"
 check "simulate theta 20 exits 0" "$bin" simulate "$root/studies/vehicles/rfw_tunnel.toml" \
   --mode tethered --speed 6 --freq 4 --theta 20 --cycles 10 -o "$out20"
-for f in summary.json study.resolved.toml histories.csv cycles.csv loads.png loads.svg loads.gp; do
+for f in summary.json study.resolved.toml histories.csv cycles.csv loads.png loads.svg loads.gp \
+         zmp.csv zmp.png zmp.svg zmp.gp; do
   check "writes $f" test -s "$out0/$f"
 done
 check "no temporary files left" bash -c "! ls '$out0' | grep -q tmp"

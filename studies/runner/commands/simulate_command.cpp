@@ -10,6 +10,7 @@
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/commands/free_flight_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
@@ -149,16 +150,10 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
   writeFileAtomic(out_dir / "histories.csv", historyTable(history).toString());
   writeFileAtomic(out_dir / "cycles.csv", cycleTable(s).toString());
 
-  // Harmonic content of the last cycle (samples_per_cycle points, endpoint excluded).
-  const std::size_t spc = static_cast<std::size_t>(opts.samples_per_cycle);
-  const std::size_t start = history.loads.size() - 1 - spc;
-  const std::size_t stride = sizeof(LoadSample) / sizeof(double);
-  const double* fv = &history.loads[start].FV_N;
-  const double* fh = &history.loads[start].FH_N;
-  const double* mm = &history.loads[start].M_Nm;
-  const Harmonic fv1 = periodHarmonic(fv, spc, 1, stride), fv2 = periodHarmonic(fv, spc, 2, stride);
-  const Harmonic fh1 = periodHarmonic(fh, spc, 1, stride), fh2 = periodHarmonic(fh, spc, 2, stride);
-  const Harmonic m1 = periodHarmonic(mm, spc, 1, stride);
+  // The constrained flight test (paper Fig. 9) of the last whole cycle.
+  const std::optional<ConstrainedFlightTest> cft =
+      lastCycleConstrainedFlightTest(study, model, history, opts.samples_per_cycle);
+  if (cft) writeFileAtomic(out_dir / "zmp.csv", zmpTable(*cft).toString());
 
   summary.set("status", toString(s.status))
       .set("message", s.message)
@@ -183,26 +178,45 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
       .set("structure", model.flexible ? "flexible" : "rigid")
       .set("strips", static_cast<int>(model.strips.size()))
       .set("wing_mass_kg", model.flexible ? model.flexible->modal->wing_mass_kg
-                                          : model.wing_mass.total.mass_kg)
-      .set("last_cycle",
-           JsonObject()
-               .set("FV_amplitude_1f_N", fv1.amplitude)
-               .set("FV_amplitude_2f_N", fv2.amplitude)
-               .set("FH_amplitude_1f_N", fh1.amplitude)
-               .set("FH_amplitude_2f_N", fh2.amplitude)
-               .set("M_amplitude_1f_Nm", m1.amplitude)
-               .set("FV_peak_phase", peakPhase(fv, spc, stride))
-               .set("FH_peak_phase", peakPhase(fh, spc, stride))
-               .set("tip_deflection_amplitude_m", halfRange(&history.loads[start].tip_deflection_m, spc, stride))
-               .set("tip_twist_amplitude_deg",
-                    kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)))
-      .set("integrator", JsonObject()
+                                          : model.wing_mass.total.mass_kg);
+  // Harmonic content of the last cycle (samples_per_cycle points, endpoint excluded); only when
+  // the history holds a whole cycle (a run that failed early may not).
+  const std::size_t spc = static_cast<std::size_t>(opts.samples_per_cycle);
+  if (history.loads.size() >= spc + 1) {
+    const std::size_t start = history.loads.size() - 1 - spc;
+    const std::size_t stride = sizeof(LoadSample) / sizeof(double);
+    const double* fv = &history.loads[start].FV_N;
+    const double* fh = &history.loads[start].FH_N;
+    const double* mm = &history.loads[start].M_Nm;
+    const Harmonic fv1 = periodHarmonic(fv, spc, 1, stride);
+    const Harmonic fv2 = periodHarmonic(fv, spc, 2, stride);
+    const Harmonic fh1 = periodHarmonic(fh, spc, 1, stride);
+    const Harmonic fh2 = periodHarmonic(fh, spc, 2, stride);
+    const Harmonic m1 = periodHarmonic(mm, spc, 1, stride);
+    summary.set(
+        "last_cycle",
+        JsonObject()
+            .set("FV_amplitude_1f_N", fv1.amplitude)
+            .set("FV_amplitude_2f_N", fv2.amplitude)
+            .set("FH_amplitude_1f_N", fh1.amplitude)
+            .set("FH_amplitude_2f_N", fh2.amplitude)
+            .set("M_amplitude_1f_Nm", m1.amplitude)
+            .set("FV_peak_phase", peakPhase(fv, spc, stride))
+            .set("FH_peak_phase", peakPhase(fh, spc, stride))
+            .set("tip_deflection_amplitude_m",
+                 halfRange(&history.loads[start].tip_deflection_m, spc, stride))
+            .set("tip_twist_amplitude_deg",
+                 kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)));
+  }
+  if (cft) summary.set("constrained_flight_test", zmpSummary(*cft));
+  summary.set("integrator", JsonObject()
                              .set("method", model.flexible ? "ARKODE ERKStep ARK4(3)6L[2]SA explicit table" : "ARKODE ERKStep Dormand-Prince 5(4)")
                              .set("rel_tol", opts.rel_tol)
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   drawFigure(out_dir, "loads", loadsFigure(study, s));
+  if (cft) drawFigure(out_dir, "zmp", zmpFigureScript(study, *cft, s.cycles_run));
   std::cout << study.name << ": " << s.BriefReport() << "\n  -> " << out_dir.string() << "\n";
   return 0;
 }

@@ -130,6 +130,31 @@ double fileUnits(double si, double si_per_file_unit) {
   return d;
 }
 
+const std::vector<std::string> kFreeKeys = {
+    "bound_speed_mps", "bound_W_mps",        "bound_theta_deg",   "bound_Q_degps",
+    "bound_h_m",       "transient_fraction", "divergence_ratio", "initial_altitude_m"};
+
+/// [simulate.free]: the bounded-norm bounds and the free-flight run settings, in the ranges of
+/// SimulationOptions::IsValid.
+void readFreeFlight(TableReader& r, FreeFlightOptions& f) {
+  FreeFlightBounds& b = f.bounds;
+  b.U_mps = r.optionalDouble("bound_speed_mps", b.U_mps, Range::positive());
+  b.W_mps = r.optionalDouble("bound_W_mps", b.W_mps, Range::positive());
+  if (auto d = r.maybeDouble("bound_theta_deg", Range::positive()))
+    b.theta_rad = *d * orni::kDegToRad;
+  if (auto d = r.maybeDouble("bound_Q_degps", Range::nonNegative()))
+    b.Q_radps = *d * orni::kDegToRad;
+  b.h_m = r.optionalDouble("bound_h_m", b.h_m, Range::positive());
+  f.transient_fraction =
+      r.optionalDouble("transient_fraction", f.transient_fraction, Range::closed(0.0, 0.9));
+  f.divergence_ratio = r.optionalDouble(
+      "divergence_ratio", f.divergence_ratio,
+      Range{1.0, std::numeric_limits<double>::infinity(), true, false});
+  f.initial_altitude_m =
+      r.optionalDouble("initial_altitude_m", f.initial_altitude_m, Range::positive());
+  r.finish();
+}
+
 void readAeromap(TableReader& am, Study& study) {
   AeromapSettings& a = study.aeromap;
   constexpr int kIntMin = std::numeric_limits<int>::min();
@@ -256,12 +281,18 @@ Study loadStudyFile(const fs::path& study_file) {
   if (std::optional<TableReader> sim = top.optionalTable(
           "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
                        "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol",
-                       "samples_per_cycle"})) {
+                       "samples_per_cycle", "free"})) {
     SimulationOptions& o = study.simulate;
     OperatingPoint& p = study.point;
     constexpr int kIntMin = std::numeric_limits<int>::min();
     constexpr int kIntMax = std::numeric_limits<int>::max();
     o.mode = sim->optionalEnum("mode", o.mode, kModes);
+    if (sim->has("free") && o.mode != FlightMode::kFree)
+      throw InputError::unknownKey(sim->fileOf("free"), sim->lineOf("free"), sim->keyPath("free"),
+                                   "[simulate.free] is only allowed with mode = \"free\", this "
+                                   "[simulate] is mode = \"tethered\"");
+    if (std::optional<TableReader> free = sim->optionalTable("free", kFreeKeys))
+      readFreeFlight(*free, o.free);
     p.speed_mps = sim->optionalDouble("speed_mps", p.speed_mps, Range::positive());
     p.freq_hz = sim->optionalDouble("freq_hz", p.freq_hz, Range::openClosed(0.0, 200.0));
     if (auto d = sim->maybeDouble("theta_deg", Range::open(-90.0, 90.0)))
@@ -369,6 +400,19 @@ std::string resolvedStudyToml(const Study& study) {
     out.number("separation_abs_tol", o.separation_abs_tol);
     out.number("steady_tol", o.steady_tol);
     out.integer("samples_per_cycle", o.samples_per_cycle);
+    if (o.mode == FlightMode::kFree) {
+      const FreeFlightOptions& f = o.free;
+      out.header({"simulate", "free"});
+      out.number("bound_speed_mps", f.bounds.U_mps);
+      out.number("bound_W_mps", f.bounds.W_mps);
+      out.scaled("bound_theta_deg", f.bounds.theta_rad, orni::kDegToRad);
+      out.scaled("bound_Q_degps", f.bounds.Q_radps, orni::kDegToRad,
+                 "0 = automatic: 2 pi f bound_theta");
+      out.number("bound_h_m", f.bounds.h_m);
+      out.number("transient_fraction", f.transient_fraction);
+      out.number("divergence_ratio", f.divergence_ratio);
+      out.number("initial_altitude_m", f.initial_altitude_m);
+    }
   }
   if (study.kind == StudyKind::kAeromap) {
     const AeromapSettings& a = study.aeromap;

@@ -15,7 +15,17 @@
 //            its line and the key as 'override.tail.arm_m'.
 //   [simulate] (optional, kind = "simulate" only) mode "tethered"|"free", speed_mps, freq_hz,
 //            theta_deg, tail_angle_deg (default: the vehicle's operating point), cycles, rel_tol,
-//            abs_tol, steady_tol, samples_per_cycle (default: SimulationOptions).
+//            abs_tol, separation_abs_tol, steady_tol, samples_per_cycle (default:
+//            SimulationOptions).
+//   [simulate.free] (optional, only with mode = "free": rejected for a tethered [simulate], where
+//            it would be silently ignored) the free-flight settings (FreeFlightOptions):
+//              bound_speed_mps, bound_W_mps, bound_theta_deg, bound_h_m  (> 0) and
+//              bound_Q_degps (>= 0; 0 = automatic 2 pi f bound_theta): the bounds R_i of the
+//                bounded-norm criterion (paper Eq. 5) on the deviations of U, W, theta, Q, h;
+//              transient_fraction (share of the cycles before the verdict, [0, 0.9]),
+//              divergence_ratio (> 1; stop as diverged above this scaled norm),
+//              initial_altitude_m (> 0; ground contact at h = 0).
+//            Defaults: FreeFlightOptions (simulation_options.hpp).
 //   [aeromap] (required for kind = "aeromap", rejected otherwise) the grid of an aero map (paper
 //            Fig. 5). Axes speed_mps, freq_hz, theta_deg (required) and tail_angle_deg (optional,
 //            default: the vehicle's operating-point tail angle), each given as
@@ -107,9 +117,10 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
                               std::optional<GridAxis> tail_angle_deg);
 
 /// study.resolved.toml: a complete TOML document with every default filled in: kind, name,
-/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate),
-/// [aeromap] with its axes (specs as "A:B:N", lists as arrays) and options (kind aeromap) or
-/// [trim] with all options (kind trim), and the
+/// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate; in free
+/// mode also [simulate.free] with every free-flight option), [aeromap] with its axes (specs as
+/// "A:B:N", lists as arrays) and options (kind aeromap) or [trim] with all options (kind trim),
+/// and the
 /// resolved vehicle as a [vehicle] table in file units and key names. loadStudyFile reads it back
 /// into the same Study (apart from study_path).
 std::string resolvedStudyToml(const Study& study);

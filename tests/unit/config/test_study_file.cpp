@@ -340,6 +340,16 @@ void expectSameStudy(const Study& a, const Study& b) {
   EXPECT_EQ(a.simulate.abs_tol, b.simulate.abs_tol);
   EXPECT_EQ(a.simulate.steady_tol, b.simulate.steady_tol);
   EXPECT_EQ(a.simulate.samples_per_cycle, b.simulate.samples_per_cycle);
+  EXPECT_EQ(a.simulate.separation_abs_tol, b.simulate.separation_abs_tol);
+  const FreeFlightOptions &fa = a.simulate.free, &fb = b.simulate.free;
+  EXPECT_EQ(fa.bounds.U_mps, fb.bounds.U_mps);
+  EXPECT_EQ(fa.bounds.W_mps, fb.bounds.W_mps);
+  EXPECT_EQ(fa.bounds.theta_rad, fb.bounds.theta_rad);
+  EXPECT_EQ(fa.bounds.Q_radps, fb.bounds.Q_radps);
+  EXPECT_EQ(fa.bounds.h_m, fb.bounds.h_m);
+  EXPECT_EQ(fa.transient_fraction, fb.transient_fraction);
+  EXPECT_EQ(fa.divergence_ratio, fb.divergence_ratio);
+  EXPECT_EQ(fa.initial_altitude_m, fb.initial_altitude_m);
 }
 
 TEST_F(ConfigStudyFile, ResolvedStudyRoundTrips) {
@@ -369,6 +379,120 @@ steady_tol = 3e-5
     const Study back = loadStudyFile(again);
     expectSameStudy(s, back);
     EXPECT_EQ(resolvedStudyToml(back), text);
+  }
+}
+
+TEST_F(ConfigStudyFile, FreeFlightSection) {
+  const fs::path f = writeStudy("free.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + R"("
+[simulate]
+mode = "free"
+cycles = 30
+
+[simulate.free]
+bound_speed_mps = 1.5
+bound_W_mps = 2.5
+bound_theta_deg = 35
+bound_Q_degps = 900
+bound_h_m = 0.4
+transient_fraction = 0.25
+divergence_ratio = 8
+initial_altitude_m = 50
+)");
+  const Study s = loadStudyFile(f);
+  const FreeFlightOptions& o = s.simulate.free;
+  EXPECT_EQ(s.simulate.mode, FlightMode::kFree);
+  EXPECT_EQ(o.bounds.U_mps, 1.5);
+  EXPECT_EQ(o.bounds.W_mps, 2.5);
+  EXPECT_EQ(o.bounds.theta_rad, 35 * kDegToRad);
+  EXPECT_EQ(o.bounds.Q_radps, 900 * kDegToRad);
+  EXPECT_EQ(o.bounds.h_m, 0.4);
+  EXPECT_EQ(o.transient_fraction, 0.25);
+  EXPECT_EQ(o.divergence_ratio, 8.0);
+  EXPECT_EQ(o.initial_altitude_m, 50.0);
+
+  // Written back in full, reloaded to the same options, a fixed point.
+  const std::string text = resolvedStudyToml(s);
+  for (const char* expected :
+       {"[simulate.free]\n", "bound_speed_mps = 1.5\n", "bound_W_mps = 2.5\n",
+        "bound_theta_deg = 35.0\n", "bound_Q_degps = 900.0", "bound_h_m = 0.4\n",
+        "transient_fraction = 0.25\n", "divergence_ratio = 8.0\n",
+        "initial_altitude_m = 50.0\n"})
+    EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
+  const Study back = loadStudyFile(writeStudy("study.resolved.toml", text));
+  expectSameStudy(s, back);
+  EXPECT_EQ(resolvedStudyToml(back), text);
+
+  // Defaults: a free study without [simulate.free] still writes every option.
+  const Study d = loadStudyFile(writeStudy(
+      "d.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n[simulate]\nmode = \"free\"\n"));
+  const FreeFlightOptions defaults;
+  EXPECT_EQ(d.simulate.free.bounds.theta_rad, defaults.bounds.theta_rad);
+  const std::string dtext = resolvedStudyToml(d);
+  EXPECT_NE(dtext.find("bound_theta_deg = 40.0\n"), std::string::npos) << dtext;
+  EXPECT_NE(dtext.find("bound_Q_degps = 0.0"), std::string::npos) << dtext;
+  const Study dback = loadStudyFile(writeStudy("d.resolved.toml", dtext));
+  expectSameStudy(d, dback);
+  // A tethered study writes no [simulate.free] (it would be rejected on reading).
+  EXPECT_EQ(resolvedStudyToml(loadStudyFile(repo() / "studies" / "examples" / "rfw_theta20.toml"))
+                .find("[simulate.free]"),
+            std::string::npos);
+}
+
+TEST_F(ConfigStudyFile, FreeFlightSectionRules) {
+  const std::string head = "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n";
+  struct Case {
+    const char* body;
+    const char* key;
+    int line;
+    const char* says;
+  };
+  const Case cases[] = {
+      {"[simulate]\ncycles = 3\n[simulate.free]\nbound_h_m = 1\n", "simulate.free", 5,
+       "only allowed with mode = \"free\""},
+      {"[simulate.free]\nbound_h_m = 1\n", "simulate.free", 3, "only allowed with mode"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\nbound_speed_mps = 0\n",
+       "simulate.free.bound_speed_mps", 6, "expected a number > 0, got 0"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\nbound_Q_degps = -1\n",
+       "simulate.free.bound_Q_degps", 6, "expected a number >= 0"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\ntransient_fraction = 0.95\n",
+       "simulate.free.transient_fraction", 6, "expected a number in [0, 0.9]"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\ndivergence_ratio = 1\n",
+       "simulate.free.divergence_ratio", 6, "expected a number > 1, got 1"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\ninitial_altitude_m = -5.0\n",
+       "simulate.free.initial_altitude_m", 6, "expected a number > 0, got -5"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\nbound_theta_deg = \"40\"\n",
+       "simulate.free.bound_theta_deg", 6, "got a string"},
+      {"[simulate]\nmode = \"free\"\n[simulate.free]\nbound_U_mps = 2\n",
+       "simulate.free.bound_U_mps", 6, "unknown key 'simulate.free.bound_U_mps'"},
+      {"[simulate]\nmode = \"free\"\nfree = 3\n", "simulate.free", 5, "got an integer 3"},
+  };
+  int n = 0;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.body);
+    const fs::path f = writeStudy("free" + std::to_string(n++) + ".toml", head + c.body);
+    const InputError e = errorOfStudy(f);
+    EXPECT_EQ(e.key(), c.key);
+    EXPECT_EQ(e.line(), c.line);
+    EXPECT_NE(std::string(e.what()).find(c.says), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(ConfigStudyFile, LoadsPaperFig6To9Studies) {
+  const Study free = loadStudyFile(repo() / "studies" / "paper" / "fig6_8_free_flight.toml");
+  const Study cft =
+      loadStudyFile(repo() / "studies" / "paper" / "fig9_constrained_flight_test.toml");
+  EXPECT_EQ(free.simulate.mode, FlightMode::kFree);
+  EXPECT_EQ(free.simulate.cycles, 60);
+  EXPECT_EQ(cft.simulate.mode, FlightMode::kTethered);
+  EXPECT_GE(cft.simulate.cycles, 10);
+  for (const Study* s : {&free, &cft}) {
+    // Paper Table 3: the trimmed flight.
+    EXPECT_EQ(s->kind, StudyKind::kSimulate);
+    EXPECT_EQ(s->vehicle.name, "efw_magpie");
+    EXPECT_DOUBLE_EQ(s->point.theta_rad, 9.2 * kDegToRad);
+    EXPECT_DOUBLE_EQ(s->point.freq_hz, 12.0);
+    EXPECT_DOUBLE_EQ(s->point.speed_mps, 10.8);
+    EXPECT_DOUBLE_EQ(s->point.tail_angle_rad, 11.85 * kDegToRad);
   }
 }
 
