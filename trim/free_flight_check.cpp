@@ -1,6 +1,7 @@
 #include "trim/free_flight_check.hpp"
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/free_flight.hpp"
 
 namespace orni {
 
@@ -15,15 +16,32 @@ const char* toString(FreeFlightStatus s) {
   return "failed";
 }
 
-FreeFlightVerification verifyFreeFlight(const FlightCoreModel& /*model*/,
-                                        const OperatingPoint& /*trim*/,
-                                        const FreeFlightCheckOptions& /*options*/) {
-  // Issue 4 (free flight) replaces this body: fly Eq. (1)-(2) from the trim point for
-  // options.cycles cycles and evaluate the bounded-norm criterion of Eq. (5).
+FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const OperatingPoint& trim,
+                                        const FreeFlightCheckOptions& options) {
   FreeFlightVerification v;
-  v.status = FreeFlightStatus::kNotAvailable;
-  v.message = "free-flight mode not yet implemented (issue 4); the trim is verified in tethered "
-              "mode only";
+  SimulationOptions o;
+  o.mode = FlightMode::kFree;
+  o.cycles = options.cycles;
+  o.free = options.free;
+  o.record_history = false;
+  const FreeFlightSummary s = simulateFree(model, trim, o, nullptr);
+  v.message = s.message;
+  if (s.status == SimulationStatus::kFailed) {
+    v.status = FreeFlightStatus::kFailed;
+    return v;
+  }
+  if (!s.analysed) {  // diverged
+    v.status = FreeFlightStatus::kUnbounded;
+    v.bounded = false;
+    return v;
+  }
+  v.bounded = s.verdict.bounded;
+  v.status = v.bounded ? FreeFlightStatus::kBounded : FreeFlightStatus::kUnbounded;
+  v.norm_ratio_max = s.verdict.norm_ratio_max;
+  v.theta_min_rad = s.limit_cycle.theta_min_rad;
+  v.theta_max_rad = s.limit_cycle.theta_max_rad;
+  v.altitude_p2p_m = s.limit_cycle.altitude_p2p_fast_m;
+  v.dominant_freq_hz = s.limit_cycle.dominant_freq_theta_hz;
   return v;
 }
 

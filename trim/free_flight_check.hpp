@@ -2,14 +2,15 @@
 // (architecture.md 2: deviations of [U W theta Q h] scaled by their bounds R_i stay <= 1 over the
 // horizon, no secular drift).
 //
-// Free flight (paper Eq. 1-2) is not built yet (issue 4). Until it is, verifyFreeFlight() reports
-// status kNotAvailable and leaves the measures unset (NaN); solveTrim() calls it on a converged
-// trim, so the free-flight issue only has to fill in this function.
+// verifyFreeFlight() flies the vehicle freely (core/dynamics/free_flight.hpp) from the trim point
+// and reports the bounded-norm verdict and the limit-cycle metrics; solveTrim() calls it on a
+// converged trim.
 #pragma once
 
 #include <limits>
 #include <string>
 
+#include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 
 namespace orni {
@@ -29,7 +30,7 @@ const char* toString(FreeFlightStatus s);
 /// Options of the free-flight check (defaults per architecture.md 2).
 struct FreeFlightCheckOptions {
   int cycles = 60;                    ///< flapping cycles to fly, [1, 100000]
-  double bound_theta_rad = 0.6981317;  ///< R_theta = 40 deg (paper section 3.2), > 0
+  FreeFlightOptions free;             ///< bounds R_i (R_theta = 40 deg), transient, divergence
 };
 
 /// Result: the keys of a free-mode `simulate` summary (architecture.md 4).
@@ -44,8 +45,9 @@ struct FreeFlightVerification {
   double dominant_freq_hz = std::numeric_limits<double>::quiet_NaN();
 };
 
-/// Fly the vehicle freely from the trim point `trim` and check paper Eq. (5). Not yet available:
-/// returns kNotAvailable with a message.
+/// Fly the vehicle freely from the trim point `trim` (options.cycles cycles, default tolerances)
+/// and check paper Eq. (5): kBounded, kUnbounded (not bounded or diverged, with the reason) or
+/// kFailed (the integration itself failed).
 FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const OperatingPoint& trim,
                                         const FreeFlightCheckOptions& options);
 
