@@ -84,6 +84,8 @@ bool TrimOptions::IsValid(std::string* why) const {
     return fail("stall_decrease must be in (0, 1)");
   if (derivative_cycles < 1 || derivative_cycles > 1000)
     return fail("derivative_cycles must be in [1, 1000]");
+  if (refine_cycles < 6 || refine_cycles > 10000)
+    return fail("refine_cycles must be in [6, 10000]");
   std::string sim_why;
   if (!simulation.IsValid(&sim_why)) return fail("simulation: " + sim_why);
   return true;

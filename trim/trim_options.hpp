@@ -48,6 +48,12 @@ struct TrimOptions {
   SimulationOptions simulation = defaultSimulation();
   int derivative_cycles = 3;    ///< cycles of each finite-difference run, [1, 1000]
 
+  /// Refine a converged Eq. (4) trim in free flight (free_flight_trim.hpp): the final trim is the
+  /// tail angle of level settled free flight with its settled theta_mean and airspeed, as the
+  /// paper refined its trim point (section 3.3).
+  bool refine_in_free_flight = true;
+  int refine_cycles = 120;         ///< cycles of each settled free flight (last third averaged),
+                                   ///< [6, 10000]
   bool verify_free_flight = true;  ///< run verifyFreeFlight() on a converged trim
   FreeFlightCheckOptions free_flight;
 

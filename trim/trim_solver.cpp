@@ -1,5 +1,7 @@
 #include "trim/trim_solver.hpp"
 
+#include "trim/free_flight_trim.hpp"
+
 #include <ceres/ceres.h>
 
 #include <algorithm>
@@ -292,9 +294,32 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
   const auto t0 = std::chrono::steady_clock::now();
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("trim options: " + why);
-  TrimSummary s = solveTrim(trimReference(model),
+  const TrimReference reference = trimReference(model);
+  TrimSummary s = solveTrim(reference,
                             tetheredMeanLoads(model, options.simulation, options.derivative_cycles),
                             options);
+  if (options.refine_in_free_flight && s.converged) {
+    // Stage 2: level settled free flight from the Eq. (4) trim (free_flight_trim.hpp).
+    SimulationOptions sim;  // default tolerances for the free flights
+    FreeFlightTrimOptions fo;
+    fo.settled.cycles = options.refine_cycles;
+    fo.settled.window_cycles = std::max(1, options.refine_cycles / 3);
+    const FreeFlightTrim ft = solveFreeFlightTrim(model, s.solution, sim, fo);
+    s.refined_in_free_flight = true;
+    s.tethered_solution = s.solution;
+    s.tethered_residual = s.residual;
+    s.free_flight_trim_message = ft.message;
+    s.free_flight_trim_evaluations = ft.evaluations;
+    s.free_flight_climb_angle_rad = ft.settled.climb_angle_rad;
+    if (ft.converged) {
+      s.solution = ft.solution;
+      s.message = "Eq. (4) " + s.message + "; free-flight refinement: " + ft.message;
+    } else {
+      s.status = TrimStatus::kNotConverged;
+      s.converged = false;
+      s.message = "Eq. (4) " + s.message + "; free-flight refinement failed: " + ft.message;
+    }
+  }
   if (!options.verify_free_flight) {
     s.free_flight.status = FreeFlightStatus::kSkipped;
     s.free_flight.message = "free-flight check not requested";

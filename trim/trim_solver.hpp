@@ -91,6 +91,15 @@ struct TrimSummary {
   std::vector<TrimEvaluationRecord> evaluation_log;
   std::vector<TrimIterationRecord> iteration_log;
   FreeFlightVerification free_flight;
+  /// Two stages (TrimOptions::refine_in_free_flight, free_flight_trim.hpp): the Eq. (4) trim of
+  /// the tethered means (stage 1; `residual` is its residual) and the tail angle of level settled
+  /// free flight with the settled theta_mean and airspeed (stage 2; `solution`).
+  bool refined_in_free_flight = false;
+  OperatingPoint tethered_solution;     ///< stage 1 solution
+  TrimResidual tethered_residual;       ///< stage 1 residual (tethered means)
+  std::string free_flight_trim_message;
+  int free_flight_trim_evaluations = 0; ///< settled free flights flown
+  double free_flight_climb_angle_rad = 0.0;  ///< settled climb angle at the solution
 
   /// One line: status, solution, residual, iterations, evaluations, time.
   std::string BriefReport() const;

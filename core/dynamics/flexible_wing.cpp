@@ -140,6 +140,7 @@ std::string structuralKey(const VehicleModel& v) {
                    v.air.density_kgpm3})
     appendDouble(&k, d);
   appendBytes(&k, &w.strip_count, sizeof w.strip_count);
+  appendDouble(&k, w.member_diameter_scale);
   appendBytes(&k, &w.fe.mode_count, sizeof w.fe.mode_count);
   k.push_back(w.fe.p3_cross_axis_normal ? 'n' : 's');
   k += w.skin.material + '\0';

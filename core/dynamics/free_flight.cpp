@@ -46,6 +46,71 @@ double scaledNorm(const BodyState& s, const BodyState& ref, const FreeFlightBoun
   return std::sqrt(sq);
 }
 
+// Release in the periodic state instead of from rest (FreeFlightOptions::periodic_start_cycles):
+// the wing's modes and aerodynamic states from a tethered run at the same point (end of a cycle,
+// flap phase 0), and the body's periodic oscillation to first order: the zero-mean parts of the
+// tethered loads over that cycle integrated once (U, W, Q) and twice (theta), with the vehicle's
+// mass and pitch inertia. Without it the release at Q = 0 starts a pitch and phugoid transient
+// (a zero-mean moment integrated from one phase has a non-zero mean rate).
+void startFromPeriodicState(const FlightCoreModel& model, const OperatingPoint& point,
+                            const SimulationOptions& options, const FreeFlightSystem& sys,
+                            FreeFlightSummary* summary, double* y0) {
+  SimulationOptions t = options;
+  t.mode = FlightMode::kTethered;
+  t.cycles = options.free.periodic_start_cycles;
+  t.stop_when_steady = true;
+  t.record_history = true;
+  TimeHistory hist;
+  const SimulationSummary ts = simulateTethered(model, point, t, &hist);
+  if (ts.status != SimulationStatus::kOk && ts.status != SimulationStatus::kNotConverged) return;
+  const int M = sys.modeCount();
+  const std::vector<double>& w = ts.final_wing_state;
+  if (ts.final_mode_count != M ||
+      static_cast<int>(w.size()) != 2 * M + (sys.powerOffset() - sys.aeroOffset()))
+    throw std::logic_error("free flight: tethered periodic state has another layout");
+  std::copy(w.begin(), w.end(), y0 + FreeFlightSystem::kBody);
+
+  // Body oscillation over the last cycle (uniform samples, endpoint = the release point).
+  const std::size_t spc = static_cast<std::size_t>(t.samples_per_cycle);
+  if (hist.loads.size() < spc + 1) return;
+  const std::size_t first = hist.loads.size() - 1 - spc;
+  const double dt = 1.0 / (point.freq_hz * static_cast<double>(spc));
+  const double m = model.vehicle.body.mass_kg, I = model.vehicle.body.pitch_inertia_kgm2;
+  const BodyMotion bm = tetheredBodyMotion(point.speed_mps, point.theta_rad);
+  const Vec3 e_v = bm.v_P1_B.normalized();
+  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+  // Accelerations a_k (k = 0..spc) with their cycle mean removed, integrated by trapezoids, the
+  // result made zero-mean: the periodic velocity; once more: the periodic displacement.
+  auto periodic = [&](const std::vector<double>& a) {
+    std::vector<double> v(spc + 1, 0.0);
+    double mean_a = 0.0;
+    for (std::size_t k = 0; k < spc; ++k) mean_a += a[k];
+    mean_a /= static_cast<double>(spc);
+    for (std::size_t k = 1; k <= spc; ++k)
+      v[k] = v[k - 1] + 0.5 * dt * ((a[k - 1] - mean_a) + (a[k] - mean_a));
+    double mean_v = 0.0;
+    for (std::size_t k = 0; k < spc; ++k) mean_v += v[k];
+    mean_v /= static_cast<double>(spc);
+    for (double& x : v) x -= mean_v;
+    return v;
+  };
+  std::vector<double> ax(spc + 1), az(spc + 1), aq(spc + 1);
+  for (std::size_t k = 0; k <= spc; ++k) {
+    const LoadSample& l = hist.loads[first + k];
+    const Vec3 F = l.FH_N * e_v + l.FV_N * e_L;
+    ax[k] = F.x() / m;
+    az[k] = F.z() / m;
+    aq[k] = l.M_Nm / I;
+  }
+  const std::vector<double> U = periodic(ax), W = periodic(az), Q = periodic(aq);
+  const std::vector<double> theta = periodic(Q);
+  BodyState& b = summary->initial;
+  y0[2] = b.theta_rad + theta[spc];
+  y0[3] = b.U_mps + U[spc];
+  y0[4] = b.W_mps + W[spc];
+  y0[5] = Q[spc];
+}
+
 }  // namespace
 
 FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
@@ -67,6 +132,8 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
   sys.initialState(0.0, summary.initial, y0.data());
+  if (fo.periodic_start_cycles > 0) startFromPeriodicState(model, point, options, sys, &summary,
+                                                          y0.data());
   const double period_s = 1.0 / point.freq_hz;
   IntegratorOptions iopt;
   iopt.rel_tol = options.rel_tol;

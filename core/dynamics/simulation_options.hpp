@@ -24,6 +24,11 @@ struct FreeFlightOptions {
   double transient_fraction = 0.2;  ///< share of the cycles skipped before the verdict, [0, 0.9]
   double divergence_ratio = 5.0;    ///< stop as diverged when the scaled norm exceeds this, > 1
   double initial_altitude_m = 10.0; ///< start altitude above ground (ground contact at h = 0), > 0
+  /// Start the wing (modes and aerodynamic states) from the periodic state of a tethered run at
+  /// the same point instead of from rest: the release is then the paper's "trimmed flight"
+  /// without the start-up transient of the flapping wing. [1, 1000] tethered cycles at most; 0 =
+  /// start from rest.
+  int periodic_start_cycles = 40;
 };
 
 struct SimulationOptions {
@@ -66,6 +71,8 @@ struct SimulationOptions {
       return fail("transient_fraction must be in [0, 0.9]");
     if (!(free.divergence_ratio > 1)) return fail("divergence_ratio must be > 1");
     if (!(free.initial_altitude_m > 0)) return fail("initial_altitude_m must be > 0");
+    if (free.periodic_start_cycles < 0 || free.periodic_start_cycles > 1000)
+      return fail("periodic_start_cycles must be in [0, 1000]");
     return true;
   }
 };

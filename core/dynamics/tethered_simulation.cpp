@@ -194,6 +194,7 @@ SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const Ope
     }
   }
   summary.mean = summary.per_cycle.back();
+  summary.final_wing_state.assign(integrator.state(), integrator.state() + n_quad);
   summary.steps = integrator.steps();
   summary.rhs_evaluations = integrator.rhsEvaluations();
   summary.step_attempts = integrator.stepAttempts();
@@ -228,7 +229,9 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
   const ControlInput control{point.freq_hz, point.tail_angle_rad};
   if (model.flexible) {
     FlexibleTetheredSystem sys(model, *model.flexible, body, control);
-    return runCycles(sys, model, point, options, history);
+    SimulationSummary s = runCycles(sys, model, point, options, history);
+    s.final_mode_count = model.flexible->mode_count;
+    return s;
   }
   RigidTetheredSystem sys(model, body, control);
   return runCycles(sys, model, point, options, history);

@@ -39,6 +39,10 @@ struct SimulationSummary {
   double last_state_change = 0;  ///< max change of the aero states over the last cycle
   CycleMeans mean;               ///< means over the last simulated cycle
   std::vector<CycleMeans> per_cycle;
+  /// State at the end of the last cycle (flap phase 0): flexible wing [q, q', aero states],
+  /// rigid wing [aero states] (quadratures dropped). Free flight starts from it.
+  std::vector<double> final_wing_state;
+  int final_mode_count = 0;      ///< modes in final_wing_state
   long steps = 0;
   long rhs_evaluations = 0;
   long step_attempts = 0;

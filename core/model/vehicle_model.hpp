@@ -70,7 +70,13 @@ struct WingModel {
   double p3_aft_of_le_m = 0.0;  ///< P3 (universal joint) on the root chord, [0, c0]
   WingSkin skin;
   std::vector<WingMember> members;
+  /// Factor on every member diameter (spar details the paper leaves open: a calibration value,
+  /// see studies/paper/calibrate_magpie.toml), > 0; 1 = the diameters as listed.
+  double member_diameter_scale = 1.0;
   WingFeSettings fe;
+
+  /// The diameter the physics uses for member m: member_diameter_scale * m.diameter_m.
+  double memberDiameter(const WingMember& m) const { return member_diameter_scale * m.diameter_m; }
 };
 
 enum class AeroModelKind { kMstTd, kDeLaurier1993 };

@@ -78,7 +78,8 @@ WingMassBreakdown computeWingInertia(const VehicleModel& vehicle) {
     const Material& mat = requireMaterial(vehicle, m.material);
     const Vec3 a(m.start_x_W_m, m.start_y_W_m, 0.0);
     const Vec3 b(m.end_x_W_m, m.end_y_W_m, 0.0);
-    const double area_m2 = 0.25 * kPi * m.diameter_m * m.diameter_m;
+    const double d = vehicle.wing.memberDiameter(m);
+    const double area_m2 = 0.25 * kPi * d * d;
     const double mass = mat.density_kgpm3 * area_m2 * (b - a).norm();
     out.total += rodInertia(a, b, mass);
     out.members_kg += mass;

@@ -259,7 +259,7 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
         << real(g) << "\n"
         << "*DENSITY\n"
         << real(mat.density_kgpm3 * kTpmm3PerKgpm3) << "\n";
-    const double d_mm = m.diameter_m * kMmPerM;
+    const double d_mm = vehicle.wing.memberDiameter(m) * kMmPerM;
     // Solid circular rod: both "thicknesses" are the diameter; local 1-direction = the wing
     // normal z_W (never parallel to an in-plane member), the same on every element of a member.
     out << "*BEAM SECTION, ELSET=" << name << ", MATERIAL=M" << name << ", SECTION=CIRC, "

@@ -27,7 +27,7 @@ std::vector<BeamProperties> memberProperties(const VehicleModel& vehicle) {
   props.reserve(vehicle.wing.members.size());
   for (const WingMember& member : vehicle.wing.members) {
     const Material& mat = requireMaterial(vehicle, member.material, "member");
-    props.push_back(makeBeamProperties(solidRodSection(member.diameter_m), mat.youngs_modulus_pa,
+    props.push_back(makeBeamProperties(solidRodSection(vehicle.wing.memberDiameter(member)), mat.youngs_modulus_pa,
                                        mat.poisson_ratio, mat.density_kgpm3));
   }
   return props;

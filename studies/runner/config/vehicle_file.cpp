@@ -99,7 +99,8 @@ std::string requireMaterial(TableReader& r, const std::vector<Material>& materia
 void readWing(TableReader& top, VehicleModel& v) {
   TableReader w =
       top.requiredTable("wing", {"planform", "semispan_m", "root_chord_m", "incidence_deg",
-                                 "strips", "structure", "p3_aft_of_le_m", "skin", "members", "fe"});
+                                 "strips", "structure", "p3_aft_of_le_m", "skin", "members",
+                                 "member_diameter_scale", "fe"});
   WingModel& wing = v.wing;
   wing.planform = w.requiredEnum("planform", kPlanforms);
   wing.semispan_m = w.requiredDouble("semispan_m", Range::positive());
@@ -109,6 +110,8 @@ void readWing(TableReader& top, VehicleModel& v) {
   wing.structure = w.optionalEnum("structure", StructureLevel::kRigid, kStructures);
   wing.p3_aft_of_le_m = w.optionalDouble("p3_aft_of_le_m", 0.5 * wing.root_chord_m,
                                          Range::closed(0.0, wing.root_chord_m));
+  wing.member_diameter_scale =
+      w.optionalDouble("member_diameter_scale", 1.0, Range::open(0.0, 100.0));
 
   TableReader skin = w.requiredTable("skin", {"material", "thickness_m"});
   wing.skin.material = requireMaterial(skin, v.materials);
@@ -329,6 +332,7 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
   out.integer("strips", w.strip_count);
   out.string("structure", nameOf(kStructures, w.structure));
   out.number("p3_aft_of_le_m", w.p3_aft_of_le_m);
+  out.number("member_diameter_scale", w.member_diameter_scale);
   out.header(path({"wing", "skin"}));
   out.string("material", w.skin.material);
   out.number("thickness_m", w.skin.thickness_m);

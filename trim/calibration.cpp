@@ -1,0 +1,191 @@
+#include "trim/calibration.hpp"
+
+#include <ceres/ceres.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "core/dynamics/flight_core.hpp"
+
+namespace orni {
+
+namespace {
+struct Entry {
+  CalibrationParameter p;
+  const char* key;
+};
+constexpr Entry kEntries[] = {
+    {CalibrationParameter::kMemberDiameterScale, "wing.member_diameter_scale"},
+    {CalibrationParameter::kBodyDragArea, "body.drag_area_m2"},
+    {CalibrationParameter::kHingeX, "kinematics.hinge_x_m"},
+    {CalibrationParameter::kHingeZ, "kinematics.hinge_z_m"},
+    {CalibrationParameter::kTailArm, "tail.arm_m"},
+    {CalibrationParameter::kPitchInertia, "body.pitch_inertia_kgm2"},
+};
+
+struct CalibrationContext {
+  const VehicleModel* base;
+  const CalibrationOptions* options;
+  std::vector<CalibrationEvaluation>* log;
+};
+
+// Settled free flight of the vehicle with the given values at the target point.
+bool evaluate(const CalibrationContext& c, const double* x, double* r) {
+  VehicleModel v = *c.base;
+  const CalibrationOptions& o = *c.options;
+  CalibrationEvaluation e;
+  for (std::size_t i = 0; i < o.variables.size(); ++i) {
+    setValue(&v, o.variables[i].parameter, x[i]);
+    e.values.push_back(x[i]);
+  }
+  try {
+    const FlightCoreModel model(v);
+    SimulationOptions sim;
+    e.settled = settledFreeFlight(model, o.target, sim, o.settled);
+  } catch (const std::exception& ex) {
+    e.settled.ok = false;
+    e.settled.message = ex.what();
+  }
+  e.residual[0] = (e.settled.theta_mean_rad - o.target.theta_rad) * kRadToDeg;
+  e.residual[1] = (e.settled.airspeed_mps - o.target.speed_mps) / 0.1;
+  e.residual[2] = e.settled.climb_angle_rad * kRadToDeg;
+  c.log->push_back(e);
+  if (!e.settled.ok) return false;
+  for (std::size_t i = 0; i < 3; ++i) r[i] = e.residual[i];
+  return true;
+}
+
+struct Functor {
+  const CalibrationContext* c;
+  bool operator()(const double* const x, double* r) const { return evaluate(*c, x, r); }
+};
+}  // namespace
+
+const char* keyOf(CalibrationParameter p) {
+  for (const Entry& e : kEntries)
+    if (e.p == p) return e.key;
+  return "?";
+}
+
+bool parseCalibrationParameter(const std::string& key, CalibrationParameter* p) {
+  for (const Entry& e : kEntries)
+    if (key == e.key) {
+      *p = e.p;
+      return true;
+    }
+  return false;
+}
+
+double valueOf(const VehicleModel& v, CalibrationParameter p) {
+  switch (p) {
+    case CalibrationParameter::kMemberDiameterScale: return v.wing.member_diameter_scale;
+    case CalibrationParameter::kBodyDragArea: return v.body.drag_area_m2;
+    case CalibrationParameter::kHingeX: return v.flapping.hinge_x_B_m;
+    case CalibrationParameter::kHingeZ: return v.flapping.hinge_z_B_m;
+    case CalibrationParameter::kTailArm: return v.tail.arm_m;
+    case CalibrationParameter::kPitchInertia: return v.body.pitch_inertia_kgm2;
+  }
+  return 0.0;
+}
+
+void setValue(VehicleModel* v, CalibrationParameter p, double value) {
+  switch (p) {
+    case CalibrationParameter::kMemberDiameterScale: v->wing.member_diameter_scale = value; break;
+    case CalibrationParameter::kBodyDragArea: v->body.drag_area_m2 = value; break;
+    case CalibrationParameter::kHingeX: v->flapping.hinge_x_B_m = value; break;
+    case CalibrationParameter::kHingeZ: v->flapping.hinge_z_B_m = value; break;
+    case CalibrationParameter::kTailArm: v->tail.arm_m = value; break;
+    case CalibrationParameter::kPitchInertia: v->body.pitch_inertia_kgm2 = value; break;
+  }
+}
+
+bool CalibrationOptions::IsValid(std::string* why) const {
+  auto fail = [why](const std::string& m) {
+    if (why) *why = m;
+    return false;
+  };
+  if (variables.empty() || variables.size() > 3) return fail("1 to 3 calibration variables");
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    const CalibrationVariable& v = variables[i];
+    if (!(v.lower < v.upper) || !(v.initial >= v.lower && v.initial <= v.upper))
+      return fail(std::string("variable ") + keyOf(v.parameter) +
+                  ": needs lower < upper and lower <= initial <= upper");
+    for (std::size_t j = 0; j < i; ++j)
+      if (variables[j].parameter == v.parameter)
+        return fail(std::string("variable ") + keyOf(v.parameter) + " listed twice");
+  }
+  if (!(target.speed_mps > 0 && target.freq_hz > 0)) return fail("target speed and frequency > 0");
+  if (settled.cycles < 6 || settled.window_cycles < 1 || settled.window_cycles >= settled.cycles)
+    return fail("settled cycles >= 6 and 1 <= window < cycles");
+  if (!(tolerance > 0)) return fail("tolerance > 0");
+  if (max_iterations < 1 || max_iterations > 200) return fail("max_iterations in [1, 200]");
+  return true;
+}
+
+CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions& options) {
+  std::string why;
+  if (!options.IsValid(&why)) throw std::invalid_argument("calibration options: " + why);
+  const auto t0 = std::chrono::steady_clock::now();
+  CalibrationSummary s;
+  const int n = static_cast<int>(options.variables.size());
+  std::vector<double> x;
+  for (const CalibrationVariable& v : options.variables) x.push_back(v.initial);
+  CalibrationContext ctx{&base, &options, &s.log};
+  Functor f{&ctx};
+  ceres::NumericDiffOptions nd;
+  nd.relative_step_size = 1e-3;
+  ceres::CostFunction* cost = nullptr;
+  if (n == 1)
+    cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 1>(
+        new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
+  else if (n == 2)
+    cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 2>(
+        new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
+  else
+    cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 3>(
+        new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
+  ceres::Problem problem;
+  problem.AddResidualBlock(cost, nullptr, x.data());
+  for (int i = 0; i < n; ++i) {
+    problem.SetParameterLowerBound(x.data(), i, options.variables[static_cast<std::size_t>(i)].lower);
+    problem.SetParameterUpperBound(x.data(), i, options.variables[static_cast<std::size_t>(i)].upper);
+  }
+  ceres::Solver::Options so;
+  so.linear_solver_type = ceres::DENSE_QR;
+  so.max_num_iterations = options.max_iterations;
+  so.function_tolerance = 1e-12;
+  so.gradient_tolerance = 1e-16;
+  so.parameter_tolerance = 1e-10;
+  so.logging_type = ceres::SILENT;
+  so.num_threads = 1;
+  ceres::Solver::Summary cs;
+  ceres::Solve(so, &problem, &cs);
+  s.iterations = static_cast<int>(cs.iterations.size()) - 1;
+  s.ceres_report = cs.BriefReport();
+  s.evaluations = static_cast<int>(s.log.size());
+  s.values = x;
+  // The settled flight at the solution (re-evaluated so the summary is consistent).
+  double r[3] = {0, 0, 0};
+  const bool ok = evaluate(ctx, x.data(), r);
+  s.settled = s.log.back().settled;
+  s.evaluations = static_cast<int>(s.log.size());
+  s.theta_error_deg = s.log.back().residual[0];
+  s.speed_error_mps = s.log.back().residual[1] * 0.1;
+  s.climb_angle_deg = s.log.back().residual[2];
+  s.converged = ok && std::abs(s.theta_error_deg) <= options.tolerance &&
+                std::abs(s.speed_error_mps) <= options.tolerance &&
+                std::abs(s.climb_angle_deg) <= options.tolerance;
+  char buf[400];
+  std::snprintf(buf, sizeof buf,
+                "%s after %d iterations, %d settled free flights: theta error %.4f deg, speed "
+                "error %.4f m/s, climb angle %.4f deg (tolerance %.3g); Ceres: %s",
+                s.converged ? "calibrated" : "not calibrated", s.iterations, s.evaluations,
+                s.theta_error_deg, s.speed_error_mps, s.climb_angle_deg, options.tolerance,
+                cs.message.c_str());
+  s.message = buf;
+  s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return s;
+}
+
+}  // namespace orni
