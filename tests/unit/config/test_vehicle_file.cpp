@@ -108,8 +108,9 @@ TEST(ConfigVehicleFile, LoadsEfwMagpieInSi) {
   EXPECT_DOUBLE_EQ(v.wing.root_chord_m, 0.104);
   EXPECT_DOUBLE_EQ(v.wing.incidence_rad, 0.0);
   EXPECT_EQ(v.wing.strip_count, 27);
-  EXPECT_EQ(v.wing.structure, StructureLevel::kRigid);
+  EXPECT_EQ(v.wing.structure, StructureLevel::kFlexible);
   EXPECT_DOUBLE_EQ(v.wing.p3_aft_of_le_m, 0.052);
+  EXPECT_DOUBLE_EQ(v.wing.member_diameter_scale, 3.11465);  // calibrate_magpie.toml
   EXPECT_EQ(v.wing.skin.material, "SKIN");
   EXPECT_DOUBLE_EQ(v.wing.skin.thickness_m, 4e-5);
 
@@ -157,11 +158,12 @@ TEST(ConfigVehicleFile, LoadsEfwMagpieInSi) {
 
   EXPECT_DOUBLE_EQ(v.flapping.amplitude_rad, 33.06 * kPi / 180.0);
   EXPECT_NEAR(v.flapping.amplitude_rad, 0.5770, 1e-4);
-  EXPECT_DOUBLE_EQ(v.flapping.hinge_x_B_m, 0.015);
+  EXPECT_DOUBLE_EQ(v.flapping.hinge_x_B_m, 0.02183);  // calibrate_magpie.toml
   EXPECT_DOUBLE_EQ(v.flapping.hinge_z_B_m, -0.015);
 
   EXPECT_TRUE(v.body.present);
   EXPECT_DOUBLE_EQ(v.body.mass_kg, 0.118);
+  EXPECT_DOUBLE_EQ(v.body.drag_area_m2, 0.006227);  // calibrate_magpie.toml
   EXPECT_DOUBLE_EQ(v.body.pitch_inertia_kgm2, 3.0e-4);
 
   EXPECT_TRUE(v.tail.present);

@@ -178,6 +178,7 @@ TEST(DynamicsFreeFlight, TailGliderSettlesToItsAnalyticSteadyGlide) {
   v.tail.arm_m = 0.0;  // tail at the CG (code-built vehicle; the file loader wants > 0)
   v.tail.height_m = 0.0;
   v.tail.downwash_factor = 0.0;
+  v.body.drag_area_m2 = 0.0;  // the analytic glide is the tail's alone
   const double theta = 0.1, delta_T = 0.0;
   const double AR = v.tail.aspect_ratio, S = v.tail.area_m2;
   auto CL = [&](double a) { return AR / (2 + AR) * 2 * kPi * a; };
