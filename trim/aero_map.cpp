@@ -1,14 +1,11 @@
 #include "trim/aero_map.hpp"
 
-#include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <exception>
-#include <mutex>
 #include <stdexcept>
-#include <thread>
+
+#include "trim/point_pool.hpp"
 
 namespace orni::trim {
 
@@ -142,45 +139,15 @@ AeroMapSummary buildAeroMap(const FlightCoreModel& model, const AeroMapGrid& gri
       todo.push_back(i);
   }
 
-  // Work stealing by an atomic cursor into `todo`; each result slot is written by exactly one
-  // worker and read only after the join, so the results need no lock. The callback is serialised.
-  std::atomic<std::size_t> cursor{0};
-  std::atomic<bool> stop{false};
-  std::mutex callback_mutex;
-  std::exception_ptr callback_error;
-  auto worker = [&]() {
-    for (;;) {
-      if (stop.load(std::memory_order_relaxed)) return;
-      const std::size_t k = cursor.fetch_add(1, std::memory_order_relaxed);
-      if (k >= todo.size()) return;
-      const std::size_t index = todo[k];
-      AeroMapPoint& slot = summary.points[index];
-      slot = computeAeroMapPoint(model, grid.point(index), options);
-      if (on_point) {
-        std::lock_guard<std::mutex> lock(callback_mutex);
-        if (callback_error) return;
-        try {
-          on_point(index, slot);
-        } catch (...) {
-          callback_error = std::current_exception();
-          stop.store(true, std::memory_order_relaxed);
-          return;
-        }
-      }
-    }
-  };
-
-  const std::size_t workers =
-      std::min(todo.size(), static_cast<std::size_t>(options.threads));
-  if (workers <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    pool.reserve(workers);
-    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
-  }
-  if (callback_error) std::rethrow_exception(callback_error);
+  // Each result slot is written by exactly one worker and read only after the pool has joined.
+  runPoints(
+      todo, options.threads,
+      [&](std::size_t index) {
+        summary.points[index] = computeAeroMapPoint(model, grid.point(index), options);
+      },
+      [&](std::size_t index) {
+        if (on_point) on_point(index, summary.points[index]);
+      });
 
   summary.computed = todo.size();
   for (const AeroMapPoint& p : summary.points) {

@@ -16,6 +16,7 @@
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
+#include "studies/runner/commands/sweep_command.hpp"
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/study_file.hpp"
@@ -80,6 +81,11 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
       return runModesStudy(study, out_dir);
     case StudyKind::kTrim:
       return runTrimStudy(study, out_dir);
+    case StudyKind::kSweep: {
+      SweepRunOptions opts;
+      opts.threads = jobs;
+      return runSweepStudy(study, out_dir, opts);
+    }
     default:
       std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
                 << toString(study.kind)

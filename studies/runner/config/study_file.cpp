@@ -2,13 +2,16 @@
 
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <system_error>
 #include <utility>
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
@@ -94,34 +97,6 @@ void readTolerances(TableReader& r, SimulationOptions& o) {
   o.steady_tol = r.optionalDouble("steady_tol", o.steady_tol, Range::any());
 }
 
-/// One [aeromap] axis: "A:B:N", an array of values or one number, every value inside `range`.
-GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range) {
-  const std::string expected = std::string("a grid spec \"A:B:N\" (") + trim::kGridSpecMeaning +
-                               "), an array of values or a number, " +
-                               range.describe("each value");
-  const toml::node* n = r.take(key);
-  if (!n) throw r.missingError(key, expected);
-  GridAxis axis;
-  if (const auto* text = n->as_string()) {
-    trim::GridSpec spec;
-    std::string reason;
-    if (!trim::tryParseGridSpec(text->get(), &spec, &reason))
-      throw r.valueError(key, expected, describeNode(*n) + " (" + reason + ")");
-    axis = gridAxis(spec);
-    for (const double v : axis.values)
-      if (!range.contains(v))
-        throw r.valueError(key, expected, describeNode(*n) + " (value " + formatNumber(v) + ")");
-  } else if (n->is_array()) {
-    axis.values = r.requiredNumberArray(key, 0, range);
-    if (axis.values.empty()) throw r.valueError(key, expected, "an empty array");
-  } else if (n->is_number()) {
-    axis.values = {r.requiredDouble(key, range)};
-  } else {
-    throw r.valueError(key, expected, describeNode(*n));
-  }
-  return axis;
-}
-
 /// The value d in file units with d * si_per_file_unit == si exactly, when one exists.
 double fileUnits(double si, double si_per_file_unit) {
   const std::string text = TomlWriter::scaledText(si, si_per_file_unit);
@@ -183,14 +158,42 @@ void readAeromap(TableReader& am, Study& study) {
   am.finish();
 }
 
+}  // namespace
+
+GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range) {
+  const bool bounded = std::isfinite(range.lo) || std::isfinite(range.hi);
+  const std::string expected = std::string("a grid spec \"A:B:N\" (") + trim::kGridSpecMeaning +
+                               "), an array of values or a number" +
+                               (bounded ? ", " + range.describe("each value") : std::string());
+  const toml::node* n = r.take(key);
+  if (!n) throw r.missingError(key, expected);
+  GridAxis axis;
+  if (const auto* text = n->as_string()) {
+    trim::GridSpec spec;
+    std::string reason;
+    if (!trim::tryParseGridSpec(text->get(), &spec, &reason))
+      throw r.valueError(key, expected, describeNode(*n) + " (" + reason + ")");
+    axis = gridAxis(spec);
+    for (const double v : axis.values)
+      if (!range.contains(v))
+        throw r.valueError(key, expected, describeNode(*n) + " (value " + formatNumber(v) + ")");
+  } else if (n->is_array()) {
+    axis.values = r.requiredNumberArray(key, 0, range);
+    if (axis.values.empty()) throw r.valueError(key, expected, "an empty array");
+  } else if (n->is_number()) {
+    axis.values = {r.requiredDouble(key, range)};
+  } else {
+    throw r.valueError(key, expected, describeNode(*n));
+  }
+  return axis;
+}
+
 void writeGridAxis(TomlWriter& out, std::string_view key, const GridAxis& axis) {
   if (axis.spec)
     out.string(key, trim::toString(*axis.spec));
   else
     out.numberArray(key, axis.values);
 }
-
-}  // namespace
 
 GridAxis gridAxis(const trim::GridSpec& spec) {
   GridAxis axis;
@@ -212,17 +215,36 @@ std::optional<StudyKind> parseStudyKind(std::string_view text) {
 }
 
 Study loadStudyFile(const fs::path& study_file) {
-  toml::table root = parseTomlFile(study_file);
+  return loadStudyText(readTomlFileText(study_file), study_file, true);
+}
+
+Study loadStudyText(const std::string& text, const fs::path& study_file, bool verify_resolved) {
+  toml::table root = parseTomlText(text, study_file);
+  const toml::node* kind = root.get("kind");
+  if (kind && kind->value<std::string>() == std::string(toString(StudyKind::kSweep)))
+    return loadSweepStudy(root, text, study_file, verify_resolved);
+  return readStudyRoot(root, study_file);
+}
+
+Study readStudyRoot(toml::table& root, const fs::path& study_file) {
   const std::string study_name = displayPath(study_file);
   auto study_ctx = std::make_shared<ReadContext>();
   study_ctx->file = study_name;
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim"});
+                   "aeromap", "trim", "sweep"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
+  if (study.kind == StudyKind::kSweep)  // loadStudyText sends sweeps to loadSweepStudy
+    throw std::logic_error("readStudyRoot: a sweep document");
+  if (top.has("sweep"))
+    throw InputError::unknownKey(top.fileOf("sweep"), top.lineOf("sweep"), "sweep",
+                                 "[sweep] is only allowed in a study of kind \"sweep\", this "
+                                 "one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  top.take("sweep");
   study.name = top.optionalString("name", runNameFromStem(study_file));
   if (!validRunName(study.name))
     throw top.valueError("name",
@@ -376,6 +398,7 @@ Study aeromapStudyFromVehicle(const fs::path& vehicle_file, GridAxis speed_mps, 
 }
 
 std::string resolvedStudyToml(const Study& study) {
+  if (study.kind == StudyKind::kSweep) return resolvedSweepToml(study);
   TomlWriter out;
   out.comment("Resolved study: every default filled in; units in the key suffixes.");
   out.comment(
@@ -385,7 +408,12 @@ std::string resolvedStudyToml(const Study& study) {
   if (!study.vehicle_path.empty())
     out.string("vehicle_source", study.vehicle_path.generic_string(),
                "the vehicle file as given; its resolved content is [vehicle]");
-  if (study.kind == StudyKind::kSimulate) {
+  writeStudySections(study, study.kind, out);
+  return out.str();
+}
+
+void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
+  if (kind == StudyKind::kSimulate) {
     const SimulationOptions& o = study.simulate;
     const OperatingPoint& p = study.point;
     out.header({"simulate"});
@@ -414,7 +442,7 @@ std::string resolvedStudyToml(const Study& study) {
       out.number("initial_altitude_m", f.initial_altitude_m);
     }
   }
-  if (study.kind == StudyKind::kAeromap) {
+  if (kind == StudyKind::kAeromap) {
     const AeromapSettings& a = study.aeromap;
     out.header({"aeromap"});
     writeGridAxis(out, "speed_mps", a.speed_mps);
@@ -427,9 +455,8 @@ std::string resolvedStudyToml(const Study& study) {
     out.number("separation_abs_tol", a.options.separation_abs_tol);
     out.number("steady_tol", a.options.steady_tol);
   }
-  if (study.kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
+  if (kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
-  return out.str();
 }
 
 }  // namespace orni::studies

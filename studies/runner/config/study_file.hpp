@@ -42,7 +42,34 @@
 //            { <unknown> = [lower, upper] }, max_iterations, residual_tol, function_tol, rel_tol,
 //            steady_tol, max_cycles, derivative_cycles; see config/trim_section.hpp for ranges and
 //            defaults. A trim study needs a vehicle with a [body] (its mass sets the weight).
-// Sections of the other kinds ([optimize], [sweep]) are not defined yet and are rejected.
+//   [sweep]  (required for kind = "sweep", rejected otherwise) a parameter study: another kind run
+//            at every point of a grid of vehicle or analysis values, one table row per point
+//            (architecture.md 5). Keys:
+//              run  (required) the kind run at every point: "trim" or "simulate" (tethered or
+//                   free, as its [simulate] says);
+//              axes (required) an array of 1-16 tables { key = "...", values = ... }, written
+//                   inline (axes = [{ key = "tail.arm_m", values = [0.10, 0.12] }, ...]) or as
+//                   [[sweep.axes]] tables. An array, not a table of key -> values, because the
+//                   axes' order matters and a TOML table has none (toml++ iterates it
+//                   alphabetically): the points are the full factorial, the FIRST axis
+//                   outermost and the last varying fastest (trim/sweep_grid.hpp), the row order
+//                   of sweep.csv.
+//              key    a vehicle key exactly as in [override] ("tail.arm_m", "body.mass_kg",
+//                     "operating_point.freq_hz") or a key of the run's analysis section prefixed
+//                     with its name ("trim.freq_hz", "trim.initial.speed_mps",
+//                     "simulate.speed_mps", "simulate.free.bound_theta_deg"); distinct per axis.
+//              values a grid spec "A:B:N", an array of numbers or one number, exactly like an
+//                     [aeromap] axis (file units of the key). A whole number is given to the key
+//                     as a TOML integer (so integer keys such as "wing.strips" can be swept; float
+//                     keys take integers anyway), any other value as a float.
+//            The run's section ([trim] or [simulate]; the other one is rejected) holds the base
+//            settings of every point. A point is the study you get by writing its axis values
+//            into the file: vehicle keys into [override] (after the file's own overrides), analysis
+//            keys into the run's section, replacing what is there; defaults that follow other keys
+//            follow the swept values (e.g. a [trim] without freq_hz trims at each point's
+//            operating_point.freq_hz). The study without the axes must itself be valid, and so
+//            must every point: an invalid value is an error at that axis ('sweep.axes[1].values'),
+//            an invalid combination an error at 'sweep.axes' naming the point.
 #pragma once
 
 #include <filesystem>
@@ -80,6 +107,27 @@ struct AeromapSettings {
   orni::SimulationOptions options = orni::trim::AeroMapOptions::defaultSimulation();
 };
 
+/// One axis of a sweep: a key and its values in the key's file units.
+struct SweepAxis {
+  std::string key;  ///< "tail.arm_m" (a vehicle key) or "trim.freq_hz" (an analysis key)
+  GridAxis values;  ///< "A:B:N" spec or list, file units
+};
+
+struct Study;
+
+/// The [sweep] section (kind "sweep").
+struct SweepSettings {
+  StudyKind run = StudyKind::kTrim;  ///< kTrim or kSimulate
+  std::vector<SweepAxis> axes;       ///< in file order; the first is the outermost
+  /// One resolved study of kind `run` per point, in point order (trim/sweep_grid.hpp).
+  std::vector<Study> points;
+  /// Keys of the base study's resolved sections whose value differs between points although no
+  /// axis sets them (defaults that follow a swept key, e.g. "trim.freq_hz" when the axis is
+  /// "operating_point.freq_hz"): study.resolved.toml leaves them out so that it re-runs the same
+  /// points. Full dotted paths ("trim.freq_hz", "vehicle.wing.p3_aft_of_le_m").
+  std::vector<std::string> derived_keys;
+};
+
 struct Study {
   StudyKind kind = StudyKind::kSimulate;
   std::string name;                    ///< run name (output folder results/<name>/)
@@ -93,7 +141,18 @@ struct Study {
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
   orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
+  /// [sweep] (kind sweep). vehicle, point, simulate and trim above then hold the base study: the
+  /// run's section and the vehicle without the axes.
+  SweepSettings sweep;
 };
+
+/// True for an axis key of the run's analysis section ("trim.*" in a trim sweep), false for a
+/// vehicle key.
+bool isAnalysisKey(const std::string& key, StudyKind run);
+
+/// The unit of a key from its suffix ("tail.arm_m" -> "m", "trim.freq_hz" -> "Hz",
+/// "body.pitch_inertia_kgm2" -> "kg m^2"); "-" when the suffix names no unit.
+std::string keyUnit(const std::string& key);
 
 /// The axis of a grid spec (values = gridValues(spec)).
 GridAxis gridAxis(const orni::trim::GridSpec& spec);
@@ -116,13 +175,16 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
                               GridAxis freq_hz, GridAxis theta_deg,
                               std::optional<GridAxis> tail_angle_deg);
 
-/// study.resolved.toml: a complete TOML document with every default filled in: kind, name,
+/// study.resolved.toml: a complete TOML document with every default filled in (for a sweep: every
+/// default that is the same at every point; SweepSettings::derived_keys), kind, name,
 /// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate; in free
 /// mode also [simulate.free] with every free-flight option), [aeromap] with its axes (specs as
 /// "A:B:N", lists as arrays) and options (kind aeromap) or [trim] with all options (kind trim),
 /// and the
-/// resolved vehicle as a [vehicle] table in file units and key names. loadStudyFile reads it back
-/// into the same Study (apart from study_path).
+/// resolved vehicle as a [vehicle] table in file units and key names; a sweep writes [sweep] with
+/// run and its axes as [[sweep.axes]] tables, then its base study's section and vehicle.
+/// loadStudyFile reads it back into the same Study (apart from study_path); a sweep's points are
+/// the same (loadStudyFile checks this when it loads a sweep).
 std::string resolvedStudyToml(const Study& study);
 
 }  // namespace orni::studies

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 std::string displayPath(const fs::path& file) { return file.lexically_normal().string(); }
 
-toml::table parseTomlFile(const fs::path& file) {
+std::string readTomlFileText(const fs::path& file) {
   std::string name = displayPath(file);
   std::error_code ec;
   if (!fs::is_regular_file(file, ec))
@@ -32,12 +32,22 @@ toml::table parseTomlFile(const fs::path& file) {
   std::string text(size > 0 ? static_cast<std::size_t>(size) : 0, '\0');
   if (size > 0 && !in.read(text.data(), size))
     throw InputError(name, 0, std::string(), "cannot read file");
+  return text;
+}
+
+toml::table parseTomlText(std::string_view text, const fs::path& file) {
+  const std::string name = displayPath(file);
   try {
-    return toml::parse(std::string_view(text), std::string(name));
+    return toml::parse(text, std::string(name));
   } catch (const toml::parse_error& e) {
     throw InputError::syntax(name, static_cast<int>(e.source().begin.line),
                              std::string(e.description()));
   }
+}
+
+toml::table parseTomlFile(const fs::path& file) {
+  const std::string text = readTomlFileText(file);
+  return parseTomlText(text, file);
 }
 
 // ------------------------------------------------------------------------------------------------

@@ -33,6 +33,12 @@ namespace orni::studies {
 /// node's source().
 toml::table parseTomlFile(const std::filesystem::path& file);
 
+/// The bytes of a file; InputError when it is missing or unreadable.
+std::string readTomlFileText(const std::filesystem::path& file);
+
+/// Parses TOML text as if read from `file` (displayPath(file) in messages and node sources).
+toml::table parseTomlText(std::string_view text, const std::filesystem::path& file);
+
 /// The file name used in messages and node sources: the path as given, lexically normalised.
 std::string displayPath(const std::filesystem::path& file);
 

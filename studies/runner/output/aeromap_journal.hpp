@@ -1,5 +1,7 @@
 // The journal that makes an aero map resumable: DIR/aeromap.journal holds one line per finished
 // point, appended as soon as the point is done, so a killed run loses at most its in-flight points.
+// The file mechanics (checksums, torn lines, fingerprint, appends) are PointJournal's
+// (point_journal.hpp); this file adds the aero-map record.
 //
 // Format (text, one record per line):
 //   # ornithopter aeromap journal v1 fingerprint=<16 hex digits> points=<N>
@@ -22,12 +24,10 @@
 #include <string_view>
 #include <vector>
 
+#include "studies/runner/output/point_journal.hpp"
 #include "trim/aero_map.hpp"
 
 namespace orni::studies {
-
-/// FNV-1a 64-bit hash of `text`.
-std::uint64_t fnv1a64(std::string_view text);
 
 /// One journal line (with its newline) for point `index`.
 std::string journalRecord(std::size_t index, const trim::AeroMapPoint& point);
@@ -53,7 +53,6 @@ class AeroMapJournal {
   /// appending. Throws std::runtime_error when the file cannot be written.
   AeroMapJournal(std::filesystem::path file, std::uint64_t fingerprint, std::size_t points,
                  JournalResume* resume);
-  ~AeroMapJournal();
   AeroMapJournal(const AeroMapJournal&) = delete;
   AeroMapJournal& operator=(const AeroMapJournal&) = delete;
 
@@ -62,13 +61,11 @@ class AeroMapJournal {
   /// Closes and deletes the journal (after the final outputs are written).
   void remove();
 
-  const std::filesystem::path& path() const { return file_; }
+  const std::filesystem::path& path() const { return journal_.path(); }
 
  private:
-  void close();
-  std::filesystem::path file_;
-  int fd_ = -1;
-  double last_sync_s_ = 0.0;
+  PointJournalResume opened_;  ///< what the journal found (declared before journal_: it fills it)
+  PointJournal journal_;
 };
 
 }  // namespace orni::studies

@@ -1,0 +1,270 @@
+#include "studies/runner/commands/sweep_command.hpp"
+
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/point_journal.hpp"
+#include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/point_pool.hpp"
+#include "trim/sweep_grid.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+trim::SweepGrid gridOf(const SweepSettings& s) {
+  trim::SweepGrid g;
+  for (const SweepAxis& a : s.axes) g.sizes.push_back(a.values.values.size());
+  return g;
+}
+
+/// sweep.csv: axes, status, the result columns, message.
+CsvTable sweepTable(const SweepSettings& s, const trim::SweepGrid& grid,
+                    const std::vector<SweepColumn>& columns,
+                    const std::vector<SweepPointResult>& rows) {
+  CsvTable t;
+  std::vector<std::vector<double>> axis_values(s.axes.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::vector<std::size_t> at = grid.axisIndices(i);
+    for (std::size_t k = 0; k < s.axes.size(); ++k)
+      axis_values[k].push_back(s.axes[k].values.values[at[k]]);
+  }
+  for (std::size_t k = 0; k < s.axes.size(); ++k)
+    t.addColumn(s.axes[k].key, keyUnit(s.axes[k].key), axis_values[k]);
+  std::vector<std::string> status, message;
+  for (const SweepPointResult& r : rows) {
+    status.push_back(r.status);
+    message.push_back(r.message);
+  }
+  t.addTextColumn("status", "-", status);
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    std::vector<std::string> cells;
+    for (const SweepPointResult& r : rows) cells.push_back(r.cells[c]);
+    t.addTextColumn(columns[c].name, columns[c].unit, std::move(cells));
+  }
+  t.addTextColumn("message", "-", message);
+  return t;
+}
+
+struct Counts {
+  std::size_t ok = 0, not_converged = 0, diverged = 0, failed = 0, bounded = 0;
+};
+
+Counts countRows(const std::vector<SweepPointResult>& rows,
+                 const std::vector<SweepColumn>& columns) {
+  Counts n;
+  std::size_t bounded_col = columns.size();
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c].name == "bounded") bounded_col = c;
+  for (const SweepPointResult& r : rows) {
+    if (r.status == "ok")
+      ++n.ok;
+    else if (r.status == "not_converged")
+      ++n.not_converged;
+    else if (r.status == "diverged")
+      ++n.diverged;
+    else
+      ++n.failed;
+    if (bounded_col < columns.size() && r.cells[bounded_col] == "1") ++n.bounded;
+  }
+  return n;
+}
+
+std::string runMessage(const Counts& n, std::size_t points) {
+  char buf[300];
+  if (n.ok == points)
+    std::snprintf(buf, sizeof buf, "all %zu points ok", points);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "%zu of %zu points not ok (%zu not_converged, %zu diverged, %zu failed): see the "
+                  "status and message columns of sweep.csv",
+                  points - n.ok, points, n.not_converged, n.diverged, n.failed);
+  return buf;
+}
+
+/// Gnuplot script: one panel per plotted column with a value somewhere, the column against the
+/// first axis, one line per combination of the other axes' values. Empty when nothing to plot.
+std::string sweepFigure(const Study& study, const trim::SweepGrid& grid,
+                        const std::vector<SweepColumn>& columns,
+                        const std::vector<SweepPointResult>& rows) {
+  const SweepSettings& s = study.sweep;
+  const std::size_t n_axes = s.axes.size();
+  const std::size_t n_first = grid.sizes[0];
+  const std::size_t n_series = rows.size() / n_first;  // combinations of the other axes
+  auto rowOf = [&](std::size_t series, std::size_t i0) { return i0 * n_series + series; };
+
+  struct Panel {
+    std::size_t column;               // index into columns
+    std::vector<std::size_t> series;  // series with a value
+  };
+  std::vector<Panel> panels;
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (!columns[c].plotted) continue;
+    Panel p{c, {}};
+    for (std::size_t se = 0; se < n_series; ++se)
+      for (std::size_t i0 = 0; i0 < n_first; ++i0)
+        if (!rows[rowOf(se, i0)].cells[c].empty()) {
+          p.series.push_back(se);
+          break;
+        }
+    if (!p.series.empty()) panels.push_back(std::move(p));
+  }
+  if (panels.empty()) return {};
+
+  // Rows of one series are every n_series-th row of sweep.csv (the first axis is outermost), so
+  // `every n_series::series` picks them in order; an empty cell is skipped by the line.
+  const std::size_t cols = panels.size() <= 3 ? 1 : 2;
+  const std::size_t rows_layout = (panels.size() + cols - 1) / cols;
+  const bool legend = n_series > 1;
+  const std::string& x_key = s.axes[0].key;
+  std::ostringstream g;
+  g << "set multiplot layout " << rows_layout << "," << cols << " margins 0.08,"
+    << (legend ? "0.74" : "0.97") << ",0.07,0.92 spacing 0.09,0.1 title \"" << study.name << ": "
+    << toString(s.run) << " sweep, " << rows.size() << " points\" noenhanced font ',13'\n";
+  if (legend) {  // entries are the other axes' values; the legend's title names those axes
+    std::string keys;
+    for (std::size_t a = 1; a < n_axes; ++a)
+      keys += (a > 1 ? ", " : "") + s.axes[a].key + " (" + keyUnit(s.axes[a].key) + ")";
+    g << "set key at screen 0.76,0.92 left top Left reverse noenhanced box title '" << keys
+      << "' noenhanced font ',10'\n";
+  } else
+    g << "unset key\n";
+  g << "set xlabel '" << x_key << " (" << keyUnit(x_key) << ")' noenhanced\n";
+  for (std::size_t pi = 0; pi < panels.size(); ++pi) {
+    const Panel& p = panels[pi];
+    const SweepColumn& col = columns[p.column];
+    const std::size_t csv_col = n_axes + 2 + p.column;  // 1-based: axes, status, results
+    if (pi == 1) g << "unset key\n";                    // the legend once, beside the panels
+    g << "set ylabel '" << col.name << " (" << col.unit << ")' noenhanced\n";
+    g << "plot ";
+    for (std::size_t k = 0; k < p.series.size(); ++k) {
+      const std::size_t se = p.series[k];
+      const std::vector<std::size_t> at = grid.axisIndices(rowOf(se, 0));
+      std::string title;
+      for (std::size_t a = 1; a < n_axes; ++a)
+        title += (title.empty() ? "" : ", ") + formatShortest(s.axes[a].values.values[at[a]]);
+      if (title.empty()) title = col.name;
+      g << (k ? ", " : "") << "'sweep.csv' skip 2 every " << n_series << "::" << se
+        << " using 1:" << csv_col << " with linespoints lw 2 pt 7 title '" << title << "'";
+    }
+    if (col.name == "norm_ratio_max")
+      g << ", 1 with lines dt 2 lc rgb '#333333' title 'bound (bounded below 1)'";
+    g << "\n";
+  }
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+}  // namespace
+
+int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOptions& run) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const SweepSettings& s = study.sweep;
+  const trim::SweepGrid grid = gridOf(s);
+  std::string why;
+  if (!grid.IsValid(&why)) throw std::invalid_argument("sweep grid: " + why);
+  if (s.points.size() != grid.size())
+    throw std::invalid_argument("sweep: one study per point expected");
+  const std::vector<SweepColumn> columns = sweepResultColumns(study);
+  const std::size_t n = grid.size();
+
+  const std::string resolved = resolvedStudyToml(study);
+  const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
+  fs::create_directories(out_dir);
+  PointJournalResume resume;
+  PointJournal journal(
+      out_dir / kSweepJournalName, "sweep", fingerprint, n,
+      [&](std::size_t, std::string_view payload) {
+        SweepPointResult r;
+        return decodeSweepPoint(payload, columns.size(), &r);
+      },
+      &resume);
+  if (resume.existed && !resume.fingerprint_matched)
+    std::cerr << "sweep: " << journal.path().string()
+              << " belongs to another study or version: starting afresh\n";
+  else if (resume.existed)
+    std::cerr << "sweep: resuming from " << journal.path().string() << ": " << resume.records
+              << " of " << n << " points already done"
+              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
+                                              " torn or corrupt line(s) dropped)"
+                                        : std::string())
+              << "\n";
+
+  std::vector<SweepPointResult> rows(n);
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (resume.payloads[i])
+      decodeSweepPoint(*resume.payloads[i], columns.size(), &rows[i]);
+    else
+      todo.push_back(i);
+  }
+
+  std::optional<ProgressLine> progress;
+  if (run.progress) progress.emplace("sweep", n, resume.records);
+  trim::runPoints(
+      todo, run.threads, [&](std::size_t i) { rows[i] = runSweepPoint(s.points[i], s.run); },
+      [&](std::size_t i) {
+        journal.append(i, encodeSweepPoint(rows[i]));
+        if (progress) progress->pointDone();
+        if (run.on_point) run.on_point(i, rows[i]);
+      });
+  if (progress) progress->finish();
+
+  writeFileAtomic(out_dir / "sweep.csv", sweepTable(s, grid, columns, rows).toString());
+  writeFileAtomic(out_dir / "study.resolved.toml", resolved);
+  const Counts count = countRows(rows, columns);
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  JsonObject axes;
+  for (const SweepAxis& a : s.axes) axes.set(a.key, a.values.values);
+  JsonObject summary;
+  summary.set("kind", "sweep")
+      .set("status", count.ok == n ? "ok" : "not_converged")
+      .set("message", runMessage(count, n))
+      .set("wall_time_s", wall_s)
+      .set("version", versionString())
+      .set("run", std::string(toString(s.run)));
+  if (s.run == StudyKind::kSimulate)
+    summary.set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered");
+  summary.set("points", static_cast<long>(n))
+      .set("points_ok", static_cast<long>(count.ok))
+      .set("points_not_converged", static_cast<long>(count.not_converged))
+      .set("points_diverged", static_cast<long>(count.diverged))
+      .set("points_failed", static_cast<long>(count.failed));
+  if (s.run == StudyKind::kTrim || study.simulate.mode == FlightMode::kFree)
+    summary.set("points_bounded", static_cast<long>(count.bounded));
+  summary.set("points_computed", static_cast<long>(todo.size()))
+      .set("points_resumed", static_cast<long>(resume.records))
+      .set("threads", run.threads)
+      .set("axes", axes);
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  journal.remove();  // every result is in sweep.csv now
+
+  if (run.figures) {
+    const std::string figure = sweepFigure(study, grid, columns, rows);
+    if (figure.empty())
+      std::cerr << "sweep: no point has a value to plot: no figure drawn\n";
+    else
+      drawFigure(out_dir, "sweep", figure);
+  }
+  std::cout << study.name << ": sweep of " << toString(s.run) << ", " << n << " points ("
+            << todo.size() << " computed): " << count.ok << " ok, " << count.not_converged
+            << " not_converged, " << count.diverged << " diverged, " << count.failed
+            << " failed\n  -> " << out_dir.string() << "\n";
+  return 0;
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,213 @@
+#include "studies/runner/commands/sweep_point.hpp"
+
+#include <cmath>
+#include <exception>
+#include <stdexcept>
+#include <utility>
+
+#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/free_flight.hpp"
+#include "core/dynamics/tethered_simulation.hpp"
+#include "core/model/frames.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "trim/trim_solver.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+const std::vector<SweepColumn>& trimColumns() {
+  static const std::vector<SweepColumn> c = {
+      {"theta_mean_deg", "deg", true},  {"speed_mps", "m/s", true},
+      {"tail_angle_deg", "deg", true},  {"freq_hz", "Hz", true},
+      {"power_aero_W", "W", true},      {"power_hinge_W", "W", false},
+      {"residual_FV_N", "N", false},    {"residual_FH_N", "N", false},
+      {"residual_M_Nm", "N m", false},  {"residual_scaled_max", "-", false},
+      {"iterations", "-", false},       {"evaluations", "-", false},
+      {"free_flight", "-", false},      {"bounded", "-", false},
+      {"norm_ratio_max", "-", true},    {"theta_min_deg", "deg", false},
+      {"theta_max_deg", "deg", false},  {"altitude_p2p_m", "m", false},
+      {"dominant_freq_hz", "Hz", false}};
+  return c;
+}
+
+const std::vector<SweepColumn>& tetheredColumns() {
+  static const std::vector<SweepColumn> c = {
+      {"FV_mean_N", "N", true},     {"FH_mean_N", "N", true},         {"M_mean_Nm", "N m", true},
+      {"power_aero_W", "W", true},  {"power_hinge_W", "W", false},    {"cycles_run", "-", false},
+      {"steady_cycle", "-", false}, {"last_cycle_change", "-", false}};
+  return c;
+}
+
+const std::vector<SweepColumn>& freeColumns() {
+  static const std::vector<SweepColumn> c = {
+      {"FV_mean_N", "N", false},       {"FH_mean_N", "N", false},
+      {"M_mean_Nm", "N m", false},     {"power_aero_W", "W", true},
+      {"cycles_run", "-", false},      {"bounded", "-", false},
+      {"norm_ratio_max", "-", true},   {"theta_min_deg", "deg", true},
+      {"theta_max_deg", "deg", true},  {"altitude_p2p_m", "m", true},
+      {"dominant_freq_hz", "Hz", true}};
+  return c;
+}
+
+const std::vector<SweepColumn>& columnsOf(StudyKind run, FlightMode mode) {
+  if (run == StudyKind::kTrim) return trimColumns();
+  return mode == FlightMode::kFree ? freeColumns() : tetheredColumns();
+}
+
+/// A number cell: shortest round-trip text, "" for a non-finite value (never NaN).
+std::string num(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
+
+/// One line: control characters become spaces.
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (static_cast<unsigned char>(c) < 0x20) c = ' ';
+  return s;
+}
+
+SweepPointResult trimPoint(const Study& point) {
+  const FlightCoreModel model(point.vehicle);
+  const TrimSummary s = solveTrim(model, point.trim);
+  SweepPointResult r;
+  r.status = toString(s.status);
+  r.message = s.message;
+  r.cells.assign(trimColumns().size(), std::string());
+  if (!s.converged) return r;
+  const FreeFlightVerification& f = s.free_flight;
+  const bool verdict =
+      f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded;
+  r.cells = {num(s.solution.theta_rad * kRadToDeg),
+             num(s.solution.speed_mps),
+             num(s.solution.tail_angle_rad * kRadToDeg),
+             num(s.solution.freq_hz),
+             num(s.mean.power_aero_W),
+             num(s.mean.power_hinge_W),
+             num(s.residual.FV_N),
+             num(s.residual.FH_N),
+             num(s.residual.M_Nm),
+             num(s.scaled_residual_max),
+             std::to_string(s.iterations),
+             std::to_string(s.evaluations),
+             toString(f.status),
+             verdict ? (f.bounded ? "1" : "0") : "",
+             num(f.norm_ratio_max),
+             num(f.theta_min_rad * kRadToDeg),
+             num(f.theta_max_rad * kRadToDeg),
+             num(f.altitude_p2p_m),
+             num(f.dominant_freq_hz)};
+  if (f.status != FreeFlightStatus::kSkipped) r.message += "; free flight: " + f.message;
+  return r;
+}
+
+SweepPointResult tetheredPoint(const Study& point) {
+  // The options and history of `ornithopter simulate` (simulate_command.cpp): the sampled history
+  // sets the integrator's output times, so the means are bit-identical to a direct run's.
+  const FlightCoreModel model(point.vehicle);
+  SimulationOptions opts = point.simulate;
+  opts.record_history = true;
+  TimeHistory history;
+  const SimulationSummary s = simulateTethered(model, point.point, opts, &history);
+  SweepPointResult r;
+  r.status = toString(s.status);
+  r.message = s.message;
+  r.cells.assign(tetheredColumns().size(), std::string());
+  if (s.status != SimulationStatus::kOk && s.status != SimulationStatus::kNotConverged) return r;
+  r.cells = {num(s.mean.FV_N),
+             num(s.mean.FH_N),
+             num(s.mean.M_Nm),
+             num(s.mean.power_aero_W),
+             num(s.mean.power_hinge_W),
+             std::to_string(s.cycles_run),
+             s.steady_state_cycle > 0 ? std::to_string(s.steady_state_cycle) : "",
+             s.cycles_run > 1 ? num(s.last_cycle_change) : ""};
+  return r;
+}
+
+SweepPointResult freePoint(const Study& point) {
+  // As `ornithopter simulate --mode free` (free_flight_command.cpp).
+  const FlightCoreModel model(point.vehicle);
+  FreeFlightHistory history;
+  const FreeFlightSummary s = simulateFree(model, point.point, point.simulate, &history);
+  SweepPointResult r;
+  r.status = toString(s.status);
+  r.message = s.message;
+  r.cells.assign(freeColumns().size(), std::string());
+  if (s.status == SimulationStatus::kDiverged) {
+    r.cells[4] = std::to_string(s.cycles_run);
+    r.cells[5] = "0";
+    return r;
+  }
+  if (s.status != SimulationStatus::kOk || !s.analysed) return r;
+  const LimitCycleMetrics& m = s.limit_cycle;
+  r.cells = {num(s.mean.FV_N),
+             num(s.mean.FH_N),
+             num(s.mean.M_Nm),
+             num(s.mean.power_aero_W),
+             std::to_string(s.cycles_run),
+             s.verdict.bounded ? "1" : "0",
+             num(s.verdict.norm_ratio_max),
+             num(m.theta_min_rad * kRadToDeg),
+             num(m.theta_max_rad * kRadToDeg),
+             num(m.altitude_p2p_fast_m),
+             num(m.dominant_freq_theta_hz)};
+  return r;
+}
+
+}  // namespace
+
+std::vector<SweepColumn> sweepResultColumns(const Study& sweep) {
+  return columnsOf(sweep.sweep.run, sweep.simulate.mode);
+}
+
+SweepPointResult runSweepPoint(const Study& point, StudyKind run) {
+  SweepPointResult r;
+  try {
+    if (run == StudyKind::kTrim)
+      r = trimPoint(point);
+    else if (point.simulate.mode == FlightMode::kFree)
+      r = freePoint(point);
+    else
+      r = tetheredPoint(point);
+  } catch (const std::exception& e) {
+    r = SweepPointResult();
+    r.status = "failed";
+    r.message = std::string("the run threw: ") + e.what();
+    r.cells.assign(columnsOf(run, point.simulate.mode).size(), std::string());
+  }
+  if (r.cells.size() != columnsOf(run, point.simulate.mode).size())
+    throw std::logic_error("runSweepPoint: one cell per result column expected");
+  r.message = oneLine(std::move(r.message));
+  return r;
+}
+
+std::string encodeSweepPoint(const SweepPointResult& r) {
+  std::string payload = r.status;
+  for (const std::string& c : r.cells) payload += ',' + c;
+  payload += ',';
+  payload += r.message;
+  return payload;
+}
+
+bool decodeSweepPoint(std::string_view payload, std::size_t columns, SweepPointResult* result) {
+  SweepPointResult r;
+  std::size_t start = 0;
+  auto field = [&](std::string* out) {
+    const std::size_t comma = payload.find(',', start);
+    if (comma == std::string_view::npos) return false;
+    *out = std::string(payload.substr(start, comma - start));
+    start = comma + 1;
+    return true;
+  };
+  if (!field(&r.status)) return false;
+  if (r.status != "ok" && r.status != "not_converged" && r.status != "diverged" &&
+      r.status != "failed")
+    return false;
+  r.cells.resize(columns);
+  for (std::string& c : r.cells)
+    if (!field(&c)) return false;
+  r.message = std::string(payload.substr(start));  // the message may contain commas
+  *result = std::move(r);
+  return true;
+}
+
+}  // namespace orni::studies

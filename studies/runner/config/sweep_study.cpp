@@ -1,0 +1,437 @@
+// Sweep studies (kind = "sweep", study_file.hpp): the [sweep] section, its points as studies of
+// the run kind, and the resolved study that re-runs the same points.
+//
+// A point is read exactly like a study file of the run kind in which its axis values were written:
+// the sweep text is parsed afresh (so every node keeps its file and line), the values go into
+// [override] (vehicle keys) or the run's section (analysis keys), and readStudyRoot does the rest,
+// with every check of the ordinary loader. Errors a value causes are reported at its axis.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "studies/runner/config/study_reader.hpp"
+#include "trim/sweep_grid.hpp"
+
+namespace orni::studies {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::vector<std::pair<std::string, StudyKind>> kRuns = {{"trim", StudyKind::kTrim},
+                                                              {"simulate", StudyKind::kSimulate}};
+
+/// The run's analysis section ("trim", "simulate").
+std::string sectionOf(StudyKind run) { return std::string(toString(run)); }
+
+/// First parts that are study keys or sections, never vehicle keys.
+const std::vector<std::string> kStudyNames = {"kind",     "name",     "vehicle", "vehicle_source",
+                                              "override", "simulate", "aeromap", "trim",
+                                              "optimize", "sweep",    "modes"};
+
+bool isBareKey(std::string_view part) {
+  if (part.empty()) return false;
+  for (const char c : part) {
+    const bool ok = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-';
+    if (!ok) return false;
+  }
+  return true;
+}
+
+/// The parts of a dotted key of bare parts ("tail.arm_m" -> {"tail", "arm_m"}); empty when the
+/// text is not such a key.
+std::vector<std::string> keyParts(const std::string& key) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t dot = key.find('.', start);
+    const std::string part = key.substr(start, dot == std::string::npos ? dot : dot - start);
+    if (!isBareKey(part)) return {};
+    parts.push_back(part);
+    if (dot == std::string::npos) return parts;
+    start = dot + 1;
+  }
+}
+
+std::string keyExpectation(StudyKind run) {
+  const std::string s = sectionOf(run);
+  return "a vehicle key as in [override] (e.g. \"tail.arm_m\") or a key of [" + s +
+         "] prefixed with \"" + s + ".\" (e.g. \"" +
+         (run == StudyKind::kTrim ? "trim.freq_hz" : "simulate.speed_mps") + "\")";
+}
+
+/// The path of an axis key in the resolved sections ("vehicle.tail.arm_m", "trim.freq_hz").
+std::string resolvedPath(const SweepAxis& axis, StudyKind run) {
+  return isAnalysisKey(axis.key, run) ? axis.key : "vehicle." + axis.key;
+}
+
+/// An axis as read, with the reader of its table (sweep.axes[i]) for messages.
+struct AxisInput {
+  SweepAxis axis;
+  TableReader reader;
+};
+
+std::vector<AxisInput> readAxes(TableReader& sweep, StudyKind run) {
+  const std::string expected = "an array of 1 to " + std::to_string(trim::kMaxSweepAxes) +
+                               " tables { key = \"...\", values = ... }";
+  const toml::node* n = sweep.table().get("axes");
+  if (!n) throw sweep.missingError("axes", expected);
+  const toml::array* a = n->as_array();
+  if (!a || a->empty() || a->size() > trim::kMaxSweepAxes)
+    throw sweep.valueError("axes", expected, describeNode(*n));
+  std::vector<TableReader> readers = sweep.optionalTableArray("axes", {"key", "values"});
+  std::vector<AxisInput> axes;
+  for (std::size_t i = 0; i < readers.size(); ++i) {
+    TableReader& r = readers[i];
+    SweepAxis axis;
+    axis.key = r.requiredString("key");
+    const toml::node& key_node = *r.table().get("key");
+    const std::vector<std::string> parts = keyParts(axis.key);
+    const std::string section = sectionOf(run);
+    if (parts.empty())
+      throw r.valueError("key", keyExpectation(run),
+                         describeNode(key_node) + " (not a dotted key)");
+    if (parts.front() == section && parts.size() < 2)
+      throw r.valueError("key", keyExpectation(run),
+                         describeNode(key_node) + " (the whole section, not one of its keys)");
+    if (parts.front() != section &&
+        std::find(kStudyNames.begin(), kStudyNames.end(), parts.front()) != kStudyNames.end()) {
+      std::string why = "'" + parts.front() + "' is a key of the study, not of the vehicle";
+      if (parts.front() == "vehicle" || parts.front() == "override")
+        why = "vehicle keys are written as in [override], without '" + parts.front() + ".'";
+      else if (parts.front() == "trim" || parts.front() == "simulate" || parts.front() == "aeromap")
+        why = "this sweep runs \"" + section + "\": only [" + section + "] keys can be swept";
+      throw r.valueError("key", keyExpectation(run), describeNode(key_node) + " (" + why + ")");
+    }
+    for (std::size_t j = 0; j < axes.size(); ++j)
+      if (axes[j].axis.key == axis.key)
+        throw r.valueError(
+            "key", "a key that no other axis sweeps",
+            describeNode(key_node) + " (also sweep.axes[" + std::to_string(j) + "])");
+    axis.values = readGridAxis(r, "values", Range::any());
+    r.finish();
+    axes.push_back({std::move(axis), std::move(r)});
+  }
+  return axes;
+}
+
+/// Writes `value` at the dotted path `parts` under `table`, creating tables on the way (a whole
+/// number as an integer, anything else as a float).
+void insertValue(toml::table& table, const std::vector<std::string>& parts, double value) {
+  toml::table* t = &table;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
+    toml::node* n = t->get(parts[i]);
+    if (!n || !n->is_table()) {
+      t->insert_or_assign(parts[i], toml::table{});
+      n = t->get(parts[i]);
+    }
+    t = n->as_table();
+  }
+  constexpr double kExactIntegers = 9007199254740992.0;  // 2^53
+  if (std::floor(value) == value && std::abs(value) < kExactIntegers)
+    t->insert_or_assign(parts.back(), static_cast<std::int64_t>(value));
+  else
+    t->insert_or_assign(parts.back(), value);
+}
+
+/// The table `name` of `root`, created when absent (an existing non-table is left to the loader's
+/// messages by replacing it only when it is not a table).
+toml::table& tableAt(toml::table& root, const std::string& name) {
+  toml::node* n = root.get(name);
+  if (!n || !n->is_table()) {
+    root.insert_or_assign(name, toml::table{});
+    n = root.get(name);
+  }
+  return *n->as_table();
+}
+
+/// The value of each axis at one point; nullopt = the axis is not applied.
+using PointValues = std::vector<std::optional<double>>;
+
+/// The study of kind `run` at a point: `text` parsed afresh, kind set to the run, [sweep] removed,
+/// the values written in, read by readStudyRoot.
+Study readPoint(const std::string& text, const fs::path& study_file, StudyKind run,
+                const std::vector<AxisInput>& axes, const PointValues& values) {
+  toml::table root = parseTomlText(text, study_file);
+  root.insert_or_assign("kind", sectionOf(run));
+  root.erase("sweep");
+  for (std::size_t k = 0; k < axes.size(); ++k) {
+    if (!values[k]) continue;
+    const std::string& key = axes[k].axis.key;
+    std::vector<std::string> parts = keyParts(key);
+    if (isAnalysisKey(key, run)) {
+      parts.erase(parts.begin());
+      insertValue(tableAt(root, sectionOf(run)), parts, *values[k]);
+    } else {
+      insertValue(tableAt(root, "override"), parts, *values[k]);
+    }
+  }
+  return readStudyRoot(root, study_file);
+}
+
+/// The message of an InputError without its "FILE:LINE: " prefix.
+std::string bodyOf(const InputError& e) {
+  const std::string what = e.what();
+  std::string prefix = e.file().empty() ? std::string("<input>") : e.file();
+  if (e.line() > 0) prefix += ":" + std::to_string(e.line());
+  prefix += ": ";
+  return what.compare(0, prefix.size(), prefix) == 0 ? what.substr(prefix.size()) : what;
+}
+
+/// An error caused by one value of one axis: at its key when the key is what the loader rejects
+/// (unknown, or a table without its required keys), else at the value.
+[[noreturn]] void throwAxisError(const InputError& e, const AxisInput& in, std::size_t j,
+                                 StudyKind run) {
+  const std::string body = bodyOf(e);
+  const TableReader& r = in.reader;
+  const bool key_fault =
+      body.rfind("unknown key", 0) == 0 || body.rfind("missing required key", 0) == 0;
+  if (key_fault)
+    throw r.valueError("key", keyExpectation(run),
+                       describeNode(*r.table().get("key")) + " (" + body + ")");
+  const toml::node& values = *r.table().get("values");
+  const toml::array* list = values.as_array();
+  const toml::node& at = list && j < list->size() ? *list->get(j) : values;
+  const int line =
+      at.source().begin.line > 0 ? static_cast<int>(at.source().begin.line) : r.lineOf("values");
+  throw InputError::wrongValue(r.fileOf("values"), line, r.keyPath("values"),
+                               "values valid for \"" + in.axis.key + "\"",
+                               formatNumber(in.axis.values.values[j]) + " (" + body + ")");
+}
+
+/// Text of the analysis section and vehicle of a point (or the base) as study.resolved.toml
+/// writes them.
+std::string sectionsText(const Study& study, StudyKind run) {
+  TomlWriter out;
+  writeStudySections(study, run, out);
+  return out.str();
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  return lines;
+}
+
+/// The dotted path of a header line "[a.b]" / "[[a.b]]" (quoted parts unquoted), "" otherwise.
+std::string headerPath(const std::string& line) {
+  if (line.empty() || line[0] != '[') return {};
+  std::size_t i = line[1] == '[' ? 2 : 1;
+  std::string path;
+  bool quoted = false;
+  for (; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == '"') {
+      quoted = !quoted;
+    } else if (c == '\\' && quoted && i + 1 < line.size()) {
+      path += line[++i];
+    } else if (c == ']' && !quoted) {
+      return path;
+    } else {
+      path += c;
+    }
+  }
+  return path;
+}
+
+/// The key of a "key = value" line (unquoted), "" for headers, comments and blank lines.
+std::string lineKey(const std::string& line) {
+  if (line.empty() || line[0] == '#' || line[0] == '[') return {};
+  const std::size_t eq = line.find(" = ");
+  if (eq == std::string::npos) return {};
+  std::string key = line.substr(0, eq);
+  if (key.size() >= 2 && key.front() == '"' && key.back() == '"')
+    key = key.substr(1, key.size() - 2);
+  return key;
+}
+
+/// Calls f(line index, full dotted key) for every key line of `lines`.
+template <typename F>
+void forEachKeyLine(const std::vector<std::string>& lines, F f) {
+  std::string header;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    if (!lines[i].empty() && lines[i][0] == '[') {
+      header = headerPath(lines[i]);
+      continue;
+    }
+    const std::string key = lineKey(lines[i]);
+    if (!key.empty()) f(i, header.empty() ? key : header + "." + key);
+  }
+}
+
+/// The keys of the base's sections that vary between points although no axis sets them.
+std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>& points,
+                                     StudyKind run, const std::vector<AxisInput>& axes) {
+  const std::vector<std::string> base_lines = splitLines(sectionsText(base, run));
+  std::vector<bool> varies(base_lines.size(), false);
+  for (const Study& p : points) {
+    const std::vector<std::string> lines = splitLines(sectionsText(p, run));
+    if (lines.size() != base_lines.size()) continue;  // the self-check of the loader reports it
+    for (std::size_t i = 0; i < lines.size(); ++i)
+      if (lines[i] != base_lines[i]) varies[i] = true;
+  }
+  std::vector<std::string> swept;
+  for (const AxisInput& a : axes) swept.push_back(resolvedPath(a.axis, run));
+  std::vector<std::string> derived;
+  forEachKeyLine(base_lines, [&](std::size_t i, const std::string& key) {
+    if (varies[i] && std::find(swept.begin(), swept.end(), key) == swept.end() &&
+        std::find(derived.begin(), derived.end(), key) == derived.end())
+      derived.push_back(key);
+  });
+  return derived;
+}
+
+}  // namespace
+
+bool isAnalysisKey(const std::string& key, StudyKind run) {
+  const std::string prefix = sectionOf(run) + ".";
+  return key.compare(0, prefix.size(), prefix) == 0;
+}
+
+std::string keyUnit(const std::string& key) {
+  static const std::vector<std::pair<std::string, std::string>> kUnits = {
+      {"_kgpm3", "kg/m^3"}, {"_kgm2", "kg m^2"}, {"_m2ps", "m^2/s"}, {"_mps2", "m/s^2"},
+      {"_degps", "deg/s"},  {"_mps", "m/s"},     {"_deg", "deg"},    {"_gpa", "GPa"},
+      {"_hz", "Hz"},        {"_kg", "kg"},       {"_m2", "m^2"},     {"_m", "m"},
+      {"_s", "s"},          {"_w", "W"},         {"_n", "N"},        {"_nm", "N m"}};
+  for (const auto& [suffix, unit] : kUnits)
+    if (key.size() > suffix.size() &&
+        key.compare(key.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return unit;
+  return "-";
+}
+
+Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path& study_file,
+                     bool verify_resolved) {
+  auto ctx = std::make_shared<ReadContext>();
+  ctx->file = displayPath(study_file);
+  // Only [sweep] and the section rules are read here; readStudyRoot checks every other key when it
+  // reads the base study below.
+  TableReader top(root, std::string(), ctx,
+                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate", "aeromap",
+                   "trim", "sweep"});
+  TableReader sweep = top.requiredTable("sweep", {"run", "axes"});
+  const StudyKind run = sweep.requiredEnum("run", kRuns);
+  std::vector<AxisInput> axes = readAxes(sweep, run);
+  sweep.finish();
+
+  for (const char* section : {"simulate", "trim", "aeromap"}) {
+    if (!top.has(section) || section == sectionOf(run)) continue;
+    throw InputError::unknownKey(
+        top.fileOf(section), top.lineOf(section), section,
+        "[" + std::string(section) + "] is not used by this sweep: it runs \"" + sectionOf(run) +
+            "\" at every point, with the settings of [" + sectionOf(run) + "]");
+  }
+
+  trim::SweepGrid grid;
+  for (const AxisInput& a : axes) grid.sizes.push_back(a.axis.values.values.size());
+  std::string why;
+  if (!grid.IsValid(&why))
+    throw sweep.valueError("axes",
+                           "at most " + std::to_string(trim::kMaxSweepPoints) +
+                               " points (the product of the axis sizes)",
+                           "a larger grid (" + why + ")");
+
+  // The base: the study without the axes. Its errors are ordinary study-file errors.
+  const PointValues none(axes.size());
+  Study base = readPoint(text, study_file, run, axes, none);
+
+  // Every point, in point order. A failing point is diagnosed by trying its axes one at a time.
+  std::vector<Study> points;
+  points.reserve(grid.size());
+  for (std::size_t index = 0; index < grid.size(); ++index) {
+    const std::vector<std::size_t> at = grid.axisIndices(index);
+    PointValues values(axes.size());
+    for (std::size_t k = 0; k < axes.size(); ++k) values[k] = axes[k].axis.values.values[at[k]];
+    try {
+      points.push_back(readPoint(text, study_file, run, axes, values));
+    } catch (const InputError& e) {
+      for (std::size_t k = 0; k < axes.size(); ++k) {
+        PointValues one(axes.size());
+        one[k] = values[k];
+        try {
+          (void)readPoint(text, study_file, run, axes, one);
+        } catch (const InputError& ek) {
+          throwAxisError(ek, axes[k], at[k], run);
+        }
+      }
+      std::string list;
+      for (std::size_t k = 0; k < axes.size(); ++k)
+        list += (k ? ", " : "") + axes[k].axis.key + " = " + formatNumber(*values[k]);
+      throw sweep.valueError("axes", "axes whose every combination is a valid study",
+                             "point " + std::to_string(index) + " (" + list + "): " + bodyOf(e));
+    }
+  }
+
+  Study study = base;
+  study.kind = StudyKind::kSweep;
+  study.study_path = study_file;
+  study.sweep.run = run;
+  for (const AxisInput& a : axes) study.sweep.axes.push_back(a.axis);
+  study.sweep.derived_keys = derivedKeys(base, points, run, axes);
+  study.sweep.points = std::move(points);
+
+  if (verify_resolved) {
+    // The contract of study.resolved.toml: it re-runs the same points.
+    const std::string resolved = resolvedStudyToml(study);
+    Study again;
+    try {
+      again = loadStudyText(resolved, study_file.parent_path() / "study.resolved.toml", false);
+    } catch (const InputError& e) {
+      throw std::runtime_error("the resolved form of this sweep does not load (please report): " +
+                               std::string(e.what()));
+    }
+    const std::vector<Study>& p = study.sweep.points;
+    if (again.sweep.points.size() != p.size())
+      throw std::runtime_error("the resolved form of this sweep has another number of points");
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (sectionsText(again.sweep.points[i], run) != sectionsText(p[i], run))
+        throw std::runtime_error("the resolved form of this sweep does not reproduce point " +
+                                 std::to_string(i) + " (please report)");
+  }
+  return study;
+}
+
+std::string resolvedSweepToml(const Study& study) {
+  const SweepSettings& s = study.sweep;
+  TomlWriter out;
+  out.comment("Resolved study: every default filled in; units in the key suffixes.");
+  out.comment(
+      "The vehicle below includes the study's overrides; `ornithopter run` accepts this file.");
+  out.comment("Each point is this study with its axis values written in (vehicle keys as");
+  out.comment("overrides of [vehicle], analysis keys into [" + sectionOf(s.run) + "]).");
+  out.string("kind", toString(StudyKind::kSweep));
+  out.string("name", study.name);
+  if (!study.vehicle_path.empty())
+    out.string("vehicle_source", study.vehicle_path.generic_string(),
+               "the vehicle file as given; its resolved content is [vehicle]");
+  out.header({"sweep"});
+  out.string("run", sectionOf(s.run));
+  for (const SweepAxis& a : s.axes) {
+    out.arrayHeader({"sweep", "axes"});
+    out.string("key", a.key);
+    writeGridAxis(out, "values", a.values);
+  }
+
+  // The base's sections; keys that follow the swept values are left to their defaults.
+  std::vector<std::string> lines = splitLines(sectionsText(study, s.run));
+  forEachKeyLine(lines, [&](std::size_t i, const std::string& key) {
+    if (std::find(s.derived_keys.begin(), s.derived_keys.end(), key) != s.derived_keys.end())
+      lines[i] = "# " + lineKey(lines[i]) +
+                 ": not fixed here: its default follows the swept keys at every point";
+  });
+  std::string text = out.str() + "\n";
+  for (const std::string& l : lines) text += l + "\n";
+  return text;
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,67 @@
+#include "trim/point_pool.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+namespace orni::trim {
+
+void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWork& work,
+               const PointDone& on_done) {
+  if (threads < 1 || threads > 1024)
+    throw std::invalid_argument("runPoints: threads must be in [1, 1024]");
+  if (!work) throw std::invalid_argument("runPoints: no work function");
+
+  // Each index is taken by exactly one worker; the caller's result slots need no lock. The
+  // completion callback is serialised by `done_mutex`.
+  std::atomic<std::size_t> cursor{0};
+  std::atomic<bool> stop{false};
+  std::mutex done_mutex;
+  std::mutex error_mutex;
+  std::exception_ptr error;
+  auto fail = [&](std::exception_ptr e) {
+    std::lock_guard<std::mutex> lock(error_mutex);
+    if (!error) error = std::move(e);
+    stop.store(true, std::memory_order_relaxed);
+  };
+  auto worker = [&]() {
+    for (;;) {
+      if (stop.load(std::memory_order_relaxed)) return;
+      const std::size_t k = cursor.fetch_add(1, std::memory_order_relaxed);
+      if (k >= todo.size()) return;
+      const std::size_t index = todo[k];
+      try {
+        work(index);
+      } catch (...) {
+        fail(std::current_exception());
+        return;
+      }
+      if (on_done) {
+        std::lock_guard<std::mutex> lock(done_mutex);
+        if (stop.load(std::memory_order_relaxed)) return;
+        try {
+          on_done(index);
+        } catch (...) {
+          fail(std::current_exception());
+          return;
+        }
+      }
+    }
+  };
+
+  const std::size_t workers = std::min(todo.size(), static_cast<std::size_t>(threads));
+  if (workers <= 1) {
+    worker();
+  } else {
+    std::vector<std::thread> pool;
+    pool.reserve(workers);
+    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(worker);
+    for (std::thread& t : pool) t.join();
+  }
+  if (error) std::rethrow_exception(error);
+}
+
+}  // namespace orni::trim
