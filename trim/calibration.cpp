@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/tethered_simulation.hpp"
 
 namespace orni {
 
@@ -28,7 +29,29 @@ struct CalibrationContext {
   const VehicleModel* base;
   const CalibrationOptions* options;
   std::vector<CalibrationEvaluation>* log;
+  bool tethered = false;  ///< Eq. (4) residuals of the tethered means instead of settled flight
 };
+
+// Eq. (4) at the target: (mean FV - W)/W, mean FH/W, mean M/(W c_mean), x 100 (percent of W).
+bool evaluateTethered(const CalibrationContext& c, const VehicleModel& v, double* r,
+                      CalibrationEvaluation* e) {
+  const FlightCoreModel model(v);
+  SimulationOptions o;
+  o.cycles = 40;
+  o.stop_when_steady = true;
+  o.steady_tol = 1e-5;
+  o.rel_tol = 1e-6;
+  o.record_history = false;
+  const SimulationSummary s = simulateTethered(model, c.options->target, o, nullptr);
+  const double W = v.body.mass_kg * v.air.gravity_mps2;
+  e->residual[0] = 100.0 * (s.mean.FV_N - W) / W;
+  e->residual[1] = 100.0 * s.mean.FH_N / W;
+  e->residual[2] = 100.0 * s.mean.M_Nm / (W * model.mean_chord_m);
+  e->settled.ok = s.status == SimulationStatus::kOk;
+  e->settled.message = "tethered: " + s.message;
+  for (int i = 0; i < 3; ++i) r[i] = e->residual[i];
+  return e->settled.ok;
+}
 
 // Settled free flight of the vehicle with the given values at the target point.
 bool evaluate(const CalibrationContext& c, const double* x, double* r) {
@@ -40,6 +63,11 @@ bool evaluate(const CalibrationContext& c, const double* x, double* r) {
     e.values.push_back(x[i]);
   }
   try {
+    if (c.tethered) {
+      const bool ok = evaluateTethered(c, v, r, &e);
+      c.log->push_back(e);
+      return ok;
+    }
     const FlightCoreModel model(v);
     SimulationOptions sim;
     e.settled = settledFreeFlight(model, o.target, sim, o.settled);
@@ -55,6 +83,21 @@ bool evaluate(const CalibrationContext& c, const double* x, double* r) {
   for (std::size_t i = 0; i < 3; ++i) r[i] = e.residual[i];
   return true;
 }
+
+// Stops Ceres as soon as an accepted iterate meets the tolerance (cost = 0.5 |r|^2 with the
+// residuals in deg, 0.1 m/s and deg: |r_i| <= tolerance for all i when |r| <= tolerance).
+class ToleranceCallback : public ceres::IterationCallback {
+ public:
+  explicit ToleranceCallback(double tolerance) : tol_(tolerance) {}
+  ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (s.step_is_successful || s.iteration == 0)
+      if (2.0 * s.cost <= tol_ * tol_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
+    return ceres::SOLVER_CONTINUE;
+  }
+
+ private:
+  double tol_;
+};
 
 struct Functor {
   const CalibrationContext* c;
@@ -132,41 +175,52 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
   std::vector<double> x;
   for (const CalibrationVariable& v : options.variables) x.push_back(v.initial);
   CalibrationContext ctx{&base, &options, &s.log};
-  Functor f{&ctx};
-  ceres::NumericDiffOptions nd;
-  nd.relative_step_size = 1e-3;
-  ceres::CostFunction* cost = nullptr;
-  if (n == 1)
-    cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 1>(
-        new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
-  else if (n == 2)
-    cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 2>(
-        new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
-  else
-    cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 3>(
-        new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
-  ceres::Problem problem;
-  problem.AddResidualBlock(cost, nullptr, x.data());
-  for (int i = 0; i < n; ++i) {
-    problem.SetParameterLowerBound(x.data(), i, options.variables[static_cast<std::size_t>(i)].lower);
-    problem.SetParameterUpperBound(x.data(), i, options.variables[static_cast<std::size_t>(i)].upper);
-  }
-  ceres::Solver::Options so;
-  so.linear_solver_type = ceres::DENSE_QR;
-  so.max_num_iterations = options.max_iterations;
-  so.function_tolerance = 1e-12;
-  so.gradient_tolerance = 1e-16;
-  so.parameter_tolerance = 1e-10;
-  so.logging_type = ceres::SILENT;
-  so.num_threads = 1;
-  ceres::Solver::Summary cs;
-  ceres::Solve(so, &problem, &cs);
-  s.iterations = static_cast<int>(cs.iterations.size()) - 1;
-  s.ceres_report = cs.BriefReport();
+  auto solve = [&](bool tethered) {
+    ctx.tethered = tethered;
+    Functor f{&ctx};
+    ceres::NumericDiffOptions nd;
+    nd.relative_step_size = 1e-3;
+    ceres::CostFunction* cost = nullptr;
+    if (n == 1)
+      cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 1>(
+          new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
+    else if (n == 2)
+      cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 2>(
+          new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
+    else
+      cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 3>(
+          new Functor(f), ceres::TAKE_OWNERSHIP, 3, nd);
+    ceres::Problem problem;
+    problem.AddResidualBlock(cost, nullptr, x.data());
+    for (int i = 0; i < n; ++i) {
+      const CalibrationVariable& v = options.variables[static_cast<std::size_t>(i)];
+      problem.SetParameterLowerBound(x.data(), i, v.lower);
+      problem.SetParameterUpperBound(x.data(), i, v.upper);
+    }
+    ceres::Solver::Options so;
+    so.linear_solver_type = ceres::DENSE_QR;
+    so.max_num_iterations = options.max_iterations;
+    so.function_tolerance = 1e-12;
+    so.gradient_tolerance = 1e-16;
+    so.parameter_tolerance = 1e-10;
+    so.logging_type = ceres::SILENT;
+    so.num_threads = 1;
+    // Tethered stage: 1e-3 % of W is plenty for a starting point of the free-flight stage.
+    ToleranceCallback stop(tethered ? 1e-3 : options.tolerance);
+    so.callbacks.push_back(&stop);
+    ceres::Solver::Summary cs;
+    ceres::Solve(so, &problem, &cs);
+    s.iterations += static_cast<int>(cs.iterations.size()) - 1;
+    s.ceres_report += (s.ceres_report.empty() ? "" : " | ") + cs.BriefReport();
+    return cs.message;
+  };
+  if (options.tethered_first) solve(true);
+  const std::string ceres_message = solve(false);
   s.evaluations = static_cast<int>(s.log.size());
   s.values = x;
   // The settled flight at the solution (re-evaluated so the summary is consistent).
   double r[3] = {0, 0, 0};
+  ctx.tethered = false;
   const bool ok = evaluate(ctx, x.data(), r);
   s.settled = s.log.back().settled;
   s.evaluations = static_cast<int>(s.log.size());
@@ -182,7 +236,7 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
                 "error %.4f m/s, climb angle %.4f deg (tolerance %.3g); Ceres: %s",
                 s.converged ? "calibrated" : "not calibrated", s.iterations, s.evaluations,
                 s.theta_error_deg, s.speed_error_mps, s.climb_angle_deg, options.tolerance,
-                cs.message.c_str());
+                ceres_message.c_str());
   s.message = buf;
   s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return s;

@@ -16,6 +16,7 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
+#include "trim/settled_flight_options.hpp"
 
 namespace orni {
 
@@ -29,12 +30,6 @@ struct SettledFlight {
   double theta_drift_rad = 0.0;  ///< change of the theta mean between the window's halves
 };
 
-struct SettledFlightOptions {
-  int cycles = 120;            ///< flapping cycles flown, [2, 100000]
-  int window_cycles = 36;      ///< the last cycles averaged, [1, cycles - 1]
-  double settled_theta_drift_rad = 0.0035;  ///< max change of the theta mean between the two
-                                            ///< halves of the window (0.2 deg)
-};
 
 /// Fly freely from `point` (released in its periodic state) and average the settled motion.
 SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoint& point,

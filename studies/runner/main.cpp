@@ -13,6 +13,7 @@
 
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/aeromap_command.hpp"
+#include "studies/runner/commands/calibrate_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
@@ -81,6 +82,8 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
       return runModesStudy(study, out_dir);
     case StudyKind::kTrim:
       return runTrimStudy(study, out_dir);
+    case StudyKind::kCalibrate:
+      return runCalibrateStudy(study, out_dir);
     case StudyKind::kSweep: {
       SweepRunOptions opts;
       opts.threads = jobs;

@@ -13,6 +13,7 @@
 #include "core/model/frames.hpp"
 #include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/config/calibrate_section.hpp"
 #include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
@@ -22,13 +23,14 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, StudyKind>, 6> kKinds = {{
+constexpr std::array<std::pair<std::string_view, StudyKind>, 7> kKinds = {{
     {"simulate", StudyKind::kSimulate},
     {"modes", StudyKind::kModes},
     {"aeromap", StudyKind::kAeromap},
     {"trim", StudyKind::kTrim},
     {"optimize", StudyKind::kOptimize},
     {"sweep", StudyKind::kSweep},
+    {"calibrate", StudyKind::kCalibrate},
 }};
 
 const std::vector<std::pair<std::string, FlightMode>> kModes = {{"tethered", FlightMode::kTethered},
@@ -233,7 +235,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim", "sweep"});
+                   "aeromap", "trim", "sweep", "calibrate"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -361,6 +363,19 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
       study.trim = readTrimSection(none, study.vehicle);
     }
   }
+
+  if (top.has("calibrate") && study.kind != StudyKind::kCalibrate)
+    throw InputError::unknownKey(top.fileOf("calibrate"), top.lineOf("calibrate"), "calibrate",
+                                 "[calibrate] is only allowed in a study of kind \"calibrate\", "
+                                 "this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (study.kind == StudyKind::kCalibrate) {
+    if (!study.vehicle.body.present)
+      throw top.valueError("vehicle", "a vehicle with a [body] section (a calibration flies it)",
+                           "a vehicle without [body]");
+    TableReader c = top.requiredTable("calibrate", calibrateSectionKeys());
+    study.calibrate = readCalibrateSection(c, study.vehicle);
+  }
   top.finish();
   return study;
 }
@@ -456,6 +471,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     out.number("steady_tol", a.options.steady_tol);
   }
   if (kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
+  if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
 }
 

@@ -4,7 +4,8 @@
 // (input_error.hpp) naming file, line and key; main maps them to exit status 2.
 //
 // Top-level keys of a study file:
-//   kind     (required) "simulate" | "modes" | "aeromap" | "trim" | "optimize" | "sweep"
+//   kind     (required) "simulate" | "modes" | "aeromap" | "trim" | "optimize" | "sweep" |
+//            "calibrate" ([calibrate]: config/calibrate_section.hpp)
 //   name     (optional) run name, [A-Za-z0-9_.-]+; default: the file stem
 //   vehicle  (required) path of the vehicle file relative to the study's folder, or an inline
 //            [vehicle] table (as written into study.resolved.toml)
@@ -83,11 +84,12 @@
 #include "studies/runner/config/input_error.hpp"
 #include "trim/aero_map_options.hpp"
 #include "trim/grid_spec.hpp"
+#include "trim/calibration_options.hpp"
 #include "trim/trim_options.hpp"
 
 namespace orni::studies {
 
-enum class StudyKind { kSimulate, kModes, kAeromap, kTrim, kOptimize, kSweep };
+enum class StudyKind { kSimulate, kModes, kAeromap, kTrim, kOptimize, kSweep, kCalibrate };
 
 /// "simulate", "modes", "aeromap", "trim", "optimize", "sweep".
 std::string_view toString(StudyKind kind);
@@ -141,6 +143,7 @@ struct Study {
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
   orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
+  orni::CalibrationOptions calibrate;  ///< [calibrate] (kind calibrate; config/calibrate_section.hpp)
   /// [sweep] (kind sweep). vehicle, point, simulate and trim above then hold the base study: the
   /// run's section and the vehicle without the axes.
   SweepSettings sweep;

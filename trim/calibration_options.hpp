@@ -1,0 +1,47 @@
+// Calibration options (trim/calibration.hpp); light header for the study files.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/model/vehicle_model.hpp"
+#include "trim/settled_flight_options.hpp"
+
+namespace orni {
+
+enum class CalibrationParameter {
+  kMemberDiameterScale,  ///< wing.member_diameter_scale (spar details)
+  kBodyDragArea,         ///< body.drag_area_m2 (parasite drag)
+  kHingeX,               ///< kinematics.hinge_x_m (CG position relative to the hinge)
+  kHingeZ,               ///< kinematics.hinge_z_m
+  kTailArm,              ///< tail.arm_m
+  kPitchInertia,         ///< body.pitch_inertia_kgm2
+};
+/// The vehicle-file key ("wing.member_diameter_scale", ...).
+const char* keyOf(CalibrationParameter p);
+/// The parameter of a key, or false.
+bool parseCalibrationParameter(const std::string& key, CalibrationParameter* p);
+/// Read / write the parameter's value on a vehicle (SI = file units for these keys).
+double valueOf(const VehicleModel& v, CalibrationParameter p);
+void setValue(VehicleModel* v, CalibrationParameter p, double value);
+
+struct CalibrationVariable {
+  CalibrationParameter parameter = CalibrationParameter::kBodyDragArea;
+  double initial = 0.0, lower = 0.0, upper = 0.0;
+};
+
+struct CalibrationOptions {
+  std::vector<CalibrationVariable> variables;  ///< 1-3, distinct, lower <= initial <= upper
+  OperatingPoint target;                       ///< published trim point (theta, U, tail, f)
+  SettledFlightOptions settled;                ///< free flights of each evaluation
+  double tolerance = 0.01;  ///< converged when |theta err| <= tol deg, |U err| <= tol m/s, |climb
+                            ///< angle| <= tol deg
+  int max_iterations = 20;
+  /// First solve the cheaper Eq. (4) version (tethered cycle means in equilibrium at the target)
+  /// from the initial values, then the free-flight one from its result: the settled free flight
+  /// needs a vehicle that roughly flies to settle at all.
+  bool tethered_first = true;
+  bool IsValid(std::string* why) const;
+};
+
+}  // namespace orni
