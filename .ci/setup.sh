@@ -45,8 +45,11 @@ case "$what" in
   main)
     # The wind-tunnel validation case of the paper (Fig. 2): RFW at theta 0 and 20 deg.
     "$build_dir/studies/runner/ornithopter" run studies/paper/fig2_rfw_theta0.toml \
-      studies/paper/fig2_rfw_theta20.toml -o results/paper
-    echo "setup: figures and tables in results/paper/fig2_rfw_theta0 and results/paper/fig2_rfw_theta20"
+      studies/paper/fig2_rfw_theta20.toml studies/paper/table3_trim.toml \
+      studies/paper/fig6_8_free_flight.toml -o results/paper
+    echo "setup: the wind-tunnel rig (paper Fig. 2) in results/paper/fig2_rfw_theta0 and _theta20,"
+    echo "setup: the published trim point solved in results/paper/table3_trim/summary.json and its"
+    echo "setup: free flight (Figs. 6-8) in results/paper/fig6_8_free_flight/flight.png"
     ;;
   test)
     ctest --test-dir "$build_dir" --output-on-failure -j "$jobs"
