@@ -248,16 +248,16 @@ cycles = 4
 }
 
 TEST_F(CommandsSweep, PointsWithoutAResultHaveTheirStatusAndReasonAndEmptyCells) {
-  // The paper's ornithopter trims at 6 Hz; at 1 kg it cannot, within 10 iterations.
+  // The paper's ornithopter trims at 12 Hz (Table 3); at 10 kg it cannot, within 10 iterations.
   const Study sweep =
       loadStudyFile(write("trim.toml", "kind = \"sweep\"\n" + vehicle("efw_magpie.toml") + R"(
 [sweep]
 run = "trim"
-axes = [{ key = "body.mass_kg", values = [0.118, 1.0] }]
+axes = [{ key = "body.mass_kg", values = [0.118, 10.0] }]
 [trim]
-freq_hz = 6.0
+freq_hz = 12.0
 max_iterations = 10
-initial = { theta_mean_deg = 14.0, speed_mps = 8.0, tail_angle_deg = 30.0 }
+initial = { theta_mean_deg = 9.2, speed_mps = 10.8, tail_angle_deg = 11.85 }
 )"));
   ASSERT_EQ(runSweepStudy(sweep, dir_, quiet(2)), 0);
   const std::string csv = readAll(dir_ / "sweep.csv");
@@ -270,13 +270,13 @@ initial = { theta_mean_deg = 14.0, speed_mps = 8.0, tail_angle_deg = 30.0 }
             0u);
   const std::vector<std::string> ok = cells(rows[2], 17);
   EXPECT_EQ(ok[1], "ok");
-  EXPECT_NEAR(number(ok[2]), 14.35, 0.5);  // theta (README: 14.35 deg at 6 Hz)
-  EXPECT_NEAR(number(ok[3]), 8.15, 0.3);   // U
-  EXPECT_EQ(ok[5], "6");
+  EXPECT_NEAR(number(ok[2]), 9.2, 0.5);   // theta (paper Table 3)
+  EXPECT_NEAR(number(ok[3]), 10.8, 0.3);  // U
+  EXPECT_EQ(ok[5], "12");
   EXPECT_LT(std::abs(number(ok[11])), 1e-4);  // scaled residual
   EXPECT_FALSE(ok[14].empty());               // the free-flight verdict
-  // 1 kg: status and reason, every value cell empty (19 of them).
-  EXPECT_EQ(rows[3].rfind("1,not_converged,,,,,,,,,,,,,,,,,,,,\"", 0), 0u) << rows[3];
+  // 10 kg: status and reason, every value cell empty (19 of them).
+  EXPECT_EQ(rows[3].rfind("10,not_converged,,,,,,,,,,,,,,,,,,,,\"", 0), 0u) << rows[3];
   EXPECT_NE(rows[3].find("tolerance"), std::string::npos);
   const std::string summary = readAll(dir_ / "summary.json");
   EXPECT_NE(summary.find("\"status\": \"not_converged\""), std::string::npos);
