@@ -26,10 +26,12 @@ FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const Oper
   o.record_history = false;
   const FreeFlightSummary s = simulateFree(model, trim, o, nullptr);
   v.message = s.message;
+  v.horizon_s = options.cycles / trim.freq_hz;
   if (s.status == SimulationStatus::kFailed) {
     v.status = FreeFlightStatus::kFailed;
     return v;
   }
+  v.flown_s = s.end_time_s;
   if (!s.analysed) {  // diverged
     v.status = FreeFlightStatus::kUnbounded;
     v.bounded = false;
