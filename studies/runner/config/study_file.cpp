@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "studies/runner/config/optimize_section.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
@@ -219,7 +220,7 @@ Study loadStudyFile(const fs::path& study_file) {
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim"});
+                   "aeromap", "trim", "optimize"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -339,6 +340,20 @@ Study loadStudyFile(const fs::path& study_file) {
       study.trim = readTrimSection(none, study.vehicle);
     }
   }
+
+  if (top.has("optimize") && study.kind != StudyKind::kOptimize)
+    throw InputError::unknownKey(top.fileOf("optimize"), top.lineOf("optimize"), "optimize",
+                                 "[optimize] is only allowed in a study of kind \"optimize\", "
+                                 "this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (study.kind == StudyKind::kOptimize) {
+    if (!study.vehicle.body.present)
+      throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
+                                      "trim)",
+                           "a vehicle without [body]");
+    TableReader opt = top.requiredTable("optimize", optimizeSectionKeys());
+    study.optimize = readOptimizeSection(opt, study.vehicle);
+  }
   top.finish();
   return study;
 }
@@ -428,6 +443,7 @@ std::string resolvedStudyToml(const Study& study) {
     out.number("steady_tol", a.options.steady_tol);
   }
   if (study.kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
+  if (study.kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
   return out.str();
 }

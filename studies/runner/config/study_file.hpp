@@ -42,7 +42,11 @@
 //            { <unknown> = [lower, upper] }, max_iterations, residual_tol, function_tol, rel_tol,
 //            steady_tol, max_cycles, derivative_cycles; see config/trim_section.hpp for ranges and
 //            defaults. A trim study needs a vehicle with a [body] (its mass sets the weight).
-// Sections of the other kinds ([optimize], [sweep]) are not defined yet and are rejected.
+//   [optimize] (required for kind = "optimize", rejected otherwise) the design optimisation:
+//            algorithm, objective, max_evaluations, starts, seed, freq_hz, variables, and the
+//            tables [optimize.constraints], [optimize.weights], [optimize.trim]; see
+//            config/optimize_section.hpp. Needs a vehicle with a [body].
+// The section of the other kind ([sweep]) is not defined yet and is rejected.
 #pragma once
 
 #include <filesystem>
@@ -53,6 +57,9 @@
 
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
+#include "optimize/design_options.hpp"
+#include "optimize/design_space.hpp"
+#include "optimize/optimizer_options.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "trim/aero_map_options.hpp"
 #include "trim/grid_spec.hpp"
@@ -80,6 +87,13 @@ struct AeromapSettings {
   orni::SimulationOptions options = orni::trim::AeroMapOptions::defaultSimulation();
 };
 
+/// The [optimize] section (kind "optimize"; config/optimize_section.hpp).
+struct OptimizeSettings {
+  orni::opt::OptimizerOptions optimizer;  ///< threads: set by the command line (-j)
+  orni::opt::DesignSpace space;           ///< the design variables, resolved against the vehicle
+  orni::opt::DesignProblemOptions problem;  ///< objective, constraints, the trim of every design
+};
+
 struct Study {
   StudyKind kind = StudyKind::kSimulate;
   std::string name;                    ///< run name (output folder results/<name>/)
@@ -93,6 +107,7 @@ struct Study {
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
   orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
+  OptimizeSettings optimize;           ///< [optimize] (kind optimize)
 };
 
 /// The axis of a grid spec (values = gridValues(spec)).
@@ -119,8 +134,8 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
 /// study.resolved.toml: a complete TOML document with every default filled in: kind, name,
 /// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate; in free
 /// mode also [simulate.free] with every free-flight option), [aeromap] with its axes (specs as
-/// "A:B:N", lists as arrays) and options (kind aeromap) or [trim] with all options (kind trim),
-/// and the
+/// "A:B:N", lists as arrays) and options (kind aeromap), [trim] with all options (kind trim) or
+/// [optimize] with all options, sub-tables and variables (kind optimize), and the
 /// resolved vehicle as a [vehicle] table in file units and key names. loadStudyFile reads it back
 /// into the same Study (apart from study_path).
 std::string resolvedStudyToml(const Study& study);

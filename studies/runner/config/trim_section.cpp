@@ -176,10 +176,17 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
   return o;
 }
 
-void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out) {
-  out.header({"trim"});
-  out.number("freq_hz", o.initial.freq_hz,
-             "fixed, or the initial guess when freq_hz is an unknown");
+void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out,
+                      const std::vector<std::string>& prefix, bool with_freq) {
+  auto sub = [&prefix](const char* name) {
+    std::vector<std::string> parts = prefix;
+    parts.emplace_back(name);
+    return parts;
+  };
+  out.header(prefix);
+  if (with_freq)
+    out.number("freq_hz", o.initial.freq_hz,
+               "fixed, or the initial guess when freq_hz is an unknown");
   std::vector<std::string> unknowns;
   for (TrimUnknown u : o.unknowns) unknowns.emplace_back(orni::trimUnknownName(u));
   out.stringArray("unknowns", unknowns,
@@ -191,11 +198,11 @@ void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out) {
   out.number("steady_tol", o.simulation.steady_tol);
   out.integer("max_cycles", o.simulation.cycles);
   out.integer("derivative_cycles", o.derivative_cycles);
-  out.header({"trim", "initial"});
+  out.header(sub("initial"));
   for (TrimUnknown u : {TrimUnknown::kThetaMean, TrimUnknown::kSpeed, TrimUnknown::kTailAngle})
     out.scaled(orni::trimUnknownName(u), orni::unknownValue(o.initial, u),
                orni::trimUnknownScale(u));
-  out.header({"trim", "bounds"});
+  out.header(sub("bounds"));
   for (TrimUnknown u : orni::kAllTrimUnknowns) {
     const TrimBounds& b = o.bounds[static_cast<std::size_t>(orni::trimIndex(u))];
     const double scale = orni::trimUnknownScale(u);

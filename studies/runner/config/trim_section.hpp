@@ -42,8 +42,10 @@ std::vector<std::string> trimSectionKeys();
 /// Calls trim.finish(). Throws InputError.
 orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle);
 
-/// Writes [trim] with every key (initial and bounds as sub-tables), so that readTrimSection
-/// reproduces `options`.
-void writeTrimSection(const orni::TrimOptions& options, TomlWriter& out);
+/// Writes [trim] (or the table `prefix`, e.g. {"optimize", "trim"}) with every key (initial and
+/// bounds as sub-tables), so that readTrimSection reproduces `options`; freq_hz only when
+/// `with_freq` (an optimisation keeps it in [optimize]).
+void writeTrimSection(const orni::TrimOptions& options, TomlWriter& out,
+                      const std::vector<std::string>& prefix = {"trim"}, bool with_freq = true);
 
 }  // namespace orni::studies
