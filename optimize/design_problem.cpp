@@ -117,7 +117,7 @@ const std::vector<DesignValueInfo>& DesignProblem::valueInfo() {
       {"trim_converged", "-", 1.0},       {"theta_mean_deg", "deg", kDegToRad},
       {"speed_mps", "m/s", 1.0},          {"tail_angle_deg", "deg", kDegToRad},
       {"freq_hz", "Hz", 1.0},             {"residual_scaled_max", "-", 1.0},
-      {"power_hinge_W", "W", 1.0},        {"power_aero_W", "W", 1.0},
+      {"hinge_power_W", "W", 1.0},        {"aero_power_W", "W", 1.0},
       {"bounded", "-", 1.0},              {"norm_ratio_max", "-", 1.0},
       {"free_flight_time_s", "s", 1.0},
       {"pitch_amplitude_deg", "deg", kDegToRad},
