@@ -20,6 +20,12 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kTrimmedFeasible = -1.0;
 constexpr double kViolatedFloor = 0.01;
 
+/// The free flight went the distance and was judged (norm and drift exist).
+bool flown_analysed(const FreeFlightVerification& f) {
+  return (f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded) &&
+         std::isfinite(f.norm_ratio_max);
+}
+
 struct DesignWorkspace : ProblemWorkspace {
   std::optional<OperatingPoint> last_trim;  ///< last converged trim of this start
 };
@@ -119,7 +125,7 @@ const std::vector<DesignValueInfo>& DesignProblem::valueInfo() {
       {"freq_hz", "Hz", 1.0},             {"residual_scaled_max", "-", 1.0},
       {"hinge_power_W", "W", 1.0},        {"aero_power_W", "W", 1.0},
       {"bounded", "-", 1.0},              {"norm_ratio_max", "-", 1.0},
-      {"free_flight_time_s", "s", 1.0},
+      {"free_flight_time_s", "s", 1.0},   {"drift", "-", 1.0},
       {"pitch_amplitude_deg", "deg", kDegToRad},
       {"tip_deflection_m", "m", 1.0},     {"structural_mass_kg", "kg", 1.0},
       {"periodic_runs", "-", 1.0},
@@ -175,6 +181,7 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
   v[kBounded] = flown ? (f.bounded ? 1.0 : 0.0) : kNaN;
   v[kNormRatioMax] = flown ? f.norm_ratio_max : kNaN;
   v[kFlownTime] = f.flown_s;
+  v[kDrift] = f.drift;
   v[kPitchAmplitude] = d.pitch_amplitude_rad;
   v[kTipDeflection] = d.tip_deflection_m;
   v[kPeriodicRuns] = s.evaluations;
@@ -200,25 +207,42 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
                             kViolatedFloor)
                  : kNaN;
   e.constraints.push_back(g_trim);
+
+  // A diverged free flight: from divergence_ratio (diverging at the end of the horizon, above
+  // the flown values) to twice that (at once).
+  const double divergence = options_.trim.free_flight.free.divergence_ratio;
+  const double diverged =
+      divergence * (1.0 + (std::isfinite(f.flown_s) && f.horizon_s > 0.0
+                                ? std::clamp(1.0 - f.flown_s / f.horizon_s, 0.0, 1.0)
+                                : 1.0));
+  // Without a trim the quantities at the trim point do not exist: the constraints that need them
+  // are worse than any flown value and follow the trim constraint (so that the largest violation,
+  // which COBYLA reduces first, still says how far from trim the design is).
+  const double untrimmed = s.converged ? kNaN : g_trim + 2.0 * divergence;
+  const bool diverged_flight = f.status == FreeFlightStatus::kUnbounded && !flown_analysed(f);
   if (c.bounded) {
-    double g = kNaN;
-    if (flown && std::isfinite(f.norm_ratio_max))
-      g = f.bounded ? f.norm_ratio_max - 1.0 : std::max(f.norm_ratio_max - 1.0, kViolatedFloor);
-    else if (f.status == FreeFlightStatus::kUnbounded) {  // diverged before the verdict
-      // The norm passed divergence_ratio: g from divergence_ratio - 1 (diverging at the end of
-      // the horizon, continuous with a bounded-norm value) to twice that (at once).
-      const double base = options_.trim.free_flight.free.divergence_ratio - 1.0;
-      const double early = std::isfinite(f.flown_s) && f.horizon_s > 0.0
-                               ? std::clamp(1.0 - f.flown_s / f.horizon_s, 0.0, 1.0)
-                               : 1.0;
-      g = base * (1.0 + early);
+    double g = untrimmed;
+    if (flown_analysed(f)) {
+      // Eq. (5) holds when the norm stays <= 1 and the drift <= its limit: both as one measure.
+      g = f.norm_ratio_max - 1.0;
+      if (std::isfinite(f.drift)) g = std::max(g, f.drift - f.drift_limit);
+      if (!f.bounded) g = std::max(g, kViolatedFloor);
+    } else if (diverged_flight) {
+      g = diverged;
     }
     e.constraints.push_back(g);
   }
-  if (c.pitch_amplitude_max_rad > 0.0)
-    e.constraints.push_back(d.pitch_amplitude_rad / c.pitch_amplitude_max_rad - 1.0);
+  if (c.pitch_amplitude_max_rad > 0.0) {
+    double g = untrimmed;
+    if (std::isfinite(d.pitch_amplitude_rad))
+      g = d.pitch_amplitude_rad / c.pitch_amplitude_max_rad - 1.0;
+    else if (diverged_flight)
+      g = diverged;
+    e.constraints.push_back(g);
+  }
   if (c.tip_deflection_max_m > 0.0)
-    e.constraints.push_back(d.tip_deflection_m / c.tip_deflection_max_m - 1.0);
+    e.constraints.push_back(s.converged ? d.tip_deflection_m / c.tip_deflection_max_m - 1.0
+                                        : untrimmed);
   if (c.structural_mass_max_kg > 0.0)
     e.constraints.push_back(d.structural_mass_kg / c.structural_mass_max_kg - 1.0);
   return e;

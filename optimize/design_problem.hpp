@@ -19,17 +19,23 @@
 // Constraints g_i <= 0, dimensionless:
 //   trimmed          -1 for a converged trim; else max(log10(r / residual_tol), 0.01) with r the
 //                    max scaled residual of Eq. (4) at the final iterate (how far from trim);
-//   bounded          (optional, default on) norm_ratio_max - 1 when the free flight is bounded;
-//                    max(norm_ratio_max - 1, 0.01) when not (drift); when it diverged (the norm
-//                    passed divergence_ratio) (divergence_ratio - 1) (2 - t_diverged / horizon),
-//                    so that diverging later is closer to bounded;
-//   pitch_amplitude  (optional) amplitude / limit - 1;
+//   bounded          (optional, default on) max(norm_ratio_max - 1, drift - drift_limit) over
+//                    the analysed window (both in units of the bounds R_i): <= 0 exactly when
+//                    Eq. (5) holds (norm <= 1, secular drift within its limit), at least 0.01
+//                    when not; when the flight diverged (the norm passed divergence_ratio)
+//                    divergence_ratio (2 - t_div / horizon), so that diverging later is closer to
+//                    bounded and any diverged flight is worse than a flown one;
+//   pitch_amplitude  (optional) amplitude / limit - 1 (a diverged flight: as for bounded);
 //   tip_deflection   (optional, flexible wing) max |tip deflection| over one periodic cycle of the
 //                    tethered run at the trim point / limit - 1;
 //   structural_mass  (optional) mass of both wings (members + skin) / limit - 1.
-// A value that does not exist (no converged trim: no free flight) is NaN, which the driver hands
-// to NLopt as the finite failure penalty. An evaluation whose model cannot be built or whose trim
-// throws is kFailed; nothing throws out of evaluate().
+// Without a converged trim the trim-point quantities do not exist: bounded, pitch_amplitude and
+// tip_deflection are then trimmed + 2 divergence_ratio, worse than any flown value and
+// following the trim constraint, so that the largest violation (which COBYLA reduces first) still
+// measures the distance from trim. A value that cannot be computed otherwise (the free flight or
+// the tethered run failed) is NaN, which the driver hands to NLopt as the finite failure penalty.
+// An evaluation whose model cannot be built or whose trim throws is kFailed; nothing throws out of
+// evaluate().
 #pragma once
 
 #include <limits>
@@ -83,6 +89,7 @@ enum DesignValue : int {
   kBounded,            ///< 1 / 0 (NaN: no free flight)
   kNormRatioMax,       ///< -
   kFlownTime,          ///< s flown freely before the horizon or the divergence
+  kDrift,              ///< secular drift over the window, in units of the state's bound
   kPitchAmplitude,     ///< rad
   kTipDeflection,      ///< m
   kStructuralMass,     ///< kg, both wings

@@ -55,7 +55,7 @@ struct OptimizerOptions {
   /// Finite stand-ins handed to NLopt for a failed evaluation or a non-finite value (never NaN):
   /// objective failure_objective, every constraint failure_constraint (> 0, violated). Finite.
   double failure_objective = 1e3;
-  double failure_constraint = 10.0;
+  double failure_constraint = 100.0;
 
   /// The polish budget of isres (polish_evaluations resolved).
   int polishEvaluations() const;

@@ -187,10 +187,11 @@ std::string convergenceFigure(const Study& study, const DesignProblem& p,
     << " == 0) ? ($" << c.violation << " > 1e-4 ? $" << c.violation
     << " : 1e-4) : 1/0) with points pt 6 ps 1.2 lc rgb '#c0392b' title 'infeasible: violation', "
        "'' skip 2 using 1:($"
+    << c.feasible
+    << " == 1 ? 1e-4 : 1/0) with points pt 7 ps 1.2 lc rgb '#1e8449' title 'feasible (at 1e-4)', "
+       "'' skip 2 using 1:($"
     << c.failed << " == 1 ? $" << c.violation
-    << " : 1/0) with points pt 2 ps 1.2 lc rgb '#333333' title 'failed (penalty)', "
-    << study.optimize.optimizer.constraint_tol + 1e-4
-    << " with lines dt 2 lc rgb '#777777' title 'feasible below'\n";
+    << " : 1/0) with points pt 2 ps 1.2 lc rgb '#333333' title 'failed (penalty)'\n";
   g << "unset multiplot\n";
   return g.str();
 }
