@@ -1,6 +1,7 @@
 #include "trim/free_flight_check.hpp"
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/analysis/limit_cycle.hpp"
 #include "core/dynamics/free_flight.hpp"
 
 namespace orni {
@@ -26,10 +27,12 @@ FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const Oper
   o.record_history = false;
   const FreeFlightSummary s = simulateFree(model, trim, o, nullptr);
   v.message = s.message;
+  v.horizon_s = options.cycles / trim.freq_hz;
   if (s.status == SimulationStatus::kFailed) {
     v.status = FreeFlightStatus::kFailed;
     return v;
   }
+  v.flown_s = s.end_time_s;
   if (!s.analysed) {  // diverged
     v.status = FreeFlightStatus::kUnbounded;
     v.bounded = false;
@@ -38,6 +41,8 @@ FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const Oper
   v.bounded = s.verdict.bounded;
   v.status = v.bounded ? FreeFlightStatus::kBounded : FreeFlightStatus::kUnbounded;
   v.norm_ratio_max = s.verdict.norm_ratio_max;
+  v.drift = s.verdict.drift_per_window;
+  v.drift_limit = kDefaultDriftLimit;  // simulateFree judges with boundedNorm's default
   v.theta_min_rad = s.limit_cycle.theta_min_rad;
   v.theta_max_rad = s.limit_cycle.theta_max_rad;
   v.altitude_p2p_m = s.limit_cycle.altitude_p2p_fast_m;

@@ -43,6 +43,14 @@ struct FreeFlightVerification {
   double theta_max_rad = std::numeric_limits<double>::quiet_NaN();
   double altitude_p2p_m = std::numeric_limits<double>::quiet_NaN();
   double dominant_freq_hz = std::numeric_limits<double>::quiet_NaN();
+  /// Time flown (s): the horizon for a run that went the distance, the divergence time of one
+  /// that diverged (a measure of how far from bounded it is; NaN when the run failed).
+  double flown_s = std::numeric_limits<double>::quiet_NaN();
+  double horizon_s = std::numeric_limits<double>::quiet_NaN();  ///< cycles / f
+  /// Secular drift of the worst state over the analysed window, in units of its bound R_i (the
+  /// criterion's drift test fails above drift_limit); NaN when not analysed.
+  double drift = std::numeric_limits<double>::quiet_NaN();
+  double drift_limit = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Fly the vehicle freely from the trim point `trim` (options.cycles cycles, default tolerances)

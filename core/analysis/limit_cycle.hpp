@@ -65,8 +65,11 @@ struct StateSeries {
   const char* name;
 };
 
+/// Default drift limit of boundedNorm (scaled trend change over the window).
+constexpr double kDefaultDriftLimit = 0.5;
+
 BoundedNormResult boundedNorm(const std::vector<double>& t_s,
                               const std::vector<StateSeries>& states, std::size_t first,
-                              int samples_per_cycle, double drift_limit = 0.5);
+                              int samples_per_cycle, double drift_limit = kDefaultDriftLimit);
 
 }  // namespace orni

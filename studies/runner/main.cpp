@@ -15,6 +15,7 @@
 #include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/commands/calibrate_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
+#include "studies/runner/commands/optimize_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/commands/sweep_command.hpp"
@@ -88,6 +89,11 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
       SweepRunOptions opts;
       opts.threads = jobs;
       return runSweepStudy(study, out_dir, opts);
+    }
+    case StudyKind::kOptimize: {
+      OptimizeRunOptions opts;
+      opts.threads = jobs;
+      return runOptimizeStudy(study, out_dir, opts);
     }
     default:
       std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
@@ -189,11 +195,19 @@ int main(int argc, char** argv) {
   trim->add_option("-o,--output", trim_out,
                    "Output folder (default results/<vehicle name>_trim)");
 
-  // Later issues: listed so that --help shows the whole contract.
-  for (const char* name : {"optimize"}) {
-    auto* c = app.add_subcommand(name, std::string(name) + " (not available in this version)");
-    c->allow_extras();
-  }
+  // optimize
+  auto* opt = app.add_subcommand(
+      "optimize", "Design optimisation with NLopt (kind = \"optimize\" study): design variables "
+                  "(member sections and layout, tail area, aspect ratio and arm) sized so that "
+                  "the vehicle trims, flies bounded and needs the least flapping power; resumable");
+  std::string opt_study, opt_out;
+  int opt_jobs = 1;
+  opt->add_option("STUDY", opt_study, "Study file (TOML) of kind \"optimize\"")->required();
+  opt->add_option("-o,--output", opt_out,
+                  "Output folder (default results/<study name>); an interrupted run resumes from "
+                  "the journal there");
+  opt->add_option("-j,--jobs", opt_jobs, "Worker threads (over the starts of a multi-start run)")
+      ->check(CLI::Range(1, 1024));
 
   try {
     app.parse(argc, argv);
@@ -297,6 +311,14 @@ int main(int argc, char** argv) {
       std::string why;
       if (!o.IsValid(&why)) throw CliError("command line: trim options: " + why);
       return runStudy(study, outputFolder(trim_out, study, false), 1);
+    }
+    if (opt->parsed()) {
+      const Study study = loadStudyFile(opt_study);
+      if (study.kind != StudyKind::kOptimize)
+        throw CliError("command line: " + opt_study +
+                       ": expected a study of kind \"optimize\", got kind \"" +
+                       std::string(toString(study.kind)) + "\" (run it with `ornithopter run`)");
+      return runStudy(study, outputFolder(opt_out, study, false), opt_jobs);
     }
     if (plot->parsed()) {
       const int n = redrawFigures(plot_dir);

@@ -12,6 +12,7 @@
 
 #include "core/model/frames.hpp"
 #include "studies/runner/config/study_reader.hpp"
+#include "studies/runner/config/optimize_section.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/config/calibrate_section.hpp"
 #include "studies/runner/config/trim_section.hpp"
@@ -235,7 +236,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim", "sweep", "calibrate"});
+                   "aeromap", "trim", "sweep", "calibrate", "optimize"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -376,6 +377,20 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
     TableReader c = top.requiredTable("calibrate", calibrateSectionKeys());
     study.calibrate = readCalibrateSection(c, study.vehicle);
   }
+
+  if (top.has("optimize") && study.kind != StudyKind::kOptimize)
+    throw InputError::unknownKey(top.fileOf("optimize"), top.lineOf("optimize"), "optimize",
+                                 "[optimize] is only allowed in a study of kind \"optimize\", "
+                                 "this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (study.kind == StudyKind::kOptimize) {
+    if (!study.vehicle.body.present)
+      throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
+                                      "trim)",
+                           "a vehicle without [body]");
+    TableReader opt = top.requiredTable("optimize", optimizeSectionKeys());
+    study.optimize = readOptimizeSection(opt, study.vehicle);
+  }
   top.finish();
   return study;
 }
@@ -472,6 +487,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
   }
   if (kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
   if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate, out);
+  if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
 }
 

@@ -71,6 +71,10 @@
 //            operating_point.freq_hz). The study without the axes must itself be valid, and so
 //            must every point: an invalid value is an error at that axis ('sweep.axes[1].values'),
 //            an invalid combination an error at 'sweep.axes' naming the point.
+//   [optimize] (required for kind = "optimize", rejected otherwise) the design optimisation:
+//            algorithm, objective, max_evaluations, starts, seed, freq_hz, variables, and the
+//            tables [optimize.constraints], [optimize.weights], [optimize.trim]; see
+//            config/optimize_section.hpp. Needs a vehicle with a [body].
 #pragma once
 
 #include <filesystem>
@@ -81,6 +85,9 @@
 
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
+#include "optimize/design_options.hpp"
+#include "optimize/design_space.hpp"
+#include "optimize/optimizer_options.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "trim/aero_map_options.hpp"
 #include "trim/grid_spec.hpp"
@@ -130,6 +137,13 @@ struct SweepSettings {
   std::vector<std::string> derived_keys;
 };
 
+/// The [optimize] section (kind "optimize"; config/optimize_section.hpp).
+struct OptimizeSettings {
+  orni::opt::OptimizerOptions optimizer;  ///< threads: set by the command line (-j)
+  orni::opt::DesignSpace space;           ///< the design variables, resolved against the vehicle
+  orni::opt::DesignProblemOptions problem;  ///< objective, constraints, the trim of every design
+};
+
 struct Study {
   StudyKind kind = StudyKind::kSimulate;
   std::string name;                    ///< run name (output folder results/<name>/)
@@ -147,6 +161,7 @@ struct Study {
   /// [sweep] (kind sweep). vehicle, point, simulate and trim above then hold the base study: the
   /// run's section and the vehicle without the axes.
   SweepSettings sweep;
+  OptimizeSettings optimize;           ///< [optimize] (kind optimize)
 };
 
 /// True for an axis key of the run's analysis section ("trim.*" in a trim sweep), false for a
@@ -182,12 +197,12 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
 /// default that is the same at every point; SweepSettings::derived_keys), kind, name,
 /// vehicle_source (the vehicle path as given), [simulate] with all options (kind simulate; in free
 /// mode also [simulate.free] with every free-flight option), [aeromap] with its axes (specs as
-/// "A:B:N", lists as arrays) and options (kind aeromap) or [trim] with all options (kind trim),
-/// and the
-/// resolved vehicle as a [vehicle] table in file units and key names; a sweep writes [sweep] with
-/// run and its axes as [[sweep.axes]] tables, then its base study's section and vehicle.
-/// loadStudyFile reads it back into the same Study (apart from study_path); a sweep's points are
-/// the same (loadStudyFile checks this when it loads a sweep).
+/// "A:B:N", lists as arrays) and options (kind aeromap), [trim] with all options (kind trim),
+/// [calibrate] (kind calibrate) or [optimize] with all options, sub-tables and variables (kind
+/// optimize), and the resolved vehicle as a [vehicle] table in file units and key names; a sweep
+/// writes [sweep] with run and its axes as [[sweep.axes]] tables, then its base study's section
+/// and vehicle. loadStudyFile reads it back into the same Study (apart from study_path); a sweep's
+/// points are the same (loadStudyFile checks this when it loads a sweep).
 std::string resolvedStudyToml(const Study& study);
 
 }  // namespace orni::studies

@@ -80,7 +80,7 @@ std::vector<TrimUnknown> readUnknowns(TableReader& trim) {
 std::vector<std::string> trimSectionKeys() {
   return {"freq_hz",      "unknowns", "initial",    "bounds",     "max_iterations",
           "residual_tol", "function_tol", "rel_tol", "steady_tol", "max_cycles",
-          "derivative_cycles"};
+          "derivative_cycles", "refine_in_free_flight", "refine_cycles"};
 }
 
 orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle) {
@@ -162,6 +162,8 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
       trim.optionalDouble("steady_tol", o.simulation.steady_tol, Range::openClosed(0.0, 0.1));
   o.simulation.cycles = trim.optionalInt("max_cycles", o.simulation.cycles, 1, 100000);
   o.derivative_cycles = trim.optionalInt("derivative_cycles", o.derivative_cycles, 1, 1000);
+  o.refine_in_free_flight = trim.optionalBool("refine_in_free_flight", o.refine_in_free_flight);
+  o.refine_cycles = trim.optionalInt("refine_cycles", o.refine_cycles, 6, 10000);
   trim.finish();
 
   std::string why;
@@ -176,10 +178,17 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
   return o;
 }
 
-void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out) {
-  out.header({"trim"});
-  out.number("freq_hz", o.initial.freq_hz,
-             "fixed, or the initial guess when freq_hz is an unknown");
+void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out,
+                      const std::vector<std::string>& prefix, bool with_freq) {
+  auto sub = [&prefix](const char* name) {
+    std::vector<std::string> parts = prefix;
+    parts.emplace_back(name);
+    return parts;
+  };
+  out.header(prefix);
+  if (with_freq)
+    out.number("freq_hz", o.initial.freq_hz,
+               "fixed, or the initial guess when freq_hz is an unknown");
   std::vector<std::string> unknowns;
   for (TrimUnknown u : o.unknowns) unknowns.emplace_back(orni::trimUnknownName(u));
   out.stringArray("unknowns", unknowns,
@@ -191,11 +200,14 @@ void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out) {
   out.number("steady_tol", o.simulation.steady_tol);
   out.integer("max_cycles", o.simulation.cycles);
   out.integer("derivative_cycles", o.derivative_cycles);
-  out.header({"trim", "initial"});
+  out.boolean("refine_in_free_flight", o.refine_in_free_flight,
+              "level settled free flight (trim/free_flight_trim.hpp)");
+  out.integer("refine_cycles", o.refine_cycles);
+  out.header(sub("initial"));
   for (TrimUnknown u : {TrimUnknown::kThetaMean, TrimUnknown::kSpeed, TrimUnknown::kTailAngle})
     out.scaled(orni::trimUnknownName(u), orni::unknownValue(o.initial, u),
                orni::trimUnknownScale(u));
-  out.header({"trim", "bounds"});
+  out.header(sub("bounds"));
   for (TrimUnknown u : orni::kAllTrimUnknowns) {
     const TrimBounds& b = o.bounds[static_cast<std::size_t>(orni::trimIndex(u))];
     const double scale = orni::trimUnknownScale(u);

@@ -22,6 +22,9 @@
 //   steady_tol        periodic steady-state tolerance of the residual runs (0, 0.1], default 1e-5
 //   max_cycles        cycle limit of a residual run [1, 100000], default 40
 //   derivative_cycles cycles of each finite-difference run [1, 1000], default 3
+//   refine_in_free_flight  refine the Eq. (4) trim to level settled free flight (default true;
+//                     trim/free_flight_trim.hpp)
+//   refine_cycles     cycles of each settled free flight [6, 10000], default 120 (last third averaged)
 //
 // Every error is an InputError naming file, line and key ('trim.bounds.speed_mps', ...).
 #pragma once
@@ -42,8 +45,10 @@ std::vector<std::string> trimSectionKeys();
 /// Calls trim.finish(). Throws InputError.
 orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle);
 
-/// Writes [trim] with every key (initial and bounds as sub-tables), so that readTrimSection
-/// reproduces `options`.
-void writeTrimSection(const orni::TrimOptions& options, TomlWriter& out);
+/// Writes [trim] (or the table `prefix`, e.g. {"optimize", "trim"}) with every key (initial and
+/// bounds as sub-tables), so that readTrimSection reproduces `options`; freq_hz only when
+/// `with_freq` (an optimisation keeps it in [optimize]).
+void writeTrimSection(const orni::TrimOptions& options, TomlWriter& out,
+                      const std::vector<std::string>& prefix = {"trim"}, bool with_freq = true);
 
 }  // namespace orni::studies

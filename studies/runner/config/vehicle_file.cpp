@@ -416,4 +416,18 @@ std::string vehicleToToml(const VehicleModel& vehicle) {
   return out.str();
 }
 
+void validateVehicle(const VehicleModel& vehicle) {
+  const std::string name = "design vehicle";
+  toml::table root;
+  try {
+    root = toml::parse(vehicleToToml(vehicle), name);
+  } catch (const toml::parse_error& e) {
+    throw InputError::syntax(name, static_cast<int>(e.source().begin.line),
+                             std::string(e.description()));
+  }
+  ReadContext context;
+  context.file = name;
+  (void)parseVehicleTable(root, context, std::string());
+}
+
 }  // namespace orni::studies

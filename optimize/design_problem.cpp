@@ -1,0 +1,280 @@
+#include "optimize/design_problem.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <stdexcept>
+#include <utility>
+
+#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/tethered_simulation.hpp"
+#include "core/model/frames.hpp"
+#include "core/model/wing_inertia.hpp"
+
+namespace orni::opt {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+/// g of a satisfied trim constraint, and the least g of a violated one (a clear gap).
+constexpr double kTrimmedFeasible = -1.0;
+constexpr double kViolatedFloor = 0.01;
+
+/// The free flight went the distance and was judged (norm and drift exist).
+bool flown_analysed(const FreeFlightVerification& f) {
+  return (f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded) &&
+         std::isfinite(f.norm_ratio_max);
+}
+
+struct DesignWorkspace : ProblemWorkspace {
+  std::optional<OperatingPoint> last_trim;  ///< last converged trim of this start
+};
+
+/// Max |tip deflection| over the last cycle of a tethered periodic run at `point`.
+double tipDeflectionAmplitude(const FlightCoreModel& model, const OperatingPoint& point,
+                              const SimulationOptions& trim_simulation) {
+  SimulationOptions o = trim_simulation;
+  o.mode = FlightMode::kTethered;
+  o.record_history = true;
+  o.stop_when_steady = true;
+  TimeHistory h;
+  const SimulationSummary s = simulateTethered(model, point, o, &h);
+  if (s.status != SimulationStatus::kOk || h.loads.empty()) return kNaN;
+  const std::size_t n = h.loads.size();
+  const std::size_t first =
+      n > static_cast<std::size_t>(o.samples_per_cycle) ? n - 1 - o.samples_per_cycle : 0;
+  double m = 0.0;
+  for (std::size_t i = first; i < n; ++i) m = std::max(m, std::abs(h.loads[i].tip_deflection_m));
+  return m;
+}
+
+}  // namespace
+
+DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblemOptions& options,
+                                const OperatingPoint& initial_guess) {
+  DesignEvaluation e;
+  try {
+    e.structural_mass_kg = 2.0 * computeWingInertia(vehicle).total.mass_kg;
+    if (options.validate) options.validate(vehicle);
+    const FlightCoreModel model(vehicle);
+    TrimOptions t = options.trim;
+    for (TrimUnknown u : t.unknowns) setUnknownValue(&t.initial, u, unknownValue(initial_guess, u));
+    e.trim = solveTrim(model, t);
+    e.trim_attempted = true;
+    const TrimSummary& s = e.trim;
+    if (!s.converged) {
+      e.message = "trim not converged: " + s.message;
+      return e;
+    }
+    const FreeFlightVerification& f = s.free_flight;
+    if (f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded) {
+      if (std::isfinite(f.theta_max_rad) && std::isfinite(f.theta_min_rad))
+        e.pitch_amplitude_rad = 0.5 * (f.theta_max_rad - f.theta_min_rad);
+    }
+    if (options.constraints.tip_deflection_max_m > 0.0 && model.flexible)
+      e.tip_deflection_m = tipDeflectionAmplitude(model, s.solution, options.trim.simulation);
+    switch (f.status) {
+      case FreeFlightStatus::kBounded: e.message = "trimmed; free flight bounded"; break;
+      case FreeFlightStatus::kUnbounded:
+        e.message = "trimmed; free flight unbounded: " + f.message;
+        break;
+      case FreeFlightStatus::kFailed: e.message = "trimmed; free flight failed: " + f.message; break;
+      default: e.message = "trimmed; free flight not checked"; break;
+    }
+  } catch (const std::exception& ex) {
+    e.trim_attempted = false;
+    e.message = std::string("design not evaluated: ") + ex.what();
+  }
+  return e;
+}
+
+DesignProblem::DesignProblem(VehicleModel base, DesignSpace space, DesignProblemOptions options)
+    : base_(std::move(base)), space_(std::move(space)), options_(std::move(options)) {
+  std::string why;
+  if (!options_.IsValid(&why)) throw std::invalid_argument("design problem: " + why);
+  if (space_.variables.empty()) throw std::invalid_argument("design problem: no variables");
+  for (const DesignVariable& v : space_.variables) {
+    if (v.fields.empty())
+      throw std::invalid_argument("design variable '" + v.name + "' sets no field");
+    if (!(v.lower < v.upper && v.initial >= v.lower && v.initial <= v.upper))
+      throw std::invalid_argument("design variable '" + v.name +
+                                  "': expected lower < upper and the initial value inside");
+    for (const DesignField& f : v.fields) {
+      if (f.member >= static_cast<int>(base_.wing.members.size()))
+        throw std::invalid_argument("design variable '" + v.name + "': member index out of range");
+      if (f.positive() && !(v.lower > 0.0))
+        throw std::invalid_argument("design variable '" + v.name + "': " + f.name +
+                                    " must stay > 0 (lower bound)");
+    }
+  }
+  if (options_.constraints.tip_deflection_max_m > 0.0 &&
+      base_.wing.structure != StructureLevel::kFlexible)
+    throw std::invalid_argument("a tip-deflection limit needs a flexible wing");
+  constraint_names_.push_back("trimmed");
+  const DesignConstraints& c = options_.constraints;
+  if (c.bounded) constraint_names_.push_back("bounded");
+  if (c.pitch_amplitude_max_rad > 0.0) constraint_names_.push_back("pitch_amplitude");
+  if (c.tip_deflection_max_m > 0.0) constraint_names_.push_back("tip_deflection");
+  if (c.structural_mass_max_kg > 0.0) constraint_names_.push_back("structural_mass");
+}
+
+const std::vector<DesignValueInfo>& DesignProblem::valueInfo() {
+  static const std::vector<DesignValueInfo> k = {
+      {"trim_converged", "-", 1.0},       {"theta_mean_deg", "deg", kDegToRad},
+      {"speed_mps", "m/s", 1.0},          {"tail_angle_deg", "deg", kDegToRad},
+      {"freq_hz", "Hz", 1.0},             {"residual_scaled_max", "-", 1.0},
+      {"hinge_power_W", "W", 1.0},        {"aero_power_W", "W", 1.0},
+      {"bounded", "-", 1.0},              {"norm_ratio_max", "-", 1.0},
+      {"free_flight_time_s", "s", 1.0},   {"drift", "-", 1.0},
+      {"pitch_amplitude_deg", "deg", kDegToRad},
+      {"tip_deflection_m", "m", 1.0},     {"structural_mass_kg", "kg", 1.0},
+      {"periodic_runs", "-", 1.0},
+  };
+  return k;
+}
+
+std::unique_ptr<ProblemWorkspace> DesignProblem::makeWorkspace() const {
+  return std::make_unique<DesignWorkspace>();
+}
+
+VariableBox DesignProblem::box() const {
+  VariableBox b;
+  for (const DesignVariable& v : space_.variables) {
+    b.lower.push_back(v.lower);
+    b.upper.push_back(v.upper);
+    b.initial.push_back(v.initial);
+  }
+  return b;
+}
+
+Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspace& workspace) const {
+  auto& ws = static_cast<DesignWorkspace&>(workspace);
+  const VehicleModel vehicle = applyDesign(base_, space_, x);
+  const OperatingPoint guess =
+      options_.warm_start && ws.last_trim ? *ws.last_trim : options_.trim.initial;
+  const DesignEvaluation d = evaluateDesign(vehicle, options_, guess);
+
+  Evaluation e;
+  e.message = d.message;
+  e.values.assign(kDesignValueCount, kNaN);
+  e.values[kStructuralMass] = d.structural_mass_kg;
+  if (!d.trim_attempted) {
+    e.status = EvaluationStatus::kFailed;
+    e.objective = kNaN;
+    e.constraints.assign(constraint_names_.size(), kNaN);
+    return e;
+  }
+  const TrimSummary& s = d.trim;
+  const bool have_means = s.termination != TrimTermination::kSimulationFailure;
+  const FreeFlightVerification& f = s.free_flight;
+  const bool flown = f.status == FreeFlightStatus::kBounded ||
+                     f.status == FreeFlightStatus::kUnbounded;
+  auto& v = e.values;
+  v[kTrimConverged] = s.converged ? 1.0 : 0.0;
+  v[kTrimTheta] = s.solution.theta_rad;
+  v[kTrimSpeed] = s.solution.speed_mps;
+  v[kTrimTailAngle] = s.solution.tail_angle_rad;
+  v[kTrimFreq] = s.solution.freq_hz;
+  v[kTrimResidual] = have_means ? s.scaled_residual_max : kNaN;
+  v[kPowerHinge] = have_means ? s.mean.power_hinge_W : kNaN;
+  v[kPowerAero] = have_means ? s.mean.power_aero_W : kNaN;
+  v[kBounded] = flown ? (f.bounded ? 1.0 : 0.0) : kNaN;
+  v[kNormRatioMax] = flown ? f.norm_ratio_max : kNaN;
+  v[kFlownTime] = f.flown_s;
+  v[kDrift] = f.drift;
+  v[kPitchAmplitude] = d.pitch_amplitude_rad;
+  v[kTipDeflection] = d.tip_deflection_m;
+  v[kPeriodicRuns] = s.evaluations;
+
+  const double amplitude_deg = d.pitch_amplitude_rad / kDegToRad;
+  switch (options_.objective) {
+    case DesignObjective::kPower: e.objective = v[kPowerHinge]; break;
+    case DesignObjective::kPitchAmplitude: e.objective = amplitude_deg; break;
+    case DesignObjective::kWeighted: {
+      const DesignObjectiveWeights& w = options_.weights;
+      e.objective = (w.power_per_W > 0.0 ? w.power_per_W * v[kPowerHinge] : 0.0) +
+                    (w.pitch_amplitude_per_deg > 0.0 ? w.pitch_amplitude_per_deg * amplitude_deg
+                                                     : 0.0);
+      break;
+    }
+  }
+
+  const DesignConstraints& c = options_.constraints;
+  double g_trim = kTrimmedFeasible;
+  if (!s.converged)
+    g_trim = have_means && s.scaled_residual_max > 0.0
+                 ? std::max(std::log10(s.scaled_residual_max / options_.trim.residual_tol),
+                            kViolatedFloor)
+                 : kNaN;
+  e.constraints.push_back(g_trim);
+
+  // A diverged free flight: from divergence_ratio (diverging at the end of the horizon, above
+  // the flown values) to twice that (at once).
+  const double divergence = options_.trim.free_flight.free.divergence_ratio;
+  const double diverged =
+      divergence * (1.0 + (std::isfinite(f.flown_s) && f.horizon_s > 0.0
+                                ? std::clamp(1.0 - f.flown_s / f.horizon_s, 0.0, 1.0)
+                                : 1.0));
+  // Without a trim the quantities at the trim point do not exist: the constraints that need them
+  // are worse than any flown value and follow the trim constraint (so that the largest violation,
+  // which COBYLA reduces first, still says how far from trim the design is).
+  const double untrimmed = s.converged ? kNaN : g_trim + 2.0 * divergence;
+  const bool diverged_flight = f.status == FreeFlightStatus::kUnbounded && !flown_analysed(f);
+  if (c.bounded) {
+    double g = untrimmed;
+    if (flown_analysed(f)) {
+      // Eq. (5) holds when the norm stays <= 1 and the drift <= its limit: both as one measure.
+      g = f.norm_ratio_max - 1.0;
+      if (std::isfinite(f.drift)) g = std::max(g, f.drift - f.drift_limit);
+      if (!f.bounded) g = std::max(g, kViolatedFloor);
+    } else if (diverged_flight) {
+      g = diverged;
+    }
+    e.constraints.push_back(g);
+  }
+  if (c.pitch_amplitude_max_rad > 0.0) {
+    double g = untrimmed;
+    if (std::isfinite(d.pitch_amplitude_rad))
+      g = d.pitch_amplitude_rad / c.pitch_amplitude_max_rad - 1.0;
+    else if (diverged_flight)
+      g = diverged;
+    e.constraints.push_back(g);
+  }
+  if (c.tip_deflection_max_m > 0.0)
+    e.constraints.push_back(s.converged ? d.tip_deflection_m / c.tip_deflection_max_m - 1.0
+                                        : untrimmed);
+  if (c.structural_mass_max_kg > 0.0)
+    e.constraints.push_back(d.structural_mass_kg / c.structural_mass_max_kg - 1.0);
+  return e;
+}
+
+void DesignProblem::observe(const std::vector<double>& /*x*/, const Evaluation& result,
+                            ProblemWorkspace& workspace) const {
+  auto& ws = static_cast<DesignWorkspace&>(workspace);
+  const std::vector<double>& v = result.values;
+  if (result.status != EvaluationStatus::kOk || v.size() != kDesignValueCount ||
+      v[kTrimConverged] != 1.0)
+    return;
+  OperatingPoint p;
+  p.theta_rad = v[kTrimTheta];
+  p.speed_mps = v[kTrimSpeed];
+  p.tail_angle_rad = v[kTrimTailAngle];
+  p.freq_hz = v[kTrimFreq];
+  ws.last_trim = p;
+}
+
+VehicleModel DesignProblem::designVehicle(const std::vector<double>& x,
+                                          const Evaluation& result) const {
+  VehicleModel v = applyDesign(base_, space_, x);
+  const std::vector<double>& r = result.values;
+  if (result.status == EvaluationStatus::kOk && r.size() == kDesignValueCount &&
+      r[kTrimConverged] == 1.0) {
+    v.operating_point.theta_rad = r[kTrimTheta];
+    v.operating_point.speed_mps = r[kTrimSpeed];
+    v.operating_point.tail_angle_rad = r[kTrimTailAngle];
+    v.operating_point.freq_hz = r[kTrimFreq];
+  }
+  return v;
+}
+
+}  // namespace orni::opt

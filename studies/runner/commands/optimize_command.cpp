@@ -1,0 +1,348 @@
+#include "studies/runner/commands/optimize_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/model/frames.hpp"
+#include "optimize/design_problem.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+#include "studies/runner/output/aeromap_journal.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/optimize_journal.hpp"
+#include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+namespace fs = std::filesystem;
+using orni::opt::DesignProblem;
+using orni::opt::DesignValueInfo;
+using orni::opt::EvaluationRecord;
+using orni::opt::EvaluationStatus;
+using orni::opt::OptimizerSummary;
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+/// Unit of a design variable from its first field's key suffix.
+std::string variableUnit(const orni::opt::DesignVariable& v) {
+  const std::string& f = v.fields.front().name;
+  auto ends = [&f](const std::string& s) {
+    return f.size() >= s.size() && f.compare(f.size() - s.size(), s.size(), s) == 0;
+  };
+  if (ends("_m2")) return "m^2";
+  if (ends("_m")) return "m";
+  return "-";
+}
+
+std::string oneLine(std::string s) {
+  for (char& c : s)
+    if (c == '\n' || c == '\r') c = ' ';
+  return s;
+}
+
+const char* statusText(const EvaluationRecord& r) {
+  if (r.result.status == EvaluationStatus::kFailed) return "failed";
+  return r.feasible ? "feasible" : "infeasible";
+}
+
+std::string cell(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
+
+/// Column numbers (1-based) of history.csv for the figure.
+struct HistoryColumns {
+  int objective, feasible, failed, violation, best;
+};
+
+HistoryColumns historyColumns(const DesignProblem& p) {
+  const int n = p.variableCount(), m = p.constraintCount(), k = p.valueCount();
+  HistoryColumns c{};
+  c.objective = 5 + n;
+  c.feasible = c.objective + 1;
+  c.failed = c.objective + 2;
+  c.violation = c.objective + 3;
+  c.best = c.violation + m + 2 + k + 1;
+  return c;
+}
+
+CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
+  const auto& vars = p.space().variables;
+  const std::vector<DesignValueInfo>& info = DesignProblem::valueInfo();
+  const std::size_t n = vars.size(), m = p.constraintNames().size(), k = info.size();
+  std::vector<double> evaluation, start, index, objective, feasible, failed, violation;
+  std::vector<std::string> stage, status, repeat, best_col, message;
+  std::vector<std::vector<double>> x(n), g(m);
+  std::vector<std::vector<std::string>> values(k);
+  double best = kNaN;
+  for (std::size_t i = 0; i < s.history.size(); ++i) {
+    const EvaluationRecord& r = s.history[i];
+    evaluation.push_back(static_cast<double>(i));
+    start.push_back(r.start);
+    index.push_back(r.index);
+    stage.push_back(orni::opt::toString(r.stage));
+    for (std::size_t j = 0; j < n; ++j) x[j].push_back(r.x[j]);
+    objective.push_back(r.result.objective);
+    feasible.push_back(r.feasible ? 1.0 : 0.0);
+    failed.push_back(r.result.status == EvaluationStatus::kFailed ? 1.0 : 0.0);
+    violation.push_back(r.violation);
+    for (std::size_t j = 0; j < m; ++j) g[j].push_back(r.result.constraints[j]);
+    status.push_back(statusText(r));
+    repeat.push_back(r.repeat_of >= 0 ? std::to_string(r.repeat_of) : std::string());
+    for (std::size_t j = 0; j < k; ++j)
+      values[j].push_back(cell(r.result.values[j] / info[j].si_per_unit));
+    if (r.feasible && !(r.result.objective >= best)) best = r.result.objective;
+    best_col.push_back(cell(best));
+    message.push_back(oneLine(r.result.message));
+  }
+  CsvTable t;
+  t.addColumn("evaluation", "-", evaluation);
+  t.addColumn("start", "-", start);
+  t.addColumn("start_evaluation", "-", index);
+  t.addTextColumn("stage", "-", stage);
+  for (std::size_t j = 0; j < n; ++j) t.addColumn(vars[j].name, variableUnit(vars[j]), x[j]);
+  t.addColumn("objective", orni::opt::objectiveUnit(p.options().objective), objective);
+  t.addColumn("feasible", "-", feasible);
+  t.addColumn("failed", "-", failed);
+  t.addColumn("violation", "-", violation);
+  for (std::size_t j = 0; j < m; ++j) t.addColumn("g_" + p.constraintNames()[j], "-", g[j]);
+  t.addTextColumn("status", "-", status);
+  t.addTextColumn("repeat_of", "start_evaluation", repeat);
+  for (std::size_t j = 0; j < k; ++j) t.addTextColumn(info[j].name, info[j].unit, values[j]);
+  t.addTextColumn("best_objective", orni::opt::objectiveUnit(p.options().objective), best_col);
+  t.addTextColumn("message", "-", message);
+  return t;
+}
+
+JsonObject designObject(const DesignProblem& p, const std::vector<double>& x) {
+  JsonObject o;
+  for (std::size_t j = 0; j < x.size(); ++j) o.set(p.space().variables[j].name, x[j]);
+  return o;
+}
+
+/// The physical results of one evaluation (file units; null where there is none).
+JsonObject resultObject(const DesignProblem& p, const OptimizerSummary& s, int h) {
+  const EvaluationRecord& r = s.history[static_cast<std::size_t>(h)];
+  const std::vector<DesignValueInfo>& info = DesignProblem::valueInfo();
+  JsonObject o;
+  o.set("evaluation", h).set("start", r.start).set("start_evaluation", r.index);
+  o.set("design", designObject(p, r.x));
+  o.set("status", statusText(r)).set("message", oneLine(r.result.message));
+  o.set("objective", r.result.status == EvaluationStatus::kFailed ? kNaN : r.result.objective);
+  JsonObject g;
+  for (std::size_t j = 0; j < p.constraintNames().size(); ++j)
+    g.set(p.constraintNames()[j], r.result.constraints[j]);
+  o.set("constraints", g);
+  for (std::size_t j = 0; j < info.size(); ++j) {
+    const double v = r.result.values[j] / info[j].si_per_unit;
+    const std::string name = info[j].name;
+    if (name == "trim_converged" || name == "bounded") {
+      if (std::isfinite(v))
+        o.set(name, v == 1.0);
+      else
+        o.setNull(name);
+    } else {
+      o.set(name, v);
+    }
+  }
+  return o;
+}
+
+std::string convergenceFigure(const Study& study, const DesignProblem& p,
+                              const OptimizerSummary& s) {
+  const HistoryColumns c = historyColumns(p);
+  const char* unit = orni::opt::objectiveUnit(p.options().objective);
+  std::ostringstream g;
+  g << "set multiplot layout 2,1 title \"" << study.name << " optimisation ("
+    << orni::opt::toString(study.optimize.optimizer.algorithm) << ", "
+    << s.starts.size() << " start(s)): objective "
+    << orni::opt::toString(p.options().objective) << " per evaluation\" noenhanced font ',13'\n";
+  g << "set lmargin 12\nset rmargin 30\nset tmargin 3\n"
+       "set key outside right top vertical Left reverse noenhanced\n";
+  g << "set xlabel 'evaluation (starts in order)'\nset xrange [-0.5:"
+    << static_cast<double>(s.history.size()) - 0.5 << "]\n";
+  g << "set ylabel 'objective (" << unit << ")'\n";
+  g << "plot 'history.csv' skip 2 using 1:(($" << c.failed << " == 0 && $" << c.feasible
+    << " == 0) ? $" << c.objective
+    << " : 1/0) with points pt 6 ps 1.2 lc rgb '#c0392b' title 'infeasible', "
+       "'' skip 2 using 1:($"
+    << c.feasible << " == 1 ? $" << c.objective
+    << " : 1/0) with points pt 7 ps 1.2 lc rgb '#1e8449' title 'feasible', "
+       "'' skip 2 using 1:"
+    << c.best << " with steps lw 2 lc rgb '#2471a3' title 'best feasible so far'\n";
+  g << "set logscale y\nset format y '10^{%L}'\nset ylabel 'max constraint g (-)'\n";
+  g << "set yrange [1e-4:*]\n";
+  g << "plot 'history.csv' skip 2 using 1:(($" << c.failed << " == 0 && $" << c.feasible
+    << " == 0) ? ($" << c.violation << " > 1e-4 ? $" << c.violation
+    << " : 1e-4) : 1/0) with points pt 6 ps 1.2 lc rgb '#c0392b' title 'infeasible: violation', "
+       "'' skip 2 using 1:($"
+    << c.feasible
+    << " == 1 ? 1e-4 : 1/0) with points pt 7 ps 1.2 lc rgb '#1e8449' title 'feasible (at 1e-4)', "
+       "'' skip 2 using 1:($"
+    << c.failed << " == 1 ? $" << c.violation
+    << " : 1/0) with points pt 2 ps 1.2 lc rgb '#333333' title 'failed (penalty)'\n";
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+}  // namespace
+
+int runOptimizeStudy(const Study& study, const fs::path& out_dir, const OptimizeRunOptions& run) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const OptimizeSettings& settings = study.optimize;
+  const DesignProblem problem(study.vehicle, settings.space, settings.problem);
+  orni::opt::OptimizerOptions options = settings.optimizer;
+  options.threads = run.threads;
+
+  const std::string resolved = resolvedStudyToml(study);
+  const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
+  fs::create_directories(out_dir);
+  OptimizeJournalResume resume;
+  OptimizeJournal journal(out_dir / kOptimizeJournalName, fingerprint,
+                          {problem.variableCount(), problem.constraintCount(),
+                           problem.valueCount()},
+                          &resume);
+  if (resume.existed && !resume.fingerprint_matched)
+    std::cerr << "optimize: " << journal.path().string()
+              << " belongs to another study or version: starting afresh\n";
+  else if (resume.existed)
+    std::cerr << "optimize: resuming from " << journal.path().string() << ": " << resume.records
+              << " evaluation(s) journaled"
+              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
+                                              " torn or corrupt line(s) dropped)"
+                                        : std::string())
+              << "\n";
+
+  std::mutex progress_mutex;
+  std::optional<ProgressLine> progress;
+  if (run.progress)
+    progress.emplace("optimize",
+                     static_cast<std::size_t>(options.starts) *
+                         static_cast<std::size_t>(options.max_evaluations),
+                     0);
+  orni::opt::OptimizerHooks hooks;
+  hooks.replay = [&resume](int start, int index, const std::vector<double>& x) {
+    return resume.replay(start, index, x);
+  };
+  hooks.on_evaluation = [&](const EvaluationRecord& r) {
+    if (r.source == orni::opt::EvaluationSource::kComputed) journal.append(r);
+    if (progress) {
+      std::lock_guard<std::mutex> lock(progress_mutex);
+      progress->pointDone();
+    }
+    if (run.on_evaluation) run.on_evaluation(r);
+  };
+  const OptimizerSummary s = orni::opt::minimize(problem, problem.box(), options, hooks);
+  if (progress) progress->finish();
+
+  const EvaluationRecord* best = s.bestRecord();
+  if (!best) throw std::runtime_error("optimize: no evaluation was made");
+  const EvaluationRecord& base = s.history.front();  // start 0, evaluation 0: the initial design
+  const bool base_ok = base.result.status != EvaluationStatus::kFailed;
+  const double baseline_objective = base_ok ? base.result.objective : kNaN;
+  const double improvement =
+      base.feasible && s.feasible && baseline_objective != 0.0
+          ? 100.0 * (baseline_objective - best->result.objective) / std::abs(baseline_objective)
+          : kNaN;
+
+  // The best design as a vehicle file (its trim point as the operating point).
+  orni::VehicleModel best_vehicle = problem.designVehicle(best->x, best->result);
+  best_vehicle.name = study.name + "_best";
+  best_vehicle.description = "Best design of optimisation '" + study.name + "' (" +
+                             (s.feasible ? "feasible" : "infeasible: no feasible design found") +
+                             ") from vehicle '" + study.vehicle.name +
+                             "'; operating point = its trim point";
+
+  writeFileAtomic(out_dir / "history.csv", historyTable(problem, s).toString());
+  writeFileAtomic(out_dir / "best_vehicle.toml", vehicleToToml(best_vehicle));
+  writeFileAtomic(out_dir / "study.resolved.toml", resolved);
+
+  std::vector<std::string> terminations;
+  std::vector<double> start_best;
+  for (const orni::opt::StartSummary& st : s.starts) {
+    terminations.push_back(st.termination);
+    const EvaluationRecord* b = nullptr;
+    for (const EvaluationRecord& r : s.history)
+      if (r.start == st.start && r.index == st.best) b = &r;
+    start_best.push_back(b && b->feasible ? b->result.objective : kNaN);
+  }
+  int feasible_count = 0;
+  for (const EvaluationRecord& r : s.history) feasible_count += r.feasible ? 1 : 0;
+  const std::string status = s.converged ? "ok" : "not_converged";
+  std::string message;
+  if (s.converged)
+    message = "optimum found: " + s.message;
+  else if (s.feasible)
+    message = "feasible design found but the optimiser did not converge: " + s.message;
+  else
+    message = "no design satisfied every constraint: " + s.message;
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const int best_index = s.best;
+  JsonObject summary;
+  summary.set("kind", "optimize")
+      .set("status", status)
+      .set("message", oneLine(message))
+      .set("wall_time_s", wall_s)
+      .set("version", versionString())
+      .set("converged", s.converged)
+      .set("objective", best->result.status == EvaluationStatus::kFailed ? kNaN
+                                                                         : best->result.objective)
+      .set("baseline_objective", baseline_objective)
+      .set("evaluations", static_cast<long>(s.history.size()))
+      .set("design", designObject(problem, best->x))
+      .set("constraints_satisfied", s.feasible)
+      .set("objective_name", orni::opt::toString(problem.options().objective))
+      .set("objective_unit", orni::opt::objectiveUnit(problem.options().objective))
+      .set("baseline_feasible", base.feasible)
+      .set("improvement_percent", improvement)
+      .set("algorithm", orni::opt::toString(options.algorithm))
+      .set("starts", options.starts)
+      .set("threads", run.threads)
+      .set("max_evaluations", options.max_evaluations)
+      .setStrings("constraint_names", problem.constraintNames())
+      .set("best", resultObject(problem, s, best_index))
+      .set("baseline", resultObject(problem, s, 0))
+      .set("best_vehicle", "best_vehicle.toml")
+      .set("freq_hz", problem.options().trim.initial.freq_hz)
+      .set("evaluations_feasible", feasible_count)
+      .set("evaluations_computed", s.computed)
+      .set("evaluations_repeated", s.cached)
+      .set("evaluations_resumed", s.replayed)
+      .set("evaluations_failed", s.failed)
+      .setStrings("start_terminations", terminations)
+      .set("start_best_objective", start_best)
+      .set("structure", study.vehicle.wing.structure == StructureLevel::kFlexible ? "flexible"
+                                                                                  : "rigid");
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  journal.remove();  // every evaluation is in history.csv now
+
+  bool any_result = false;
+  for (const EvaluationRecord& r : s.history)
+    any_result = any_result || r.result.status != EvaluationStatus::kFailed;
+  if (run.figures && any_result) {
+    try {
+      drawFigure(out_dir, "optimize_convergence", convergenceFigure(study, problem, s));
+    } catch (const std::exception& e) {
+      std::cerr << "optimize: the convergence figure was not drawn: " << e.what() << "\n";
+    }
+  } else if (run.figures) {
+    std::cerr << "optimize: every evaluation failed: no figure drawn\n";
+  }
+  std::cout << study.name << ": optimize " << s.BriefReport() << "\n  " << message << "\n  -> "
+            << out_dir.string() << "\n";
+  return 0;
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,108 @@
+// Speed of one design evaluation of the optimiser (issue 6 target: model build + trim + free-flight
+// check in at most 1.5 s): DesignProblem::evaluate on efw_magpie, exactly what `ornithopter
+// optimize` runs per point (the vehicle check by re-reading it, FlightCoreModel, solveTrim with its
+// free-flight check of 60 cycles, the constraints).
+//   BM_DesignEvaluationRigid6Hz   : rigid wing at 6 Hz, where the vehicle trims (a converging
+//                                   trim followed by the free flight).
+//   BM_DesignEvaluationRigid12Hz  : rigid wing at 12 Hz (paper Table 3), where the committed
+//                                   vehicle does not trim: the costliest kind of trim (stalls on
+//                                   the tail bound), no free flight.
+//   BM_DesignEvaluationFlexibleNearOptimum: flexible wing at 12 Hz at the optimum of
+//                                   studies/paper/optimize_magpie.toml (tail 0.0193 m^2, AR 5,
+//                                   arm 0.2 m), warm-started from its trim point like the
+//                                   evaluations of a study, with a new stiffener diameter at every
+//                                   iteration so that the FE model and modes are rebuilt each time
+//                                   (no cache hit): FE build + trim + 60 flexible free-flight
+//                                   cycles, the typical evaluation of that study.
+//   BM_DesignEvaluationFlexibleBaseline: the paper's design, flexible, at 12 Hz from Table 3 (no
+//                                   equilibrium inside the bounds: the trim stalls on the tail
+//                                   bound after ~320 periodic runs), the costliest evaluation.
+// Counters: periodic runs of the trim, trim converged (0/1), free flight flown (s).
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "optimize/design_problem.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+
+namespace {
+
+using namespace orni;
+using namespace orni::opt;
+
+VehicleModel magpie() {
+  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                  "/studies/vehicles/efw_magpie.toml");
+}
+
+DesignSpace space(const VehicleModel& v, bool stiffeners) {
+  DesignSpace s;
+  auto add = [&](const std::string& name, double lo, double hi) {
+    DesignVariable var;
+    var.name = name;
+    std::string why;
+    resolveDesignField(name, v, &var.fields, &why);
+    var.lower = lo;
+    var.upper = hi;
+    var.initial = fieldValue(v, var.fields.front());
+    s.variables.push_back(var);
+  };
+  add("tail.area_m2", 0.004, 0.02);  // the variables of studies/paper/optimize_magpie.toml
+  add("tail.aspect_ratio", 1.0, 5.0);
+  add("tail.arm_m", 0.08, 0.2);
+  if (stiffeners) add("wing.members.STIF*.diameter_m", 2e-4, 8e-4);
+  return s;
+}
+
+struct Case {
+  double freq_hz = 6.0;
+  bool flexible = false;
+  bool near_optimum = false;
+};
+
+void evaluate(benchmark::State& state, const Case& c) {
+  VehicleModel v = magpie();
+  if (c.flexible) v.wing.structure = StructureLevel::kFlexible;
+  DesignProblemOptions o;
+  o.trim = defaultTrimOptions(v);
+  o.trim.initial.freq_hz = c.freq_hz;
+  constexpr double kDeg = 0.017453292519943295;
+  if (c.freq_hz < 10.0) {  // the 6 Hz trim of README.md
+    o.trim.initial.theta_rad = 14.0 * kDeg;
+    o.trim.initial.speed_mps = 8.0;
+    o.trim.initial.tail_angle_rad = 30.0 * kDeg;
+  }
+  if (c.near_optimum) {  // optimize_magpie's best trim point
+    o.trim.initial.theta_rad = 36.85 * kDeg;
+    o.trim.initial.speed_mps = 17.22;
+    o.trim.initial.tail_angle_rad = 37.93 * kDeg;
+  }
+  o.validate = [](const VehicleModel& d) { studies::validateVehicle(d); };
+  const DesignProblem p(v, space(v, c.flexible), o);
+  std::vector<double> x = p.box().initial;
+  if (c.near_optimum) x = {0.019346704082708735, 5.0, 0.2, 3.218850057541522e-4};
+  Evaluation e;
+  int i = 0;
+  for (auto _ : state) {
+    if (c.flexible) x[3] *= 1.0 + 1e-9 * ++i;  // a new structure: no modal-cache hit
+    auto ws = p.makeWorkspace();
+    e = p.evaluate(x, *ws);
+    benchmark::DoNotOptimize(e.objective);
+  }
+  state.counters["periodic_runs"] = e.values[kPeriodicRuns];
+  state.counters["trim_converged"] = e.values[kTrimConverged];
+  state.counters["free_flight_s"] = e.values[kFlownTime];
+}
+
+void BM_DesignEvaluationRigid6Hz(benchmark::State& s) { evaluate(s, {6.0, false, false}); }
+void BM_DesignEvaluationRigid12Hz(benchmark::State& s) { evaluate(s, {12.0, false, false}); }
+void BM_DesignEvaluationFlexibleNearOptimum(benchmark::State& s) {
+  evaluate(s, {12.0, true, true});
+}
+void BM_DesignEvaluationFlexibleBaseline(benchmark::State& s) { evaluate(s, {12.0, true, false}); }
+BENCHMARK(BM_DesignEvaluationRigid6Hz)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DesignEvaluationRigid12Hz)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DesignEvaluationFlexibleNearOptimum)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_DesignEvaluationFlexibleBaseline)->Unit(benchmark::kMillisecond)->Iterations(2);
+
+}  // namespace

@@ -1,0 +1,211 @@
+// Design spaces and the design problem (optimize/design_space.hpp, design_problem.hpp): field
+// names and groups resolve against a vehicle, a design is applied to a copy, and an evaluation of
+// efw_magpie maps its trim and free flight to the objective and constraints: a converged trim is
+// trimmed (g = -1) with the hinge power as the objective, a trim without equilibrium is a finite
+// violation (how far from trim), a design that is not a valid vehicle is a failed evaluation
+// (never an exception), and the warm start follows the last converged trim of the start.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "core/model/frames.hpp"
+#include "optimize/design_problem.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+
+namespace orni::opt {
+namespace {
+
+VehicleModel magpie() {
+  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                  "/studies/vehicles/efw_magpie.toml");
+}
+
+// The magpie with its rigid wing: the design-problem machinery at a fraction of the cost (the
+// calibrated flexible magpie's trims take seconds). At 12 Hz its Eq. (4) trim exists (theta 4.32
+// deg, U 13.63 m/s, tail 8.38 deg; no free-flight refinement here), at 6 Hz it does not.
+VehicleModel rigidMagpie() {
+  VehicleModel v = magpie();
+  v.wing.structure = StructureLevel::kRigid;
+  return v;
+}
+
+std::vector<DesignField> resolve(const std::string& name, const VehicleModel& v) {
+  std::vector<DesignField> f;
+  std::string why;
+  EXPECT_TRUE(resolveDesignField(name, v, &f, &why)) << name << ": " << why;
+  return f;
+}
+
+TEST(OptimizeDesignSpace, ResolvesFieldsAndGroups) {
+  const VehicleModel v = magpie();
+  EXPECT_EQ(resolve("tail.area_m2", v).front().kind, DesignFieldKind::kTailArea);
+  EXPECT_EQ(resolve("kinematics.hinge_x_m", v).front().kind, DesignFieldKind::kHingeX);
+  const std::vector<DesignField> stif = resolve("wing.members.STIF*.diameter_m", v);
+  ASSERT_EQ(stif.size(), 4u);
+  EXPECT_EQ(stif[0].name, "wing.members.STIF1.diameter_m");
+  EXPECT_EQ(stif[3].name, "wing.members.STIF4.diameter_m");
+  const std::vector<DesignField> end = resolve("wing.members.DIAG1.end_y_m", v);
+  ASSERT_EQ(end.size(), 1u);
+  EXPECT_EQ(fieldValue(v, end[0]), 0.0945);
+  EXPECT_TRUE(stif[0].positive());
+  EXPECT_FALSE(end[0].positive());
+
+  std::vector<DesignField> f;
+  std::string why;
+  EXPECT_FALSE(resolveDesignField("wing.members.STIF9.diameter_m", v, &f, &why));
+  EXPECT_NE(why.find("STIF9"), std::string::npos);
+  EXPECT_NE(why.find("LE1"), std::string::npos);  // lists the members
+  EXPECT_FALSE(resolveDesignField("wing.members.STIF1.radius_m", v, &f, &why));
+  EXPECT_NE(why.find("diameter_m"), std::string::npos);
+  EXPECT_FALSE(resolveDesignField("tail.span_m", v, &f, &why));
+  EXPECT_NE(why.find("tail.area_m2"), std::string::npos);
+  EXPECT_TRUE(f.empty());
+}
+
+TEST(OptimizeDesignSpace, ApplyDesignSetsEveryFieldOfAGroupOnACopy) {
+  const VehicleModel v = magpie();
+  DesignSpace s;
+  DesignVariable stif;
+  stif.name = "stif";
+  stif.fields = resolve("wing.members.STIF*.diameter_m", v);
+  DesignVariable arm;
+  arm.name = "arm";
+  arm.fields = resolve("tail.arm_m", v);
+  s.variables = {stif, arm};
+  const VehicleModel d = applyDesign(v, s, {6e-4, 0.15});
+  for (const WingMember& m : d.wing.members)
+    EXPECT_EQ(m.diameter_m, m.name.rfind("STIF", 0) == 0 ? 6e-4 : m.diameter_m);
+  EXPECT_EQ(d.wing.members[0].diameter_m, v.wing.members[0].diameter_m);  // LE1 untouched
+  EXPECT_EQ(d.wing.members[4].diameter_m, 6e-4);
+  EXPECT_EQ(d.tail.arm_m, 0.15);
+  EXPECT_EQ(v.tail.arm_m, 0.12);  // the base is not changed
+  EXPECT_THROW(applyDesign(v, s, {1.0}), std::invalid_argument);
+}
+
+/// Tail area and arm of the rigid magpie, trimmed (Eq. 4 only) at `freq_hz`.
+DesignProblem tailProblem(double freq_hz, bool with_validation = true) {
+  const VehicleModel v = rigidMagpie();
+  DesignSpace s;
+  for (const char* name : {"tail.area_m2", "tail.arm_m"}) {
+    DesignVariable var;
+    var.name = name;
+    var.fields = resolve(name, v);
+    var.initial = fieldValue(v, var.fields.front());
+    var.lower = 0.5 * var.initial;
+    var.upper = 2.0 * var.initial;
+    s.variables.push_back(var);
+  }
+  DesignProblemOptions o;
+  o.trim = defaultTrimOptions(v);
+  o.trim.initial.freq_hz = freq_hz;
+  o.trim.refine_in_free_flight = false;
+  o.trim.initial.theta_rad = 4.3 * kDegToRad;
+  o.trim.initial.speed_mps = 13.6;
+  o.trim.initial.tail_angle_rad = 8.4 * kDegToRad;
+  o.constraints.structural_mass_max_kg = 0.004;
+  if (with_validation) o.validate = [](const VehicleModel& d) { studies::validateVehicle(d); };
+  return DesignProblem(v, s, o);
+}
+
+TEST(OptimizeDesignProblem, ConvergedTrimGivesPowerAndTrimmedConstraint) {
+  const DesignProblem p = tailProblem(12.0);
+  ASSERT_EQ(p.constraintNames(), (std::vector<std::string>{"trimmed", "bounded",
+                                                            "structural_mass"}));
+  auto ws = p.makeWorkspace();
+  const Evaluation e = p.evaluate(p.box().initial, *ws);
+  SCOPED_TRACE(e.message);
+  ASSERT_EQ(e.status, EvaluationStatus::kOk);
+  ASSERT_EQ(e.values.size(), static_cast<std::size_t>(kDesignValueCount));
+  EXPECT_EQ(e.values[kTrimConverged], 1.0);
+  EXPECT_EQ(e.constraints[0], -1.0);
+  EXPECT_EQ(e.objective, e.values[kPowerHinge]);
+  EXPECT_GT(e.objective, 5.0);  // about 21 W at 12 Hz, 13.6 m/s
+  EXPECT_LT(e.objective, 50.0);
+  EXPECT_NEAR(e.values[kTrimTheta] / kDegToRad, 4.32, 0.05);
+  EXPECT_NEAR(e.values[kTrimSpeed], 13.63, 0.05);
+  EXPECT_TRUE(std::isfinite(e.constraints[1]));  // bounded or not: a finite measure
+  const double mass = e.values[kStructuralMass];
+  EXPECT_GT(mass, 0.0);
+  EXPECT_NEAR(e.constraints[2], mass / 0.004 - 1.0, 1e-15);
+  EXPECT_GT(e.values[kPeriodicRuns], 0.0);
+}
+
+TEST(OptimizeDesignProblem, TrimWithoutEquilibriumIsAFiniteViolation) {
+  const DesignProblem p = tailProblem(6.0);  // the rigid magpie has no equilibrium at 6 Hz
+  auto ws = p.makeWorkspace();
+  const Evaluation e = p.evaluate(p.box().initial, *ws);
+  SCOPED_TRACE(e.message);
+  EXPECT_EQ(e.status, EvaluationStatus::kOk);
+  EXPECT_EQ(e.values[kTrimConverged], 0.0);
+  EXPECT_GT(e.constraints[0], 0.0);
+  EXPECT_TRUE(std::isfinite(e.constraints[0]));
+  EXPECT_NEAR(e.constraints[0], std::log10(e.values[kTrimResidual] / 1e-4), 1e-12);
+  // No free flight: bounded is worse than any flown value (2 divergence_ratio = 10) and follows
+  // the trim constraint.
+  EXPECT_EQ(e.constraints[1], e.constraints[0] + 10.0);
+  EXPECT_TRUE(std::isfinite(e.objective));    // the power at the final iterate
+  EXPECT_NE(e.message.find("trim not converged"), std::string::npos);
+}
+
+TEST(OptimizeDesignProblem, InvalidDesignIsAFailedEvaluation) {
+  const VehicleModel v = magpie();
+  DesignSpace s;
+  DesignVariable end;  // STIF4's end point moved beyond the trailing edge
+  end.name = "stif4_end_x";
+  end.fields = resolve("wing.members.STIF4.end_x_m", v);
+  end.lower = -0.2;
+  end.upper = -0.05;
+  end.initial = -0.0624;
+  s.variables = {end};
+  DesignProblemOptions o;
+  o.trim = defaultTrimOptions(v);
+  o.validate = [](const VehicleModel& d) { studies::validateVehicle(d); };
+  const DesignProblem p(v, s, o);
+  auto ws = p.makeWorkspace();
+  const Evaluation e = p.evaluate({-0.15}, *ws);
+  EXPECT_EQ(e.status, EvaluationStatus::kFailed);
+  EXPECT_NE(e.message.find("design not evaluated"), std::string::npos);
+  EXPECT_NE(e.message.find("members[7]"), std::string::npos) << e.message;
+}
+
+TEST(OptimizeDesignProblem, WarmStartFollowsTheLastConvergedTrim) {
+  const DesignProblem p = tailProblem(12.0);
+  auto ws = p.makeWorkspace();
+  const std::vector<double> x0 = p.box().initial;
+  const Evaluation first = p.evaluate(x0, *ws);
+  ASSERT_EQ(first.values[kTrimConverged], 1.0);
+  p.observe(x0, first, *ws);
+  // The same design again, warm: the trim starts at its own solution and converges at once.
+  const Evaluation again = p.evaluate(x0, *ws);
+  EXPECT_EQ(again.values[kTrimConverged], 1.0);
+  EXPECT_LT(again.values[kPeriodicRuns], first.values[kPeriodicRuns]);
+  EXPECT_NEAR(again.objective, first.objective, 1e-4 * first.objective);
+}
+
+TEST(OptimizeDesignProblem, RejectsInconsistentSetups) {
+  const VehicleModel v = rigidMagpie();
+  DesignProblemOptions o;
+  o.trim = defaultTrimOptions(v);
+  EXPECT_THROW(DesignProblem(v, DesignSpace{}, o), std::invalid_argument);  // no variables
+  DesignSpace s;
+  DesignVariable d;
+  d.name = "stif";
+  d.fields = resolve("wing.members.STIF*.diameter_m", v);
+  d.lower = 0.0;  // a diameter must stay > 0
+  d.upper = 1e-3;
+  d.initial = 4e-4;
+  s.variables = {d};
+  EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+  s.variables[0].lower = 1e-4;
+  o.constraints.tip_deflection_max_m = 0.01;  // rigid wing: no tip deflection
+  EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+  o.constraints.tip_deflection_max_m = 0.0;
+  o.trim.verify_free_flight = false;  // bounded needs the free flight
+  EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace orni::opt
