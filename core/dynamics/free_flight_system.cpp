@@ -41,7 +41,8 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
       strips_(flex ? flex->strips : rigidStrips(model)),
       rigid_stacked_(flex ? StackedStrips{}
                           : stackStrips(strips_, 0, Eigen::VectorXd(), Eigen::VectorXd())),
-      kin_(flex ? flex->stacked : rigid_stacked_, M_) {
+      kin_(flex ? flex->stacked : rigid_stacked_, M_),
+      llt_(3 + M_) {  // sized here: assigning an LLT copies its uninitialised info (UBSan)
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw std::invalid_argument(
         "free flight needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -129,7 +130,6 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   Cq_all_.setZero(3 * M_);
   Cqd_all_.setZero(3 * M_);
   A_.setZero(n_u_, n_u_);
-  llt_ = Eigen::LLT<Eigen::MatrixXd>(n_u_);
   const auto nsi = static_cast<Eigen::Index>(ns);
   b_strip_.setZero(nsi);
   k_twist_.setZero(nsi);
