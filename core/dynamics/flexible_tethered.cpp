@@ -1,6 +1,7 @@
 #include "core/dynamics/flexible_tethered.hpp"
 
 #include <cmath>
+#include <limits>
 
 #include "core/dynamics/flapping.hpp"
 
@@ -19,11 +20,12 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       data_(model),
       q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_), frame_inertia_(M_),
       A_(M_, M_),
-      llt_(M_),
+      chol_(M_),
       kin_(flex.stacked, flex.mode_count),
       packed_(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2),
       extra_force_(static_cast<Eigen::Index>(model.strips.size())),
-      extra_couple_(static_cast<Eigen::Index>(model.strips.size())) {
+      extra_couple_(static_cast<Eigen::Index>(model.strips.size())),
+      split_(flex, 0, 2 * M_ + n_aero_ + kQuadratureChannels) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw std::invalid_argument(
         "the flexible wing needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -49,12 +51,7 @@ void FlexibleTetheredSystem::absoluteTolerances(double rel_tol, double lag_abs_t
                                                 double separation_abs_tol,
                                                 std::vector<double>* atol) const {
   atol->assign(static_cast<std::size_t>(stateCount()), lag_abs_tol);
-  // Mass-normalised modal coordinates (m sqrt(kg)): a centimetre tip deflection of the magpie wing
-  // is q ~ 1e-4, its rate ~ 1e-2 (structure.md 5.2 gives 1e-9 and 1e-7 at rel_tol 1e-6 scale).
-  for (int i = 0; i < M_; ++i) {
-    (*atol)[static_cast<std::size_t>(i)] = 1e-5 * rel_tol;
-    (*atol)[static_cast<std::size_t>(M_ + i)] = 1e-3 * rel_tol;
-  }
+  modalAbsoluteTolerances(rel_tol, M_, 0, atol);
   const int per = model_.aero_states_per_strip;
   for (int i = aeroOffset() + per - 1; i < quadratureOffset(); i += per)
     (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
@@ -94,8 +91,11 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   modalFrameInertia(flex_, q_, qd_, flap.phi_dot_radps, flap.phi_ddot_radps2, &frame_inertia_);
   rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_) -
              frame_inertia_;
-  llt_.compute(A_);  // lower triangle
-  qdd_ = llt_.solve(rhs_vec_);
+  qdd_ = rhs_vec_;
+  if (chol_.factor(A_))  // lower triangle
+    chol_.solveInPlace(qdd_);
+  else  // not positive definite: a non-finite derivative makes the integrator retry smaller
+    qdd_.setConstant(std::numeric_limits<double>::quiet_NaN());
 
   // Aerodynamic resultant of the wing on the frame, about P2 (W), including the apparent-mass
   // force and couple of q'' that the kernel could not know.

@@ -3,10 +3,10 @@
 // not allocate.
 #pragma once
 
-#include <Eigen/Cholesky>
-
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/modal_implicit_split.hpp"
+#include "core/dynamics/small_cholesky.hpp"
 #include "core/dynamics/strip_kinematics.hpp"
 
 namespace orni {
@@ -35,6 +35,8 @@ class FlexibleTetheredSystem {
     static_cast<FlexibleTetheredSystem*>(self)->rhs(t, y, ydot);
     return 0;
   }
+  /// The linear modal part for implicit integration (modal_implicit_split.hpp).
+  ModalImplicitSplit& split() { return split_; }
 
  private:
   struct AeroResult {
@@ -60,9 +62,10 @@ class FlexibleTetheredSystem {
   Vec3 omega_W_ = Vec3::Zero(), alpha_W_ = Vec3::Zero();
   Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
   Eigen::MatrixXd A_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  SmallCholesky chol_;
   StripKinematics kin_;
   Eigen::VectorXd packed_, extra_force_, extra_couple_;
+  ModalImplicitSplit split_;
 };
 
 }  // namespace orni

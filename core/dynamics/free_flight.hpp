@@ -34,6 +34,7 @@ struct FreeFlightSummary {
   CycleMeans mean;             ///< last cycle: aerodynamic FV, FH, M (wings + tail; with
                                ///< record_history) and aerodynamic power
   long steps = 0, rhs_evaluations = 0;
+  std::string integrator_method;  ///< e.g. "ARKODE ARKStep ARK4(3)7L[2]SA IMEX, ..."
   bool analysed = false;       ///< verdict and limit_cycle are filled (status ok)
 };
 

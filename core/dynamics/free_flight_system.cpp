@@ -1,6 +1,7 @@
 #include "core/dynamics/free_flight_system.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -42,7 +43,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
       rigid_stacked_(flex ? StackedStrips{}
                           : stackStrips(strips_, 0, Eigen::VectorXd(), Eigen::VectorXd())),
       kin_(flex ? flex->stacked : rigid_stacked_, M_),
-      llt_(3 + M_) {  // sized here: assigning an LLT copies its uninitialised info (UBSan)
+      chol_(3 + M_) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw std::invalid_argument(
         "free flight needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -145,6 +146,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   data_.batch.airx.setZero();
   data_.batch.airy.setZero();
   data_.batch.airz.setZero();
+  if (flex) split_ = std::make_unique<ModalImplicitSplit>(*flex, kBody, stateCount());
   setFrictionSpeed(model.vehicle.operating_point.speed_mps > 0.0
                        ? model.vehicle.operating_point.speed_mps
                        : 10.0);
@@ -183,10 +185,7 @@ void FreeFlightSystem::absoluteTolerances(double rel_tol, double lag_abs_tol,
   // Body states at rel_tol times a scale: 10 m (x), 0.1 m (h), 0.1 rad, 1 m/s, 1 rad/s.
   const double scale[kBody] = {10.0, 0.1, 0.1, 1.0, 1.0, 1.0};
   for (int i = 0; i < kBody; ++i) (*atol)[static_cast<std::size_t>(i)] = rel_tol * scale[i];
-  for (int i = 0; i < M_; ++i) {  // as the tethered flexible wing (flexible_tethered.cpp)
-    (*atol)[static_cast<std::size_t>(kBody + i)] = 1e-5 * rel_tol;
-    (*atol)[static_cast<std::size_t>(kBody + M_ + i)] = 1e-3 * rel_tol;
-  }
+  modalAbsoluteTolerances(rel_tol, M_, kBody, atol);  // as the tethered flexible wing
   const int per = model_.aero_states_per_strip;
   for (int i = aeroOffset() + per - 1; i < powerOffset(); i += per)
     (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
@@ -387,8 +386,11 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     f_[2] += tail_.M_tail_Nm;
   }
 
-  llt_.compute(A_);  // SPD mass matrix; reads the lower triangle only
-  ud_ = llt_.solve(f_);
+  ud_ = f_;
+  if (chol_.factor(A_))  // SPD mass matrix; reads the lower triangle only
+    chol_.solveInPlace(ud_);
+  else  // not positive definite: a non-finite derivative makes the integrator retry smaller
+    ud_.setConstant(std::numeric_limits<double>::quiet_NaN());
 }
 
 void FreeFlightSystem::apparentAccelerations() {
@@ -424,9 +426,8 @@ void FreeFlightSystem::rhs(double t_s, const double* y, double* ydot) {
     apparentAccelerations();
     const FlapState flap =
         flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
-    Vec3 F, M;
-    kin_.resultant(data_.batch, extra_force_, extra_couple_,
-                   flap.phi_dot_radps * Vec3::UnitX(), &F, &M, &power);
+    power = kin_.power(data_.batch, extra_force_, extra_couple_,
+                       flap.phi_dot_radps * Vec3::UnitX());
   }
   ydot[powerOffset()] = 2.0 * power;
 }

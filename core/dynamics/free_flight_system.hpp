@@ -14,12 +14,13 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <vector>
-
-#include <Eigen/Cholesky>
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/modal_implicit_split.hpp"
+#include "core/dynamics/small_cholesky.hpp"
 #include "core/dynamics/strip_kinematics.hpp"
 
 namespace orni {
@@ -69,6 +70,9 @@ class FreeFlightSystem {
     static_cast<FreeFlightSystem*>(self)->rhs(t, y, ydot);
     return 0;
   }
+  /// The linear modal part for implicit integration (flexible wing only: hasModes()).
+  bool hasModes() const { return M_ > 0; }
+  ModalImplicitSplit& split() { return *split_; }
 
   double fuselageMass_kg() const { return m_f_; }
   double fuselagePitchInertia_kgm2() const { return I_f_; }
@@ -117,7 +121,7 @@ class FreeFlightSystem {
   Eigen::MatrixXd Pstack_, Cstack_, Smat_;  // stacked invariants (constructor)
   Eigen::VectorXd Pq_all_, Cq_all_, Cqd_all_, Sq_{9}, Sqd_{9};
   Eigen::MatrixXd A_;
-  Eigen::LLT<Eigen::MatrixXd> llt_;
+  SmallCholesky chol_;
   Eigen::VectorXd b_strip_, k_twist_;           // 0.5 (1 + f) m_a and f k per strip
   Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;      // body partials of the apparent accelerations
   Eigen::VectorXd extra_force_, extra_couple_;  // apparent-mass force and couple of u' (ns)
@@ -131,6 +135,7 @@ class FreeFlightSystem {
   Vec3 omega_W_ = Vec3::Zero(), alpha0_W_ = Vec3::Zero(), a_O0_W_ = Vec3::Zero();
   Vec3 g_W_ = Vec3::Zero(), c_W_ = Vec3::Zero();
   Mat3 J_W_ = Mat3::Zero();
+  std::unique_ptr<ModalImplicitSplit> split_;  // flexible wing only
 };
 
 }  // namespace orni

@@ -92,8 +92,6 @@ void StripKinematics::resultant(const aero::StripBatch& b, const Eigen::VectorXd
   const Eigen::Index n = ns_;
   const auto sx = SL_.segment(0, n).array(), sy = SL_.segment(n, n).array(),
              sz = SL_.segment(2 * n, n).array();
-  const auto ux = UdL_.segment(0, n).array(), uy = UdL_.segment(n, n).array(),
-             uz = UdL_.segment(2 * n, n).array();
   const auto ef = extra_force.array(), ec = extra_couple.array();
   // Apparent-mass force along n at mid-chord and couple about e_s.
   const Vec3 F(b.Fx.sum() + (ef * b.nx).sum(), b.Fy.sum() + (ef * b.ny).sum(),
@@ -107,7 +105,17 @@ void StripKinematics::resultant(const aero::StripBatch& b, const Eigen::VectorXd
           (ef * (midx_ * b.ny - midy_ * b.nx)).sum() + (ec * esz_).sum();
   *F_W = F;
   *M_P2_W = M;
-  if (!power_W) return;
+  if (power_W) *power_W = power(b, extra_force, extra_couple, omega_rel_W);
+}
+
+double StripKinematics::power(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
+                              const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W) {
+  const Eigen::Index n = ns_;
+  const auto sx = SL_.segment(0, n).array(), sy = SL_.segment(n, n).array(),
+             sz = SL_.segment(2 * n, n).array();
+  const auto ux = UdL_.segment(0, n).array(), uy = UdL_.segment(n, n).array(),
+             uz = UdL_.segment(2 * n, n).array();
+  const auto ef = extra_force.array(), ec = extra_couple.array();
   // Relative motion: v_rel_L = w_rel x s_L + u'_L, w_strip = w_rel + twist' e_s,
   // v_rel_mid . n = (v_rel_L + w_strip x (mid - s_L)) . n.
   const Vec3& w = omega_rel_W;
@@ -121,9 +129,9 @@ void StripKinematics::resultant(const aero::StripBatch& b, const Eigen::VectorXd
   vmn_ = (vx_ + wsy_ * (midz_ - sz) - wsz_ * (midy_ - sy)) * b.nx +
          (vy_ + wsz_ * (midx_ - sx) - wsx_ * (midz_ - sz)) * b.ny +
          (vz_ + wsx_ * (midy_ - sy) - wsy_ * (midx_ - sx)) * b.nz;
-  *power_W = -((b.Fx * vx_ + b.Fy * vy_ + b.Fz * vz_).sum() +
-               (b.Mx * wsx_ + b.My * wsy_ + b.Mz * wsz_).sum() + (ef * vmn_).sum() +
-               (ec * (esx_ * wsx_ + esy_ * wsy_ + esz_ * wsz_)).sum());
+  return -((b.Fx * vx_ + b.Fy * vy_ + b.Fz * vz_).sum() +
+           (b.Mx * wsx_ + b.My * wsy_ + b.Mz * wsz_).sum() + (ef * vmn_).sum() +
+           (ec * (esx_ * wsx_ + esy_ * wsy_ + esz_ * wsz_)).sum());
 }
 
 }  // namespace orni

@@ -44,6 +44,10 @@ class StripKinematics {
                  const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W, Vec3* F_W,
                  Vec3* M_P2_W, double* power_W);
 
+  /// The power part of resultant() alone (the same value), for callers that have the force and
+  /// moment already.
+  double power(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
+               const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W);
   int strips() const { return ns_; }
   // Component arrays of the last compute() (length ns).
   Eigen::Ref<const Eigen::ArrayXd> sLx() const { return SL_.segment(0, ns_).array(); }

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "core/dynamics/flexible_tethered.hpp"
-#include "core/integrate/erk_integrator.hpp"
+#include "core/integrate/ode_integrator.hpp"
 
 namespace orni {
 
@@ -84,8 +84,20 @@ class RigidTetheredSystem {
 };
 
 template <class System>
-SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const OperatingPoint& point,
-                            const SimulationOptions& options, TimeHistory* history) {
+IntegratorOptions integratorOptions(const System& sys, const OperatingPoint& point,
+                                    const SimulationOptions& options) {
+  IntegratorOptions iopt;
+  iopt.rel_tol = options.rel_tol;
+  sys.absoluteTolerances(options.rel_tol, options.abs_tol, options.separation_abs_tol,
+                         &iopt.abs_tol);
+  iopt.max_step = 1.0 / point.freq_hz / 8.0;  // never step over a whole flapping half-stroke
+  return iopt;
+}
+
+template <class System>
+SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const FlightCoreModel& model,
+                            const OperatingPoint& point, const SimulationOptions& options,
+                            TimeHistory* history) {
   SimulationSummary summary;
   const int n = sys.stateCount();
   const int n_aero0 = sys.aeroOffset();
@@ -95,16 +107,6 @@ SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const Ope
 
   // Scales for the steady-state test (the same as for the quadrature tolerances).
   const auto scales = quadratureScales(model, point.speed_mps);
-
-  IntegratorOptions iopt;
-  iopt.rel_tol = options.rel_tol;
-  sys.absoluteTolerances(options.rel_tol, options.abs_tol, options.separation_abs_tol,
-                         &iopt.abs_tol);
-  iopt.max_step = period_s / 8.0;  // never step over a whole flapping half-stroke
-  // The flexible wing's steps are stability-limited (modes, tip-strip lag states): the ARK4(3)6L
-  // explicit table needs fewer evaluations there; the rigid wing keeps Dormand-Prince.
-  iopt.method = model.flexible ? ErkMethod::kArk436 : ErkMethod::kDormandPrince5;
-  ErkIntegrator integrator(n, &System::rhsCallback, &sys, iopt);
 
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
   sys.initialState(0.0, y0.data());
@@ -198,6 +200,7 @@ SimulationSummary runCycles(System& sys, const FlightCoreModel& model, const Ope
   summary.steps = integrator.steps();
   summary.rhs_evaluations = integrator.rhsEvaluations();
   summary.step_attempts = integrator.stepAttempts();
+  summary.integrator_method = integrator.methodName();
   if (summary.status == SimulationStatus::kNotConverged) {
     char buf[200];
     if (summary.steady_state_cycle > 0) {
@@ -229,12 +232,24 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
   const ControlInput control{point.freq_hz, point.tail_angle_rad};
   if (model.flexible) {
     FlexibleTetheredSystem sys(model, *model.flexible, body, control);
-    SimulationSummary s = runCycles(sys, model, point, options, history);
+    IntegratorOptions iopt = integratorOptions(sys, point, options);
+    using Imex = ModalImex<FlexibleTetheredSystem>;
+    // Explicit: stability-limited steps (the highest mode), where the ARK4(3)6L explicit table
+    // needs fewer evaluations than Dormand-Prince.
+    iopt.method = ErkMethod::kArk436;
+    OdeIntegrator integrator =
+        options.modal_integration == ModalIntegration::kImplicit
+            ? OdeIntegrator(sys.stateCount(), &Imex::explicitRhs, Imex::part(), &sys, iopt)
+            : OdeIntegrator(sys.stateCount(), &FlexibleTetheredSystem::rhsCallback, &sys, iopt);
+    SimulationSummary s = runCycles(sys, integrator, model, point, options, history);
     s.final_mode_count = model.flexible->mode_count;
     return s;
   }
   RigidTetheredSystem sys(model, body, control);
-  return runCycles(sys, model, point, options, history);
+  IntegratorOptions iopt = integratorOptions(sys, point, options);
+  iopt.method = ErkMethod::kDormandPrince5;
+  OdeIntegrator integrator(sys.stateCount(), &RigidTetheredSystem::rhsCallback, &sys, iopt);
+  return runCycles(sys, integrator, model, point, options, history);
 }
 
 }  // namespace orni

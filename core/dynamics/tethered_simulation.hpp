@@ -46,6 +46,7 @@ struct SimulationSummary {
   long steps = 0;
   long rhs_evaluations = 0;
   long step_attempts = 0;
+  std::string integrator_method;  ///< e.g. "ARKODE ERKStep Dormand-Prince 5(4)"
 
   std::string BriefReport() const;
 };

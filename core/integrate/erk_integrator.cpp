@@ -7,55 +7,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/integrate/serial_vector_ops.hpp"
+
 namespace orni {
 
 namespace {
 SUNContext asContext(void* p) { return static_cast<SUNContext>(p); }
 N_Vector asVector(void* p) { return static_cast<N_Vector>(p); }
-
-// z = sum_i c_i X_i, the operation behind every Runge-Kutta stage and solution update. SUNDIALS'
-// serial version makes one pass over z per term; this one makes a single pass with four
-// independent accumulators the compiler keeps in vector registers. Same arithmetic order per
-// element (c_0 x_0 + c_1 x_1 + ...), so results are identical to the term-by-term sum.
-// z may alias X[0] (allowed by the N_Vector API): X[0][j] is read before z[j] is written.
-int linearCombinationSinglePass(int nvec, sunrealtype* c, N_Vector* X, N_Vector z) {
-  const sunindextype n = NV_LENGTH_S(z);
-  sunrealtype* zd = NV_DATA_S(z);
-  constexpr int kMaxVectors = 32;
-  if (nvec < 1) return -1;
-  if (nvec > kMaxVectors) {  // never happens for ERK tables; keep the general path
-    for (sunindextype j = 0; j < n; ++j) {
-      sunrealtype s = c[0] * NV_DATA_S(X[0])[j];
-      for (int i = 1; i < nvec; ++i) s += c[i] * NV_DATA_S(X[i])[j];
-      zd[j] = s;
-    }
-    return 0;
-  }
-  const sunrealtype* xd[kMaxVectors];
-  for (int i = 0; i < nvec; ++i) xd[i] = NV_DATA_S(X[i]);
-  sunindextype j = 0;
-  for (; j + 4 <= n; j += 4) {
-    sunrealtype s0 = c[0] * xd[0][j], s1 = c[0] * xd[0][j + 1];
-    sunrealtype s2 = c[0] * xd[0][j + 2], s3 = c[0] * xd[0][j + 3];
-    for (int i = 1; i < nvec; ++i) {
-      const sunrealtype* x = xd[i] + j;
-      s0 += c[i] * x[0];
-      s1 += c[i] * x[1];
-      s2 += c[i] * x[2];
-      s3 += c[i] * x[3];
-    }
-    zd[j] = s0;
-    zd[j + 1] = s1;
-    zd[j + 2] = s2;
-    zd[j + 3] = s3;
-  }
-  for (; j < n; ++j) {
-    sunrealtype s = c[0] * xd[0][j];
-    for (int i = 1; i < nvec; ++i) s += c[i] * xd[i][j];
-    zd[j] = s;
-  }
-  return 0;
-}
 }  // namespace
 
 // The C callback (ARKRhsFn). Catches everything: no exception crosses SUNDIALS.
@@ -105,8 +63,7 @@ ErkIntegrator::ErkIntegrator(int state_size, RhsFunction rhs, void* user_data,
   if (!y_ || !atol_) throw std::runtime_error("N_VNew_Serial failed");
   // Single-pass linear combinations (set before ERKStep clones the vector, so every work vector
   // inherits it): the integrator's own vector work is comparable to the RHS for ~60 states.
-  N_VEnableFusedOps_Serial(asVector(y_), SUNTRUE);
-  asVector(y_)->ops->nvlinearcombination = &linearCombinationSinglePass;
+  detail::installSinglePassOps(asVector(y_));
   double* a = N_VGetArrayPointer(asVector(atol_));
   for (int i = 0; i < n_; ++i) a[i] = opts.abs_tol[static_cast<std::size_t>(i)];
   N_VConst(0.0, asVector(y_));

@@ -201,7 +201,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir)
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
       .set("structure", model.flexible ? "flexible" : "rigid")
       .set("integrator", JsonObject()
-                             .set("method", "ARKODE ERKStep ARK4(3)6L[2]SA explicit table")
+                             .set("method", s.integrator_method)
                              .set("rel_tol", study.simulate.rel_tol)
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));

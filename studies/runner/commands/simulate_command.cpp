@@ -210,7 +210,7 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
   }
   if (cft) summary.set("constrained_flight_test", zmpSummary(*cft));
   summary.set("integrator", JsonObject()
-                             .set("method", model.flexible ? "ARKODE ERKStep ARK4(3)6L[2]SA explicit table" : "ARKODE ERKStep Dormand-Prince 5(4)")
+                             .set("method", s.integrator_method)
                              .set("rel_tol", opts.rel_tol)
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
