@@ -109,8 +109,6 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
                       extra_couple_.array()).matrix();
     kin_.resultant(b, extra_force_, extra_couple_, omega_W_, &aero->F_W, &aero->M_P2_W,
                    &aero->power_aero_W);
-    aero->separated_fraction = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() /
-                               (b.chord_m * b.width_m).sum();
   }
 }
 
@@ -159,6 +157,9 @@ void FlexibleTetheredSystem::rhs(double t_s, const double* y, double* ydot) {
 void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out) {
   AeroResult aero;
   evaluate(t_s, y, nullptr, &aero);
+  const aero::StripBatch& b = data_.batch;  // area share of separated flow (histories only)
+  aero.separated_fraction =
+      ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() / (b.chord_m * b.width_m).sum();
   // Inertial loads of the wing by nodal sums over the FE mesh (structure.md 3.5, level L3):
   // a_p = alpha x s + w x (w x s) + 2 w x Phi q' + Phi q''.
   const structure::ModalWing& mw = *flex_.modal;

@@ -44,7 +44,7 @@ struct SimulationOptions {
   int cycles = 10;               ///< flapping cycles to simulate, [1, 100000]
   double rel_tol = 1e-4;         ///< SUNDIALS relative tolerance, (0, 1e-2]; cycle means move
                                  ///< < 0.1 % when tightened tenfold (tests/unit/dynamics)
-  double abs_tol = 1e-6;         ///< absolute tolerance on the circulation-lag states (rad),
+  double abs_tol = 1e-5;         ///< absolute tolerance on the circulation-lag states (rad),
                                  ///< (0, 1e-2]
   double separation_abs_tol = 1e-5;  ///< absolute tolerance on the separation fractions f in
                                      ///< [0, 1], (0, 1e-2]; the suction force goes with sqrt(f),

@@ -4,12 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 #include <cstdlib>
 #include <new>
 #include <vector>
 
+#include "core/dynamics/flexible_tethered.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/free_flight_system.hpp"
 #include "core/integrate/erk_integrator.hpp"
+#include "core/integrate/imex_integrator.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
 #include "tests/support/test_vehicles.hpp"
 
 namespace {
@@ -86,6 +91,67 @@ TEST(DynamicsNoAllocation, DeLaurierRightHandSide) {
   VehicleModel v = testing::rfwRig();
   v.aero.model = AeroModelKind::kDeLaurier1993;
   expectNoAllocationInRhs(v);
+}
+
+// The flexible wing's right-hand sides and their implicit-explicit steps (ARKStep with the modal
+// split and the one-shot stage solver), tethered and in free flight.
+template <class System>
+void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>& y0,
+                                   double rel_tol) {
+  using Imex = ModalImex<System>;
+  std::vector<double> y(y0), ydot(static_cast<std::size_t>(n), 0.0);
+  Imex::explicitRhs(0.0, y.data(), ydot.data(), &sys);  // warm-up
+  const long before = g_allocations.load();
+  for (int i = 0; i < 200; ++i) {
+    Imex::explicitRhs(1e-4 * i, y.data(), ydot.data(), &sys);
+    Imex::implicitRhs(1e-4 * i, y.data(), ydot.data(), &sys);
+    Imex::solve(1e-4 * (1 + i % 3), y.data(), ydot.data(), &sys);
+  }
+  EXPECT_EQ(g_allocations.load() - before, 0) << "the IMEX right-hand side allocated";
+
+  IntegratorOptions opts;
+  opts.rel_tol = rel_tol;
+  sys.absoluteTolerances(rel_tol, 1e-5, 1e-5, &opts.abs_tol);
+  ImexIntegrator integrator(n, &Imex::explicitRhs, Imex::part(), &sys, opts);
+  integrator.reset(0.0, y0.data());
+  ASSERT_EQ(integrator.advanceTo(0.02), IntegratorStatus::kOk) << integrator.lastError();
+  const long before_steps = g_allocations.load();
+  ASSERT_EQ(integrator.advanceTo(0.2), IntegratorStatus::kOk) << integrator.lastError();
+  EXPECT_EQ(g_allocations.load() - before_steps, 0) << "IMEX integration steps allocated";
+  EXPECT_GT(integrator.steps(), 10);
+}
+
+VehicleModel magpie() {
+  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                  "/studies/vehicles/efw_magpie.toml");
+}
+
+TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
+  const VehicleModel v = magpie();
+  const FlightCoreModel model(v);
+  const OperatingPoint& p = v.operating_point;
+  FlexibleTetheredSystem sys(model, *model.flexible, tetheredBodyMotion(p.speed_mps, p.theta_rad),
+                             ControlInput{p.freq_hz, p.tail_angle_rad});
+  const int n = sys.stateCount();
+  std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
+  sys.initialState(0.0, y0.data());
+  expectNoAllocationInImexSteps(sys, n, y0, 1e-4);
+}
+
+TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
+  const VehicleModel v = magpie();
+  const FlightCoreModel model(v);
+  const OperatingPoint& p = v.operating_point;
+  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{p.freq_hz, p.tail_angle_rad});
+  const int n = sys.stateCount();
+  std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
+  BodyState b;
+  b.h_m = 10.0;
+  b.theta_rad = p.theta_rad;
+  b.U_mps = p.speed_mps * std::cos(p.theta_rad);
+  b.W_mps = p.speed_mps * std::sin(p.theta_rad);
+  sys.initialState(0.0, b, y0.data());
+  expectNoAllocationInImexSteps(sys, n, y0, 1e-4);
 }
 
 TEST(DynamicsNoAllocation, CounterSeesAllocations) {  // the test above can fail
