@@ -149,6 +149,40 @@ JsonObject freeFlightObject(const FreeFlightVerification& v) {
   return o;
 }
 
+// Stage 1 (paper Eq. 4, tethered means): its solution, residual and means, named as such.
+JsonObject stage1Object(const TrimSummary& s) {
+  const OperatingPoint& p = s.refined_in_free_flight ? s.tethered_solution : s.solution;
+  const TrimResidual& r = s.refined_in_free_flight ? s.tethered_residual : s.residual;
+  return JsonObject()
+      .set("freq_hz", p.freq_hz)
+      .set("theta_mean_deg", p.theta_rad * kRadToDeg)
+      .set("speed_mps", p.speed_mps)
+      .set("tail_angle_deg", p.tail_angle_rad * kRadToDeg)
+      .set("residual", JsonObject().set("FV_N", r.FV_N).set("FH_N", r.FH_N).set("M_Nm", r.M_Nm))
+      .set("mean", JsonObject()
+                       .set("FV_N", s.mean.FV_N)
+                       .set("FH_N", s.mean.FH_N)
+                       .set("M_Nm", s.mean.M_Nm)
+                       .set("power_W", s.mean.power_aero_W)
+                       .set("hinge_power_W", s.mean.power_hinge_W));
+}
+
+// Stage 2 (level settled free flight from stage 1): whether it ran, how it ended, how far it moved.
+JsonObject stage2Object(const TrimSummary& s) {
+  JsonObject o;
+  o.set("applied", s.refined_in_free_flight);
+  if (!s.refined_in_free_flight) return o;
+  o.set("message", s.free_flight_trim_message)
+      .set("settled_free_flights", s.free_flight_trim_evaluations)
+      .set("settled_climb_angle_deg", s.free_flight_climb_angle_rad * kRadToDeg)
+      .set("delta_theta_mean_deg",
+           (s.solution.theta_rad - s.tethered_solution.theta_rad) * kRadToDeg)
+      .set("delta_speed_mps", s.solution.speed_mps - s.tethered_solution.speed_mps)
+      .set("delta_tail_angle_deg",
+           (s.solution.tail_angle_rad - s.tethered_solution.tail_angle_rad) * kRadToDeg);
+  return o;
+}
+
 }  // namespace
 
 int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
@@ -195,6 +229,14 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
                        .set("M_Nm", s.mean.M_Nm)
                        .set("power_W", s.mean.power_aero_W)
                        .set("hinge_power_W", s.mean.power_hinge_W))
+      .set("residual_source",
+           s.refined_in_free_flight
+               ? "residual, residual_scaled and mean are stage 1 (the Eq. (4) tethered means at "
+                 "stage1_equation4), not at the free-flight-refined trim point above"
+               : "residual, residual_scaled and mean are at the trim point above (no "
+                 "free-flight refinement)")
+      .set("stage1_equation4", stage1Object(s))
+      .set("stage2_free_flight_refinement", stage2Object(s))
       .set("initial", unknownsObject(study.trim.initial))
       .set("iterations", s.iterations)
       .set("evaluations", s.evaluations)
