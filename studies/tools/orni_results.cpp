@@ -458,7 +458,8 @@ int compareCommand(int argc, char** argv) {
 // (%.2f, %.3g, ...; default %.4g):
 //   j:FILE:KEY             number at KEY (dotted path, arrays as [i]) of the JSON file FILE
 //   c:FILE:COL:AGG         aggregate of a CSV column: min max mean range first last count absmax
-//   cw:FILE:COL:AGG:WCOL=V  the same over the rows where column WCOL equals V (numerically)
+//   cw:FILE:COL:AGG:WCOL=V  the same over the rows where column WCOL equals V (numerically);
+//                          WCOL>=V and WCOL<=V select at least / at most V; join with &
 //   at:FILE:COL:BYCOL:max|min   COL in the row where BYCOL is largest / smallest
 //   fit:FILE:Y:X1,X2,..:Xk  least-squares coefficient of Xk in Y = a + sum b_i X_i (rows with
 //                          numbers); fit:FILE:Y:X1,..:r2 gives the coefficient of determination
@@ -502,22 +503,44 @@ std::vector<double> columnValues(const Csv& t, const std::string& f, const std::
                                  const std::string& where = "") {
   const int j = t.column(col);
   if (j < 0) throw Failure(f + ": no column '" + col + "'");
-  int wj = -1;
-  double wv = 0.0;
+  // Conditions "COL=V", "COL>=V", "COL<=V", joined by '&'.
+  struct Cond {
+    int col = -1;
+    char op = '=';
+    double value = 0.0;
+  };
+  std::vector<Cond> conds;
   if (!where.empty()) {
-    const auto eq = where.find('=');
-    if (eq == std::string::npos) throw Failure("bad condition '" + where + "'");
-    wj = t.column(where.substr(0, eq));
-    if (wj < 0) throw Failure(f + ": no column '" + where.substr(0, eq) + "'");
-    wv = std::atof(where.substr(eq + 1).c_str());
+    for (const std::string& w : split(where, '&')) {
+      const auto eq = w.find('=');
+      if (eq == std::string::npos || eq == 0) throw Failure("bad condition '" + w + "'");
+      Cond c;
+      std::size_t name_end = eq;
+      if (w[eq - 1] == '>' || w[eq - 1] == '<') c.op = w[eq - 1], name_end = eq - 1;
+      c.col = t.column(w.substr(0, name_end));
+      if (c.col < 0) throw Failure(f + ": no column '" + w.substr(0, name_end) + "'");
+      c.value = std::atof(w.substr(eq + 1).c_str());
+      conds.push_back(c);
+    }
   }
+  auto keep = [&](const std::vector<std::string>& r) {
+    for (const Cond& c : conds) {
+      double w = 0.0;
+      if (static_cast<std::size_t>(c.col) >= r.size() ||
+          !parseNumber(r[static_cast<std::size_t>(c.col)], &w))
+        return false;
+      const double eps = 1e-9 * std::max(1.0, std::fabs(c.value));
+      const bool ok = c.op == '>' ? w >= c.value - eps
+                      : c.op == '<' ? w <= c.value + eps
+                                    : std::fabs(w - c.value) <= eps;
+      if (!ok) return false;
+    }
+    return true;
+  };
   std::vector<double> v;
   for (const auto& r : t.rows) {
-    double x = 0.0, w = 0.0;
-    if (wj >= 0 && !(static_cast<std::size_t>(wj) < r.size() &&
-                     parseNumber(r[static_cast<std::size_t>(wj)], &w) &&
-                     std::fabs(w - wv) <= 1e-9 * std::max(1.0, std::fabs(wv))))
-      continue;
+    double x = 0.0;
+    if (!keep(r)) continue;
     if (static_cast<std::size_t>(j) < r.size() && parseNumber(r[static_cast<std::size_t>(j)], &x) &&
         std::isfinite(x))
       v.push_back(x);
