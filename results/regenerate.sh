@@ -4,17 +4,21 @@
 #
 #   bash results/regenerate.sh [ORNITHOPTER [ORNI_RESULTS]]
 #
-# ORNITHOPTER defaults to build/studies/runner/ornithopter, ORNI_RESULTS (the README filler) to
-# build/studies/tools/orni_results; both relative to the repository root. -j is
+# ORNITHOPTER defaults to build/studies/runner/ornithopter (relative to the repository root),
+# ORNI_RESULTS (the README filler) to studies/tools/orni_results of the same build tree. -j is
 # ${ORNI_JOBS:-2}. Journals (*.journal) are removed first so that nothing is resumed from an older
 # run, and the run is timed into results/paper/regenerate_timing.json. Afterwards commit
 # results/paper and results/README.md; tests/regression/paper_results.sh compares against them.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
+# Paths given on the command line are relative to the caller's folder; the defaults to the root.
+abs() { if [[ -e "$1" ]]; then echo "$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"; else echo "$1"; fi; }
+if [[ $# -ge 1 ]]; then bin="$(abs "$1")"; else bin="$root/build/studies/runner/ornithopter"; fi
+if [[ $# -ge 2 ]]; then set -- "$1" "$(abs "$2")"; fi
 cd "$root"
 
-bin="${1:-build/studies/runner/ornithopter}"
-filler="${2:-build/studies/tools/orni_results}"
+# The filler sits beside the runner in the same build tree (studies/tools/ next to studies/runner/).
+filler="${2:-$(dirname "$bin")/../tools/orni_results}"
 jobs="${ORNI_JOBS:-2}"
 out="results/paper"
 
