@@ -220,7 +220,10 @@ bool contains(const std::string& s, const char* what) { return s.find(what) != s
 bool isMetadata(const std::string& key) {
   const std::string k = lastComponent(key);
   return k == "wall_time_s" || k == "version" || contains(k, "wall_time") || k == "timestamp" ||
-         k == "threads" || k == "jobs" || k == "elapsed_s";
+         k == "threads" || k == "jobs" || k == "elapsed_s" ||
+         // solver work counters: the adaptive step sequence differs between builds (SIMD or not)
+         // by a few steps without changing a result beyond the tolerances
+         k == "steps" || k == "rhs_evaluations";
 }
 // Free text (may quote numbers in words); not compared.
 bool isFreeText(const std::string& key) {
@@ -237,6 +240,8 @@ double unitFloor(const std::string& key) {
     const std::string s(suf);
     return k.size() >= s.size() && k.compare(k.size() - s.size(), s.size(), s) == 0;
   };
+  // convergence measure of the periodic steady state: anything below the default steady_tol
+  if (k == "last_cycle_change") return 1e-3;
   if (ends("_Nm")) return 1e-5;
   if (ends("_N")) return 1e-4;
   if (ends("_W")) return 1e-3;
@@ -260,13 +265,13 @@ struct Cell {
 };
 
 struct Comparison {
-  double rel = 5e-3, abs_scale = 1e-3;
+  double rel = 1e-2, abs_scale = 2e-3;
   long compared = 0, failed = 0;
-  std::vector<Cell> cells;  // failures and near-misses (ratio > 0.5)
+  std::vector<Cell> cells;  // every value that differs at all
   std::vector<std::string> structural;
   void note(Cell c) {
     if (c.ratio > 1.0) ++failed;
-    if (c.ratio > 0.5) cells.push_back(std::move(c));
+    if (c.ratio > 0.0) cells.push_back(std::move(c));  // any difference: the report shows the worst
   }
   void fail(const std::string& what) {
     ++failed;

@@ -6,22 +6,28 @@
 #
 # Tolerances: a number passes when |a - b| <= rel |b| + abs_scale * range(column of the baseline)
 # (summary.json values: rel |b| + a floor by unit, 1e-4 N, 1e-5 N m, 1e-3 deg, 1e-5 m, ...).
-#   rel = 5e-3:       the x86-64-v3 (SIMD, FMA) and the plain x86-64 builds differ by ~1e-4
-#                     relative in the trim point and the cycle means, and the adaptive step
-#                     controller can pick a different step sequence, which moves free-flight
-#                     histories by a few 1e-4; 5e-3 is 20-50 times that and still far below any
-#                     change that matters for the paper comparison (0.05 deg of a 9.2 deg trim).
-#   abs_scale = 1e-3: values that cross zero (FH, moments, residuals, delta_M in a history)
-#                     have no meaningful relative error; a thousandth of the column's range is
-#                     below the line width of every figure.
-# Not compared: wall_time_s, version (run metadata), free text (message, report). Compared
+#   rel = 1e-2, abs_scale = 2e-3, measured: a plain x86-64 build (-DORNI_SIMD=off) against the
+#                     x86-64-v3 (AVX2/FMA) baselines differs by < 1e-4 relative in every study but
+#                     the stalled RFW at theta 20 deg, where the adaptive steps differ (184 vs 187)
+#                     and the separated fraction and FH near its zero crossings move by up to 1 %;
+#                     with these tolerances that worst cell uses half of its tolerance (5e-3 and
+#                     1e-3 would leave no margin). 1 % is still far below anything that matters for
+#                     the paper comparison (0.09 deg of the 9.2 deg trim pitch).
+#   abs_scale:        values that cross zero (FH, moments, residuals, delta_M in a history)
+#                     have no meaningful relative error; 2e-3 of the column's range is below the
+#                     line width of every figure.
+# Not compared: wall_time_s, version, threads (run metadata), the integrator's step and
+# right-hand-side counts (solver work, a few steps apart between builds), free text (message,
+# report). last_cycle_change (a steady-state measure) has the floor 1e-3 (steady_tol). Compared
 # exactly: status, kind, mode and other words, booleans (bounded, converged), null/empty cells,
-# row and column counts. NaN, empty where the baseline has a number, a missing file, row or
-# column fail. The comparer itself is checked first: it must pass on identical files and on a
-# perturbation below tolerance, and fail on one above it and on an injected NaN.
+# row and column counts. NaN, empty where the baseline has a number, a missing
+# file, row or column fail. The comparer itself is checked first: it must pass on identical files
+# and on a perturbation below tolerance, and fail on one above it, on an injected NaN and on a
+# missing file.
 #
-# Which studies: every paper study that runs in under ~40 s (measured on the 2-core machine, -j 2:
-# see results/README.md); optimize_magpie (~90 s) is left to results/regenerate.sh.
+# Which studies: every paper study but the optimisation (measured on the 2-core machine, -j 2:
+# together ~40 s: calibrate_magpie ~20 s, the sweep ~10 s, the rest a few s); optimize_magpie
+# (~2 minutes) is left to results/regenerate.sh.
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
 root=$(cd "$root" && pwd)
@@ -29,8 +35,8 @@ rm -rf "$scratch"; mkdir -p "$scratch"
 tool=${ORNI_RESULTS:-$(dirname "$bin")/../tools/orni_results}
 fast=(fig2_rfw_theta0 fig2_rfw_theta20 fig5_efw_aeromap table3_trim fig6_8_free_flight
       fig9_constrained_flight_test calibrate_magpie sweep_tail_arm_area)
-rel=5e-3
-abs_scale=1e-3
+rel=1e-2
+abs_scale=2e-3
 fail=0
 check() {  # check "description" command...
   local what=$1; shift
@@ -60,12 +66,12 @@ perturb() {
     { print }' "$1" > "$1.new" && mv "$1.new" "$1"
 }
 perturb "$st/small/fig5_efw_aeromap/aeromap.csv" FV_mean_N 1.001 0
-perturb "$st/big/fig5_efw_aeromap/aeromap.csv" FV_mean_N 1 0.05
+perturb "$st/big/fig5_efw_aeromap/aeromap.csv" FV_mean_N 1 0.1
 sed -i -E 's/("theta_mean_deg": )([-0-9.e]+)/\1null/' "$st/nan/table3_trim/summary.json"
 cmp_ "$st/base" "$st/same";  check "comparer: identical folders pass" test $? -eq 0
 cmp_ "$st/base" "$st/small"; check "comparer: a 1e-3 relative change passes" test $? -eq 0
 cmp_ "$st/base" "$st/big";   r=$?
-check "comparer: +0.05 N on one aeromap cell (~6x its tolerance) fails" test $r -eq 1
+check "comparer: +0.1 N on one aeromap cell (~6x its tolerance) fails" test $r -eq 1
 check "comparer: ... and names the cell" grep -q 'FAIL .*aeromap.csv: row 1, FV_mean_N' "$st/last.log"
 cmp_ "$st/base" "$st/nan";   check "comparer: a NaN (null) trim angle fails" test $? -eq 1
 rm "$st/same/table3_trim/trim_progress.csv"
