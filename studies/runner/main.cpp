@@ -137,7 +137,9 @@ int main(int argc, char** argv) {
   std::string run_out;
   int run_jobs = 1;
   run->add_option("STUDY", run_files, "Study files (TOML)")->required();
-  run->add_option("-o,--output", run_out, "Output folder (default results/<study name>)");
+  run->add_option("-o,--output", run_out,
+                  "Output folder (default results/<study name>); with several studies each goes "
+                  "into DIR/<study name>");
   run->add_option("-j,--jobs", run_jobs, "Worker threads")->check(CLI::Range(1, 1024));
 
   // plot

@@ -136,7 +136,12 @@ std::string zmpFigureScript(const Study& study, const ConstrainedFlightTest& tes
   g << "set multiplot title \"" << study.name
     << " - constrained flight test (tethered): theta = " << study.point.theta_rad * kRadToDeg
     << " deg, f = " << study.point.freq_hz << " Hz, U = " << study.point.speed_mps
-    << " m/s, tail = " << study.point.tail_angle_rad * kRadToDeg << " deg, cycle " << cycle
+    << " m/s";
+  if (study.vehicle.tail.present)
+    g << ", tail = " << study.point.tail_angle_rad * kRadToDeg << " deg";
+  else
+    g << ", no tail (rig)";
+  g << ", cycle " << cycle
     << "\" noenhanced font ',13'\n";
   g << "set lmargin 13\nset rmargin 12\nset tmargin 0.5\nset bmargin 0.5\n";
   // (a) coefficients against time over the cycle, downstroke shaded.

@@ -144,7 +144,8 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir)
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-  writeFileAtomic(out_dir / "histories.csv", historyTable(history).toString());
+  writeFileAtomic(out_dir / "histories.csv",
+                  historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
 
   JsonObject summary;
   summary.set("kind", "simulate")

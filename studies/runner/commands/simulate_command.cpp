@@ -147,7 +147,8 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
   writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-  writeFileAtomic(out_dir / "histories.csv", historyTable(history).toString());
+  writeFileAtomic(out_dir / "histories.csv",
+                  historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
   writeFileAtomic(out_dir / "cycles.csv", cycleTable(s).toString());
 
   // The constrained flight test (paper Fig. 9) of the last whole cycle.

@@ -1,6 +1,8 @@
 #include "studies/runner/commands/sweep_command.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
@@ -143,6 +145,21 @@ std::string sweepFigure(const Study& study, const trim::SweepGrid& grid,
   } else
     g << "unset key\n";
   g << "set xlabel '" << x_key << " (" << keyUnit(x_key) << ")' noenhanced\n";
+  {  // tics at the swept values (few) or a handful (many), and a margin around them
+    const std::vector<double>& xv = s.axes[0].values.values;
+    const double lo = *std::min_element(xv.begin(), xv.end());
+    const double hi = *std::max_element(xv.begin(), xv.end());
+    const double pad = hi > lo ? 0.06 * (hi - lo) : std::max(0.05 * std::fabs(lo), 1e-9);
+    g << "set xrange [" << formatShortest(lo - pad) << ":" << formatShortest(hi + pad) << "]\n";
+    if (xv.size() <= 8) {
+      g << "set xtics (";
+      for (std::size_t i = 0; i < xv.size(); ++i)
+        g << (i ? ", " : "") << formatShortest(xv[i]);
+      g << ")\n";
+    } else {
+      g << "set xtics autofreq\n";
+    }
+  }
   for (std::size_t pi = 0; pi < panels.size(); ++pi) {
     const Panel& p = panels[pi];
     const SweepColumn& col = columns[p.column];

@@ -1,6 +1,7 @@
 #include "studies/runner/commands/trim_command.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <iostream>
 #include <limits>
 #include <sstream>
@@ -108,10 +109,17 @@ CsvTable progressTable(const TrimSummary& s) {
 std::string convergenceFigure(const Study& study, const TrimSummary& s, double tol) {
   int last = 0;
   for (const TrimEvaluationRecord& e : s.evaluation_log) last = std::max(last, e.iteration);
+  // Stage 2 (free-flight refinement) moves the trim point after the last Eq. (4) iteration: shown
+  // as open circles at x = last + 1 in the lower panel, so the figure ends at the reported point.
+  const bool refined = s.refined_in_free_flight && s.converged;
+  const double x2 = last + 1.0;
   std::ostringstream g;
   g << "set multiplot layout 2,1 title \"" << study.name << " trim (" << toString(s.status)
-    << "): max(|FV-W|, |FH|, |M|/c_mean) / W per iteration\" noenhanced font ',13'\n";
-  g << "set lmargin 12\nset rmargin 30\nset tmargin 3\n"
+    << "), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W"
+    << (refined ? "\\nstage 2: level settled free flight moves the trim point (open circles)"
+                : "")
+    << "\" noenhanced font ',13'\n";
+  g << "set lmargin 12\nset rmargin 44\nset tmargin 4\n"
        "set key outside right top vertical Left reverse noenhanced\n";
   g << "set xrange [-0.2:" << last + 0.2 << "]\nset xlabel 'iteration'\nset xtics 1\n";
   g << "set logscale y\nset format y '10^{%L}'\nset ylabel 'scaled residual (-)'\n";
@@ -126,10 +134,32 @@ std::string convergenceFigure(const Study& study, const TrimSummary& s, double t
     << tol << " with lines dt 2 lc rgb '#333333' title 'tolerance'\n";
   g << "unset logscale y\nset format y '%g'\nset yrange [*:*]\n";
   g << "set ylabel 'unknowns (deg, m/s, Hz)'\n";
-  g << "plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 title 'theta mean "
-       "(deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 title 'speed (m/s)', "
-       "'' skip 2 using 1:5 with linespoints lw 2 pt 9 title 'tail angle (deg)', "
-       "'' skip 2 using 1:6 with linespoints lw 2 pt 11 title 'frequency (Hz)'\n";
+  if (refined) {
+    g << "set xrange [-0.2:" << x2 + 0.3 << "]\nset xtics add ('stage 2' " << x2 << ")\n";
+    g << "set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'\n";
+  }
+  const char* kColours[3] = {"#9400d3", "#009e73", "#56b4e9"};  // gnuplot's first three
+  g << "plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '"
+    << kColours[0] << "' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '"
+    << kColours[1] << "' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '"
+    << kColours[2] << "' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 "
+       "lc rgb '#e69f00' title 'frequency (Hz)'";
+  if (refined) {
+    const double v[3] = {s.solution.theta_rad * kRadToDeg, s.solution.speed_mps,
+                         s.solution.tail_angle_rad * kRadToDeg};
+    const char* names[3] = {"theta", "U", "tail"};
+    auto fixed2 = [](double x) {
+      char b[32];
+      std::snprintf(b, sizeof b, "%.2f", x);
+      return std::string(b);
+    };
+    for (int k = 0; k < 3; ++k)
+      g << ", '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '" << kColours[k]
+        << "' title 'stage 2: " << names[k] << " = " << fixed2(v[k]) << "'";
+    g << "\n";
+    for (int k = 0; k < 3; ++k) g << x2 << "," << formatShortest(v[k]) << "\ne\n";
+  }
+  g << "\n";
   g << "unset multiplot\n";
   return g.str();
 }
@@ -146,6 +176,40 @@ JsonObject freeFlightObject(const FreeFlightVerification& v) {
       .set("theta_max_deg", v.theta_max_rad * kRadToDeg)
       .set("altitude_p2p_m", v.altitude_p2p_m)
       .set("dominant_freq_hz", v.dominant_freq_hz);
+  return o;
+}
+
+// Stage 1 (paper Eq. 4, tethered means): its solution, residual and means, named as such.
+JsonObject stage1Object(const TrimSummary& s) {
+  const OperatingPoint& p = s.refined_in_free_flight ? s.tethered_solution : s.solution;
+  const TrimResidual& r = s.refined_in_free_flight ? s.tethered_residual : s.residual;
+  return JsonObject()
+      .set("freq_hz", p.freq_hz)
+      .set("theta_mean_deg", p.theta_rad * kRadToDeg)
+      .set("speed_mps", p.speed_mps)
+      .set("tail_angle_deg", p.tail_angle_rad * kRadToDeg)
+      .set("residual", JsonObject().set("FV_N", r.FV_N).set("FH_N", r.FH_N).set("M_Nm", r.M_Nm))
+      .set("mean", JsonObject()
+                       .set("FV_N", s.mean.FV_N)
+                       .set("FH_N", s.mean.FH_N)
+                       .set("M_Nm", s.mean.M_Nm)
+                       .set("power_W", s.mean.power_aero_W)
+                       .set("hinge_power_W", s.mean.power_hinge_W));
+}
+
+// Stage 2 (level settled free flight from stage 1): whether it ran, how it ended, how far it moved.
+JsonObject stage2Object(const TrimSummary& s) {
+  JsonObject o;
+  o.set("applied", s.refined_in_free_flight);
+  if (!s.refined_in_free_flight) return o;
+  o.set("message", s.free_flight_trim_message)
+      .set("settled_free_flights", s.free_flight_trim_evaluations)
+      .set("settled_climb_angle_deg", s.free_flight_climb_angle_rad * kRadToDeg)
+      .set("delta_theta_mean_deg",
+           (s.solution.theta_rad - s.tethered_solution.theta_rad) * kRadToDeg)
+      .set("delta_speed_mps", s.solution.speed_mps - s.tethered_solution.speed_mps)
+      .set("delta_tail_angle_deg",
+           (s.solution.tail_angle_rad - s.tethered_solution.tail_angle_rad) * kRadToDeg);
   return o;
 }
 
@@ -195,6 +259,14 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
                        .set("M_Nm", s.mean.M_Nm)
                        .set("power_W", s.mean.power_aero_W)
                        .set("hinge_power_W", s.mean.power_hinge_W))
+      .set("residual_source",
+           s.refined_in_free_flight
+               ? "residual, residual_scaled and mean are stage 1 (the Eq. (4) tethered means at "
+                 "stage1_equation4), not at the free-flight-refined trim point above"
+               : "residual, residual_scaled and mean are at the trim point above (no "
+                 "free-flight refinement)")
+      .set("stage1_equation4", stage1Object(s))
+      .set("stage2_free_flight_refinement", stage2Object(s))
       .set("initial", unknownsObject(study.trim.initial))
       .set("iterations", s.iterations)
       .set("evaluations", s.evaluations)

@@ -306,7 +306,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
   if (std::optional<TableReader> sim = top.optionalTable(
           "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
                        "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol",
-                       "samples_per_cycle", "free"})) {
+                       "samples_per_cycle", "history_every", "free"})) {
     SimulationOptions& o = study.simulate;
     OperatingPoint& p = study.point;
     constexpr int kIntMin = std::numeric_limits<int>::min();
@@ -328,6 +328,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
     readTolerances(*sim, o);
     o.samples_per_cycle =
         sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
+    study.history_every = sim->optionalInt("history_every", study.history_every, 1, 1000000);
     std::string why;
     if (!o.IsValid(&why)) throwInvalidOptions(*sim, why);
     sim->finish();
@@ -458,6 +459,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     out.number("separation_abs_tol", o.separation_abs_tol);
     out.number("steady_tol", o.steady_tol);
     out.integer("samples_per_cycle", o.samples_per_cycle);
+    out.integer("history_every", study.history_every);
     if (o.mode == FlightMode::kFree) {
       const FreeFlightOptions& f = o.free;
       out.header({"simulate", "free"});

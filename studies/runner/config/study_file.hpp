@@ -17,7 +17,9 @@
 //   [simulate] (optional, kind = "simulate" only) mode "tethered"|"free", speed_mps, freq_hz,
 //            theta_deg, tail_angle_deg (default: the vehicle's operating point), cycles, rel_tol,
 //            abs_tol, separation_abs_tol, steady_tol, samples_per_cycle (default:
-//            SimulationOptions).
+//            SimulationOptions), history_every (>= 1, default 1: histories.csv keeps every n-th
+//            of the samples_per_cycle samples; an output option, the summary, spectra, the
+//            constrained flight test and the limit-cycle metrics use every sample).
 //   [simulate.free] (optional, only with mode = "free": rejected for a tethered [simulate], where
 //            it would be silently ignored) the free-flight settings (FreeFlightOptions):
 //              bound_speed_mps, bound_W_mps, bound_theta_deg, bound_h_m  (> 0) and
@@ -155,6 +157,8 @@ struct Study {
   orni::VehicleModel vehicle;          ///< resolved, overrides applied, SI
   orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
+  int history_every = 1;               ///< [simulate] history_every: histories.csv keeps every
+                                       ///< n-th sample (output only; the analysis uses all)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
   orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
   orni::CalibrationOptions calibrate;  ///< [calibrate] (kind calibrate; config/calibrate_section.hpp)

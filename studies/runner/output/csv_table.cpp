@@ -42,7 +42,8 @@ void CsvTable::addTextColumn(std::string name, std::string unit, std::vector<std
 
 std::size_t CsvTable::rows() const { return columns_.empty() ? 0 : columns_.front().size(); }
 
-std::string CsvTable::toString() const {
+std::string CsvTable::toString(std::size_t row_stride) const {
+  if (row_stride < 1) row_stride = 1;
   std::string out;
   auto row = [&out](const std::vector<std::string>& cells) {
     for (std::size_t i = 0; i < cells.size(); ++i) {
@@ -53,7 +54,7 @@ std::string CsvTable::toString() const {
   };
   row(names_);
   row(units_);
-  for (std::size_t r = 0; r < rows(); ++r) {
+  for (std::size_t r = 0; r < rows(); r += row_stride) {
     for (std::size_t c = 0; c < columns_.size(); ++c) {
       if (c) out += ',';
       out += columns_[c][r];

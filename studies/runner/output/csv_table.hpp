@@ -15,8 +15,8 @@ class CsvTable {
   /// or a double quote is quoted (RFC 4180); newlines are not allowed (std::logic_error).
   void addTextColumn(std::string name, std::string unit, std::vector<std::string> cells);
   std::size_t rows() const;
-  /// Text: names row, units row, then the values.
-  std::string toString() const;
+  /// Text: names row, units row, then the values (with row_stride n: rows 0, n, 2n, ... only).
+  std::string toString(std::size_t row_stride = 1) const;
 
  private:
   void add(std::string name, std::string unit, std::vector<std::string> cells);
