@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 #include <cstddef>
 #include <set>
 #include <stdexcept>
@@ -81,17 +83,24 @@ TEST(TrimPointPool, AnExceptionStopsThePoolAndReachesTheCaller) {
   for (std::size_t i = 0; i < todo.size(); ++i) todo[i] = i;
   for (int threads : {1, 2}) {
     std::atomic<int> started{0};
+    // Points after the failing one take a millisecond (a real point takes far longer): without
+    // it a second thread could finish all 200 trivial points before the failure is seen.
     EXPECT_THROW(runPoints(todo, threads,
                            [&](std::size_t i) {
                              ++started;
                              if (i == 3) throw std::runtime_error("point 3 failed");
+                             if (i > 3) std::this_thread::sleep_for(std::chrono::milliseconds(1));
                            }),
                  std::runtime_error);
     EXPECT_LT(started.load(), 200);  // no new points after the failure
     started = 0;
     std::size_t reported = 0;
     EXPECT_THROW(runPoints(
-                     todo, threads, [&](std::size_t) { ++started; },
+                     todo, threads,
+                     [&](std::size_t) {
+                       ++started;
+                       std::this_thread::sleep_for(std::chrono::milliseconds(1));
+                     },
                      [&](std::size_t) {
                        if (++reported == 5) throw std::runtime_error("journal full");
                      }),
