@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/integrate/callback_guard.hpp"
 #include "core/integrate/serial_vector_ops.hpp"
 
 namespace orni {
@@ -49,17 +50,7 @@ int freeSolver(SUNNonlinearSolver nls) {
 // SUNDIALS.
 struct ImexCallback {
   static int call(ImexIntegrator* self, RhsFunction f, sunrealtype t, N_Vector y, N_Vector ydot) {
-    try {
-      const int rc = f(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot), self->user_);
-      if (rc != 0) return rc;
-      const double* d = N_VGetArrayPointer(ydot);
-      for (int i = 0; i < self->n_; ++i)
-        if (!std::isfinite(d[i])) return 1;  // recoverable: retry with a smaller step
-      return 0;
-    } catch (...) {
-      self->pending_ = std::current_exception();
-      return -1;
-    }
+    return detail::guardedRhs(f, t, y, ydot, self->n_, self->user_, &self->pending_);
   }
   static int explicitRhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) {
     auto* self = static_cast<ImexIntegrator*>(user_data);
@@ -191,11 +182,7 @@ IntegratorStatus ImexIntegrator::advanceTo(double tout) {
   if (!mem_) throw std::logic_error("ImexIntegrator::advanceTo before reset");
   sunrealtype t_reached = t_;
   const int flag = ARKStepEvolve(mem_, tout, asVector(y_), &t_reached, ARK_NORMAL);
-  if (pending_) {
-    std::exception_ptr e = pending_;
-    pending_ = nullptr;
-    std::rethrow_exception(e);
-  }
+  detail::rethrowPending(&pending_);
   t_ = t_reached;
   if (flag < 0) {
     last_error_ = std::string("ARKODE ARKStep failed at t = ") + std::to_string(t_reached) +

@@ -1,7 +1,6 @@
 // Flexible wing (issue targets: model build <= 200 ms; 10 cycles tethered EFW <= 10 ms). The
 // tethered run integrates the modal stiffness implicitly (SimulationOptions::modal_integration,
-// the default); BM_TetheredEfwFlexible10CyclesExplicit is the explicit ARK4(3)6L run, for
-// comparison.
+// the default; explicit:0); explicit:1 is the explicit ARK4(3)6L run, for comparison.
 //   BM_EfwModalWingBuild: mesh (5 mm) + assembly + eigen-solution (12 modes) + reduction.
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the trim point, 12 modes, MST-TD.
 #include <benchmark/benchmark.h>
@@ -40,12 +39,15 @@ void BM_EfwModalWingBuild(benchmark::State& state) {
 }
 BENCHMARK(BM_EfwModalWingBuild)->Unit(benchmark::kMillisecond);
 
+// Arg 0: the default, modal stiffness implicit; 1: the explicit ARK4(3)6L table.
 void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
   const VehicleModel v = efwFlexible();
   const FlightCoreModel model(v);
   SimulationOptions opts;
   opts.cycles = 10;
   opts.record_history = false;
+  opts.modal_integration =
+      state.range(0) == 0 ? ModalIntegration::kImplicit : ModalIntegration::kExplicit;
   long evals = 0;
   for (auto _ : state) {
     const SimulationSummary s = simulateTethered(model, v.operating_point, opts, nullptr);
@@ -55,23 +57,7 @@ void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
   state.counters["rhs_evals"] = static_cast<double>(evals);
   state.counters["modes"] = model.flexible->mode_count;
 }
-BENCHMARK(BM_TetheredEfwFlexible10Cycles)->Unit(benchmark::kMillisecond);
-
-void BM_TetheredEfwFlexible10CyclesExplicit(benchmark::State& state) {
-  const VehicleModel v = efwFlexible();
-  const FlightCoreModel model(v);
-  SimulationOptions opts;
-  opts.cycles = 10;
-  opts.record_history = false;
-  opts.modal_integration = ModalIntegration::kExplicit;
-  long evals = 0;
-  for (auto _ : state) {
-    const SimulationSummary s = simulateTethered(model, v.operating_point, opts, nullptr);
-    benchmark::DoNotOptimize(s.mean.FV_N);
-    evals = s.rhs_evaluations;
-  }
-  state.counters["rhs_evals"] = static_cast<double>(evals);
-}
-BENCHMARK(BM_TetheredEfwFlexible10CyclesExplicit)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TetheredEfwFlexible10Cycles)->ArgName("explicit")->Arg(0)->Arg(1)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/modal_implicit_split.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
-#include "studies/runner/config/vehicle_file.hpp"
+#include "tests/support/magpie_vehicle.hpp"
 
 namespace orni {
 namespace {
@@ -21,13 +21,8 @@ constexpr double kImexVsReferenceTol = 1e-4;
 // Stage solve: exact up to rounding of a 2M x 2M system.
 constexpr double kStageSolveTol = 1e-12;
 
-VehicleModel magpie() {
-  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
-}
-
 TEST(ModalImex, StageSolveInvertsIMinusGammaL) {
-  const VehicleModel v = magpie();
+  const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
   const FlexibleWingModel& flex = *model.flexible;
   const int M = flex.mode_count, off = 3, n = 3 + 2 * M + 4;
@@ -71,7 +66,7 @@ SimulationSummary tethered(const FlightCoreModel& model, const OperatingPoint& p
 }
 
 TEST(ModalImex, TetheredCycleMeansMatchTheExplicitIntegratorAndAReference) {
-  const VehicleModel v = magpie();
+  const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
   const OperatingPoint& p = v.operating_point;
   const SimulationSummary imex = tethered(model, p, ModalIntegration::kImplicit, 1e-4);
@@ -94,7 +89,7 @@ TEST(ModalImex, TetheredCycleMeansMatchTheExplicitIntegratorAndAReference) {
 }
 
 TEST(ModalImex, FreeFlightMatchesTheExplicitIntegrator) {
-  const VehicleModel v = magpie();
+  const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
   SimulationOptions o;
   o.mode = FlightMode::kFree;

@@ -14,7 +14,7 @@
 #include "core/dynamics/free_flight_system.hpp"
 #include "core/integrate/erk_integrator.hpp"
 #include "core/integrate/imex_integrator.hpp"
-#include "studies/runner/config/vehicle_file.hpp"
+#include "tests/support/magpie_vehicle.hpp"
 #include "tests/support/test_vehicles.hpp"
 
 namespace {
@@ -121,13 +121,8 @@ void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>
   EXPECT_GT(integrator.steps(), 10);
 }
 
-VehicleModel magpie() {
-  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
-}
-
 TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
-  const VehicleModel v = magpie();
+  const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
   const OperatingPoint& p = v.operating_point;
   FlexibleTetheredSystem sys(model, *model.flexible, tetheredBodyMotion(p.speed_mps, p.theta_rad),
@@ -139,7 +134,7 @@ TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
 }
 
 TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
-  const VehicleModel v = magpie();
+  const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
   const OperatingPoint& p = v.operating_point;
   FreeFlightSystem sys(model, model.flexible.get(), ControlInput{p.freq_hz, p.tail_angle_rad});
