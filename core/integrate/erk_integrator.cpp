@@ -5,6 +5,7 @@
 #include <sundials/sundials_context.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/integrate/callback_guard.hpp"
@@ -99,8 +100,11 @@ IntegratorStatus ErkIntegrator::advanceTo(double tout) {
   detail::rethrowPending(&pending_);
   t_ = t_reached;
   if (flag < 0) {
+    // The flag name is malloc'ed by SUNDIALS (6.x): the caller frees it.
+    char* name = ERKStepGetReturnFlagName(flag);
     last_error_ = std::string("ARKODE ERKStep failed at t = ") + std::to_string(t_reached) +
-                  " s: " + ERKStepGetReturnFlagName(flag);
+                  " s: " + (name ? name : "unknown flag");
+    std::free(name);
     return IntegratorStatus::kFailed;
   }
   return IntegratorStatus::kOk;

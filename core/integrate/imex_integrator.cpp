@@ -6,6 +6,7 @@
 #include <sundials/sundials_nonlinearsolver.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "core/integrate/callback_guard.hpp"
@@ -185,8 +186,11 @@ IntegratorStatus ImexIntegrator::advanceTo(double tout) {
   detail::rethrowPending(&pending_);
   t_ = t_reached;
   if (flag < 0) {
+    // The flag name is malloc'ed by SUNDIALS (6.x): the caller frees it.
+    char* name = ARKStepGetReturnFlagName(flag);
     last_error_ = std::string("ARKODE ARKStep failed at t = ") + std::to_string(t_reached) +
-                  " s: " + ARKStepGetReturnFlagName(flag);
+                  " s: " + (name ? name : "unknown flag");
+    std::free(name);
     return IntegratorStatus::kFailed;
   }
   return IntegratorStatus::kOk;
