@@ -55,7 +55,10 @@ case "$what" in
     # (wall_time_s, version); a summary whose only change is that metadata is restored, so that
     # `git status` stays clean (the run's own times are in the lines printed above).
     if git rev-parse --is-inside-work-tree >/dev/null 2>&1; then
-      git diff --name-only -- results/paper | while read -r f; do
+      # The list first, then the restores: a `git diff` still running in a pipe would hold the
+      # index lock that `git checkout` needs.
+      mapfile -t touched < <(git diff --name-only -- results/paper)
+      for f in "${touched[@]}"; do
         changed="$(git diff -U0 -- "$f" | grep -E '^[-+][^-+]' | grep -vE '"(wall_time_s|version)":' || true)"
         if [[ -z "$changed" ]]; then
           git checkout -q -- "$f"

@@ -37,8 +37,6 @@ class ModalImplicitSplit {
   /// x = (I - gamma L)^{-1} b.
   void solve(double gamma, const double* b, double* x);
 
-  const Eigen::MatrixXd& referenceMass() const { return A0_; }
-
  private:
   // w = A0^{-1} (K q + D q-dot) = [A0^{-1} K, A0^{-1} D] (q; q-dot)
   void stiffAcceleration(const double* y);

@@ -216,10 +216,4 @@ long ImexIntegrator::rhsEvaluations() const {
   return fe;
 }
 
-long ImexIntegrator::implicitEvaluations() const {
-  long fe = 0, fi = 0;
-  if (mem_) ARKStepGetNumRhsEvals(mem_, &fe, &fi);
-  return fi;
-}
-
 }  // namespace orni

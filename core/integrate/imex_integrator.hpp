@@ -48,7 +48,6 @@ class ImexIntegrator {
   int size() const { return n_; }
   long steps() const;
   long rhsEvaluations() const;       ///< explicit-part evaluations (the expensive ones)
-  long implicitEvaluations() const;  ///< L y products
   long stageSolves() const { return stage_solves_; }  ///< (I - gamma L) solves
   long stepAttempts() const;
   const std::string& lastError() const { return last_error_; }

@@ -94,22 +94,29 @@ TEST(ImexIntegrator, ForcedStiffOscillatorStaysOnItsAnalyticPeriodicSolution) {
   EXPECT_GT(integ.stageSolves(), 0);
 }
 
-TEST(ImexIntegrator, ExceptionFromTheRightHandSideIsRethrown) {
+// An integrator on the periodic solution, reset at t = 0.
+struct StartedOscillator {
   Oscillator osc;
-  ImexIntegrator integ(2, &explicitRhs, LinearImplicitPart{&implicitRhs, &solve}, &osc,
-                       options(1e-6, osc.amplitude()));
-  const double y0[2] = {osc.x(0.0), osc.v(0.0)};
-  integ.reset(0.0, y0);
+  ImexIntegrator integ{2, &explicitRhs, LinearImplicitPart{&implicitRhs, &solve}, &osc,
+                       options(1e-6, osc.amplitude())};
+  StartedOscillator() {
+    const double y0[2] = {osc.x(0.0), osc.v(0.0)};
+    integ.reset(0.0, y0);
+  }
+};
+
+TEST(ImexIntegrator, ExceptionFromTheRightHandSideIsRethrown) {
+  StartedOscillator s;
+  Oscillator& osc = s.osc;
+  ImexIntegrator& integ = s.integ;
   osc.throw_now = true;
   EXPECT_THROW(integ.advanceTo(0.01), std::runtime_error);
 }
 
 TEST(ImexIntegrator, UnrecoverableFailureIsReportedNotThrown) {
-  Oscillator osc;
-  ImexIntegrator integ(2, &explicitRhs, LinearImplicitPart{&implicitRhs, &solve}, &osc,
-                       options(1e-6, osc.amplitude()));
-  const double y0[2] = {osc.x(0.0), osc.v(0.0)};
-  integ.reset(0.0, y0);
+  StartedOscillator s;
+  Oscillator& osc = s.osc;
+  ImexIntegrator& integ = s.integ;
   osc.fail_now = true;
   EXPECT_EQ(integ.advanceTo(0.01), IntegratorStatus::kFailed);
   EXPECT_NE(integ.lastError().find("ARKStep"), std::string::npos) << integ.lastError();
