@@ -1,5 +1,6 @@
 #include "core/aero/mst_td_batch.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace orni::aero {
@@ -8,8 +9,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kHalfPi = 0.5 * kPi;
-using StateMap = Eigen::Map<const ArrayXd, 0, Eigen::InnerStride<2>>;
-using DerivMap = Eigen::Map<ArrayXd, 0, Eigen::InnerStride<2>>;
 }  // namespace
 
 bool batchKernelApplies(const AeroParameters& params) {
@@ -27,26 +26,39 @@ void StripBatch::resize(int n) {
   for (ArrayXd& s : t) s.setZero(n);
 }
 
-ArrayXd& atan2Array(const ArrayXd& y, const ArrayXd& x, ArrayXd& out, ArrayXd& a, ArrayXd& u,
-                    ArrayXd& base) {
+namespace {
+// atan2 without a branch: octant reduction to |u| <= tan(pi/16) and the odd Taylor series of
+// atan to u^23 (|u|^25/25 < 1e-19). Only selects, so the strip loops vectorise with it inline.
+inline double atan2Poly(double y, double x) {
   const double t1 = 0.19891236737965800691;  // tan(pi/16)
   const double t3 = 0.66817863791929891999;  // tan(3 pi/16)
   const double c1 = 0.41421356237309504880;  // tan(pi/8)
+  const double ax = std::abs(x), ay = std::abs(y);
   // a = min(|x|,|y|) / max(|x|,|y|) in [0, 1] (0 when both are 0).
-  a = x.abs().min(y.abs()) / x.abs().max(y.abs()).max(1e-300);
-  // atan(a) = atan(c) + atan((a - c)/(1 + a c)) with c in {0, tan(pi/8), 1}: |u| <= tan(pi/16).
-  u = (a < t1).select(a, (a < t3).select((a - c1) / (1.0 + a * c1), (a - 1.0) / (a + 1.0)));
-  base = (a < t3).select(ArrayXd::Constant(a.size(), kPi / 8.0), kPi / 4.0);
-  base = (a < t1).select(0.0, base);
-  // atan(u) = u p(u^2), p the odd Taylor series to u^23 (|u|^25/25 < 1e-19), one fused pass.
-  a = u * u;
-  out = base + u * (1.0 + a * (-1.0 / 3 + a * (1.0 / 5 + a * (-1.0 / 7 + a * (1.0 / 9 + a * (
-                    -1.0 / 11 + a * (1.0 / 13 + a * (-1.0 / 15 + a * (1.0 / 17 + a * (
-                    -1.0 / 19 + a * (1.0 / 21 + a * (-1.0 / 23))))))))))));
+  const double a = std::min(ax, ay) / std::max(std::max(ax, ay), 1e-300);
+  // atan(a) = atan(c) + atan((a - c)/(1 + a c)) with c in {0, tan(pi/8), 1}.
+  const double u_mid = (a - c1) / (1.0 + a * c1), u_high = (a - 1.0) / (a + 1.0);
+  const double u = a < t1 ? a : (a < t3 ? u_mid : u_high);
+  const double base = a < t1 ? 0.0 : (a < t3 ? kPi / 8.0 : kPi / 4.0);
+  const double u2 = u * u;
+  double r = base + u * (1.0 + u2 * (-1.0 / 3 + u2 * (1.0 / 5 + u2 * (-1.0 / 7 + u2 * (1.0 / 9 + u2 * (
+                 -1.0 / 11 + u2 * (1.0 / 13 + u2 * (-1.0 / 15 + u2 * (1.0 / 17 + u2 * (
+                 -1.0 / 19 + u2 * (1.0 / 21 + u2 * (-1.0 / 23))))))))))));
   // Undo the octant reduction.
-  out = (y.abs() > x.abs()).select(kHalfPi - out, out);
-  out = (x < 0.0).select(kPi - out, out);
-  out = (y < 0.0).select(-out, out);
+  r = ay > ax ? kHalfPi - r : r;
+  r = x < 0.0 ? kPi - r : r;
+  return y < 0.0 ? -r : r;
+}
+}  // namespace
+
+ArrayXd& atan2Array(const ArrayXd& y, const ArrayXd& x, ArrayXd& out) {
+  const Eigen::Index n = y.size();
+  out.resize(n);
+  const double* __restrict py = y.data();
+  const double* __restrict px = x.data();
+  double* __restrict po = out.data();
+#pragma GCC ivdep
+  for (Eigen::Index j = 0; j < n; ++j) po[j] = atan2Poly(py[j], px[j]);
   return out;
 }
 
@@ -73,90 +85,158 @@ void prepareStripBatch(const StripContext& context, StripBatch& b) {
 void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* states,
                     double* state_derivatives) {
   const AeroParameters& params = *context.params;
-  const int n = b.size();
+  const Eigen::Index n = b.size();
   const double alpha0 = params.zero_lift_angle_rad;
   const double C1 = context.constants.C1, C2 = context.constants.C2;
   const double J = context.constants.jones_factor;
-  ArrayXd* t = b.t;
-  ArrayXd &qx = t[0], &qy = t[1], &qz = t[2], &apx = t[3], &apy = t[4], &apz = t[5];
-  ArrayXd &thd = t[6], &thdd = t[7], &Vt = t[8], &qn = t[9], &Vn34 = t[10], &Vn50 = t[11];
-  ArrayXd &vdot2 = t[12], &Vr = t[13], &alpha34 = t[14], &invVr = t[15], &alpha_t = t[16];
-  ArrayXd &f = t[17], &qcdy = t[18], &s1 = t[19], &s2 = t[20], &s3 = t[21], &dN4 = t[22];
-  ArrayXd& dN2 = t[23];
-  const ArrayXd& c = b.chord_m;
-  const ArrayXd& xP = b.ref_aft_of_le_m;
+  const double min_speed = params.min_speed_mps;
+  const double stall_max = params.stall_angle_max_rad, stall_min = params.stall_angle_min_rad;
+  const double stall_mid = 0.5 * (stall_max + stall_min);
+  const double stall_scale = 2.0 / params.stall_width_rad;
+  const bool separation_lag = params.separation_lag_tf0 > 0.0;
+  const double inv_tf0 = separation_lag ? 1.0 / params.separation_lag_tf0 : 0.0;
+  const double suction_eff = params.suction_efficiency;
+  const double cm_ac = params.moment_coefficient_ac;
+  // Carried from the first pass to the second (scratch arrays of the batch).
+  double* __restrict apx = b.t[0].data();
+  double* __restrict apy = b.t[1].data();
+  double* __restrict apz = b.t[2].data();
+  double* __restrict thd_a = b.t[3].data();
+  double* __restrict thdd_a = b.t[4].data();
+  double* __restrict Vt_a = b.t[5].data();
+  double* __restrict Vn50_a = b.t[6].data();
+  double* __restrict vdot2_a = b.t[7].data();
+  double* __restrict Vr_a = b.t[8].data();
+  double* __restrict alpha_t_a = b.t[9].data();
+  double* __restrict fst_arg = b.t[10].data();  // then f_st
+  double* __restrict zdot = b.t[11].data();
+  double* __restrict f_state_a = b.t[12].data();
+  const double* __restrict ecx = b.ecx.data();
+  const double* __restrict ecy = b.ecy.data();
+  const double* __restrict ecz = b.ecz.data();
+  const double* __restrict nx = b.nx.data();
+  const double* __restrict ny = b.ny.data();
+  const double* __restrict nz = b.nz.data();
+  const double* __restrict lever25 = b.lever25.data();
+  const double* __restrict lever50 = b.lever50.data();
+  const double* __restrict lever75 = b.lever75.data();
+  const double* __restrict xP = b.ref_aft_of_le_m.data();
+  const double* __restrict two_over_c = b.two_over_c.data();
+  const double* __restrict airx = b.airx.data();
+  const double* __restrict airy = b.airy.data();
+  const double* __restrict airz = b.airz.data();
+  const double* __restrict vx = b.vx.data();
+  const double* __restrict vy = b.vy.data();
+  const double* __restrict vz = b.vz.data();
+  const double* __restrict aPx = b.ax.data();
+  const double* __restrict aPy = b.ay.data();
+  const double* __restrict aPz = b.az.data();
+  const double* __restrict wsx = b.wx.data();
+  const double* __restrict wsy = b.wy.data();
+  const double* __restrict wsz = b.wz.data();
+  const double* __restrict wdx = b.wdx.data();
+  const double* __restrict wdy = b.wdy.data();
+  const double* __restrict wdz = b.wdz.data();
 
-  // 2.3: q = v_air - v_P, a_pitch = e_c x n, thetadot, thetaddot, V_t, Vn(x), vdot2.
-  qx = b.airx - b.vx;
-  qy = b.airy - b.vy;
-  qz = b.airz - b.vz;
-  apx = b.ecy * b.nz - b.ecz * b.ny;
-  apy = b.ecz * b.nx - b.ecx * b.nz;
-  apz = b.ecx * b.ny - b.ecy * b.nx;
-  thd = b.wx * apx + b.wy * apy + b.wz * apz;
-  thdd = b.wdx * apx + b.wdy * apy + b.wdz * apz;
-  Vt = -(qx * b.ecx + qy * b.ecy + qz * b.ecz);
-  qn = qx * b.nx + qy * b.ny + qz * b.nz;
-  Vn34 = qn + thd * b.lever75;
-  Vn50 = qn + thd * b.lever50;
-  // vdot2 = -a_P.n + q.(w_s x n) + thetaddot (c/2 - x_P)
-  vdot2 = -(b.ax * b.nx + b.ay * b.ny + b.az * b.nz) +
-          qx * (b.wy * b.nz - b.wz * b.ny) + qy * (b.wz * b.nx - b.wx * b.nz) +
-          qz * (b.wx * b.ny - b.wy * b.nx) + thdd * b.lever50;
-  // 9.5 steps 2-3: V_r floored; resultant 3/4-chord angle clipped to +-pi/2.
-  Vr = (Vt * Vt + Vn34 * Vn34).sqrt().max(params.min_speed_mps);
-  atan2Array(Vn34, Vt, alpha34, s1, s2, s3);
-  alpha34 = alpha34.min(kHalfPi).max(-kHalfPi);
-  invVr = Vr.inverse();
-
-  // 9.3 option A: alpha_E = (1 - C1) alpha_34 + C1 z, dz/dt = sdot C2 (alpha_34 - z).
-  const StateMap z(states, n), f_state(states + 1, n);
-  s1 = (1.0 - C1) * alpha34 + C1 * z;                      // alpha_E
-  alpha_t = J * (s1 + alpha0) - alpha0;                     // alpha'_t
-  s2 = alpha_t - (b.lever75 + xP) * thd * invVr;           // alpha_crit (9.4.2): 0.75 c
-  // 9.4.1: f_st = 0.5 [1 - tanh(x)] = 1 / (1 + exp(2x)), split at the midpoint of the limits.
-  const double mid = 0.5 * (params.stall_angle_max_rad + params.stall_angle_min_rad);
-  s3 = (s2 >= mid).select(s2 - params.stall_angle_max_rad, params.stall_angle_min_rad - s2);
-  s3 = (2.0 / params.stall_width_rad * s3).min(700.0);
-  s3 = (1.0 + s3.exp()).inverse();                          // f_st
-  if (params.separation_lag_tf0 > 0.0) {
-    f = f_state.max(0.0).min(1.0);
-    if (state_derivatives) {
-      DerivMap(state_derivatives, n) = (C2 * Vr) * b.two_over_c * (alpha34 - z);
-      DerivMap(state_derivatives + 1, n) =
-          (s3 - f_state) * (Vr * b.two_over_c * (1.0 / params.separation_lag_tf0));
-    }
-  } else {
-    f = s3;
-    if (state_derivatives) {
-      DerivMap(state_derivatives, n) = (C2 * Vr) * b.two_over_c * (alpha34 - z);
-      DerivMap(state_derivatives + 1, n).setZero();
-    }
+  // Pass 1: kinematics (2.3), lag (9.3 option A), angles of the stall criterion (9.4).
+#pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
+  for (Eigen::Index j = 0; j < n; ++j) {
+    // q = v_air - v_P, a_pitch = e_c x n, thetadot, thetaddot, V_t, Vn(x), vdot2.
+    const double qx = airx[j] - vx[j], qy = airy[j] - vy[j], qz = airz[j] - vz[j];
+    const double ax = ecy[j] * nz[j] - ecz[j] * ny[j];
+    const double ay = ecz[j] * nx[j] - ecx[j] * nz[j];
+    const double az = ecx[j] * ny[j] - ecy[j] * nx[j];
+    const double wx = wsx[j], wy = wsy[j], wz = wsz[j];
+    const double thd = wx * ax + wy * ay + wz * az;
+    const double thdd = wdx[j] * ax + wdy[j] * ay + wdz[j] * az;
+    const double Vt = -(qx * ecx[j] + qy * ecy[j] + qz * ecz[j]);
+    const double qn = qx * nx[j] + qy * ny[j] + qz * nz[j];
+    const double Vn34 = qn + thd * lever75[j];
+    // vdot2 = -a_P.n + q.(w_s x n) + thetaddot (c/2 - x_P)
+    const double vdot2 = -(aPx[j] * nx[j] + aPy[j] * ny[j] + aPz[j] * nz[j]) +
+                         qx * (wy * nz[j] - wz * ny[j]) + qy * (wz * nx[j] - wx * nz[j]) +
+                         qz * (wx * ny[j] - wy * nx[j]) + thdd * lever50[j];
+    // 9.5 steps 2-3: V_r floored; resultant 3/4-chord angle clipped to +-pi/2.
+    const double Vr = std::max(std::sqrt(Vt * Vt + Vn34 * Vn34), min_speed);
+    const double alpha34 = std::max(std::min(atan2Poly(Vn34, Vt), kHalfPi), -kHalfPi);
+    // 9.3 option A: alpha_E = (1 - C1) alpha_34 + C1 z, dz/dt = sdot C2 (alpha_34 - z).
+    const double z = states[2 * j];
+    const double alpha_E = (1.0 - C1) * alpha34 + C1 * z;
+    const double alpha_t = J * (alpha_E + alpha0) - alpha0;  // alpha'_t
+    const double alpha_crit = alpha_t - (lever75[j] + xP[j]) * thd * (1.0 / Vr);  // 9.4.2: 0.75 c
+    // 9.4.1: f_st = 0.5 [1 - tanh(x)] = 1 / (1 + exp(2x)), split at the midpoint of the limits.
+    const double x = alpha_crit >= stall_mid ? alpha_crit - stall_max : stall_min - alpha_crit;
+    fst_arg[j] = std::min(stall_scale * x, 700.0);
+    zdot[j] = (C2 * Vr) * two_over_c[j] * (alpha34 - z);
+    f_state_a[j] = states[2 * j + 1];
+    apx[j] = ax;
+    apy[j] = ay;
+    apz[j] = az;
+    thd_a[j] = thd;
+    thdd_a[j] = thdd;
+    Vt_a[j] = Vt;
+    Vn50_a[j] = qn + thd * lever50[j];
+    vdot2_a[j] = vdot2;
+    Vr_a[j] = Vr;
+    alpha_t_a[j] = alpha_t;
   }
+  {
+    Eigen::Map<ArrayXd> arg(fst_arg, n);
+    arg = (1.0 + arg.exp()).inverse();  // f_st (Eigen's vectorised exp)
+  }
+  const double* __restrict fst = fst_arg;
 
-  // 9.5 step 5: attached branch with q_ref = 0.5 rho V_r^2, separated branch (M15, 3-D).
-  qcdy = Vr * Vr * b.k_q;
-  dN4 = f * (kTwoPi * (alpha_t + alpha0) * qcdy);                                  // f dNc (M7)
-  s1 = b.k_apparent * vdot2;                                                         // dNa (M8)
-  s2 = b.k_crossflow * (Vt * Vt + Vn50 * Vn50).sqrt() * Vn50;                        // dNc_s
-  dN2 = (1.0 - f) * s2 + 0.5 * (1.0 + f) * s1;
-  // Chordwise: suction (off in reversed flow), camber, friction (M9-M12), blended (9.4.2).
-  s2 = alpha_t - (b.lever25 + xP) * thd * invVr;                                    // suction angle
-  s2 = (Vt > 0.0).select(params.suction_efficiency * kTwoPi * s2 * s2 * qcdy, 0.0); // dTs
-  s2 += kTwoPi * alpha0 * alpha_t * qcdy;                                            // - dDcamber
-  s2 = f.sqrt() * s2 - f * (b.k_friction * Vt * Vt.abs());                           // dFx
-  // Couples (M17 with q_ref; V_r in the apparent-mass couple), blended.
-  s3 = f * (params.moment_coefficient_ac * qcdy * c - b.k_couple1 * Vr * thd - b.k_couple2 * thdd);
-  // 6.3: F = dN n + dFx e_c; moment about P along a_pitch.
-  s1 = dN4 + dN2;
-  b.Fx = s1 * b.nx + s2 * b.ecx;
-  b.Fy = s1 * b.ny + s2 * b.ecy;
-  b.Fz = s1 * b.nz + s2 * b.ecz;
-  s1 = -b.lever25 * dN4 - b.lever50 * dN2 + s3;
-  b.Mx = s1 * apx;
-  b.My = s1 * apy;
-  b.Mz = s1 * apz;
-  b.separation_f = f;
+  // Pass 2: separation (9.4), attached and separated branches (9.5 step 5, M7-M17), loads (6.3).
+  double* __restrict Fx = b.Fx.data();
+  double* __restrict Fy = b.Fy.data();
+  double* __restrict Fz = b.Fz.data();
+  double* __restrict Mx = b.Mx.data();
+  double* __restrict My = b.My.data();
+  double* __restrict Mz = b.Mz.data();
+  double* __restrict f_out = b.separation_f.data();
+  const double* __restrict k_q = b.k_q.data();
+  const double* __restrict k_apparent = b.k_apparent.data();
+  const double* __restrict k_crossflow = b.k_crossflow.data();
+  const double* __restrict k_friction = b.k_friction.data();
+  const double* __restrict k_couple1 = b.k_couple1.data();
+  const double* __restrict k_couple2 = b.k_couple2.data();
+  const double* __restrict chord = b.chord_m.data();
+#pragma GCC ivdep
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double f = separation_lag ? std::max(std::min(f_state_a[j], 1.0), 0.0) : fst[j];
+    const double Vr = Vr_a[j], Vt = Vt_a[j], Vn50 = Vn50_a[j], thd = thd_a[j];
+    const double alpha_t = alpha_t_a[j];
+    // Attached branch with q_ref = 0.5 rho V_r^2, separated branch (M15, 3-D).
+    const double qcdy = Vr * Vr * k_q[j];
+    const double dN4 = f * (kTwoPi * (alpha_t + alpha0) * qcdy);           // f dNc (M7)
+    const double dNa = k_apparent[j] * vdot2_a[j];                          // dNa (M8)
+    const double dNs = k_crossflow[j] * std::sqrt(Vt * Vt + Vn50 * Vn50) * Vn50;  // dNc_s
+    const double dN2 = (1.0 - f) * dNs + 0.5 * (1.0 + f) * dNa;
+    // Chordwise: suction (off in reversed flow), camber, friction (M9-M12), blended (9.4.2).
+    const double alpha_s = alpha_t - (lever25[j] + xP[j]) * thd * (1.0 / Vr);  // suction angle
+    double dFx = Vt > 0.0 ? suction_eff * kTwoPi * alpha_s * alpha_s * qcdy : 0.0;  // dTs
+    dFx += kTwoPi * alpha0 * alpha_t * qcdy;                                   // - dDcamber
+    dFx = std::sqrt(f) * dFx - f * (k_friction[j] * Vt * std::abs(Vt));
+    // Couples (M17 with q_ref; V_r in the apparent-mass couple), blended.
+    const double couple =
+        f * (cm_ac * qcdy * chord[j] - k_couple1[j] * Vr * thd - k_couple2[j] * thdd_a[j]);
+    // 6.3: F = dN n + dFx e_c; moment about P along a_pitch.
+    const double dN = dN4 + dN2;
+    Fx[j] = dN * nx[j] + dFx * ecx[j];
+    Fy[j] = dN * ny[j] + dFx * ecy[j];
+    Fz[j] = dN * nz[j] + dFx * ecz[j];
+    const double m = -lever25[j] * dN4 - lever50[j] * dN2 + couple;
+    Mx[j] = m * apx[j];
+    My[j] = m * apy[j];
+    Mz[j] = m * apz[j];
+    f_out[j] = f;
+  }
+  if (!state_derivatives) return;
+  for (Eigen::Index j = 0; j < n; ++j) {  // interleaved [z, f] per strip
+    state_derivatives[2 * j] = zdot[j];
+    state_derivatives[2 * j + 1] =
+        separation_lag ? (fst[j] - f_state_a[j]) * (Vr_a[j] * two_over_c[j] * inv_tf0) : 0.0;
+  }
 }
 
 }  // namespace orni::aero

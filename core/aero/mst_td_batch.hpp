@@ -20,8 +20,7 @@ bool batchKernelApplies(const AeroParameters& params);
 
 /// Vectorisable atan2 (range reduction to |u| <= tan(pi/16), odd Taylor series to u^23):
 /// |error| < 4e-16 rad; atan2(0, 0) = 0.
-ArrayXd& atan2Array(const ArrayXd& y, const ArrayXd& x, ArrayXd& out, ArrayXd& scratch_a,
-                    ArrayXd& scratch_b, ArrayXd& scratch_c);
+ArrayXd& atan2Array(const ArrayXd& y, const ArrayXd& x, ArrayXd& out);
 
 struct StripBatch {
   explicit StripBatch(int strip_count = 0) { resize(strip_count); }

@@ -1,5 +1,7 @@
 #include "core/dynamics/strip_kinematics.hpp"
 
+#include <cmath>
+
 namespace orni {
 
 StripKinematics::StripKinematics(const StackedStrips& stacked, int mode_count)
@@ -27,53 +29,97 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
     UdL_.noalias() = st_.phi_L * qd;
     twist_rate_.noalias() = st_.psi_twist * qd;
   }
-  const auto sx = SL_.segment(0, n).array(), sy = SL_.segment(n, n).array(),
-             sz = SL_.segment(2 * n, n).array();
-  const auto ux = UdL_.segment(0, n).array(), uy = UdL_.segment(n, n).array(),
-             uz = UdL_.segment(2 * n, n).array();
-  // e_c = (s_L - s_T)/|.| (TE -> LE); e_s = (e_y - (e_c.e_y) e_c)/|.|; n = e_s x e_c (up).
-  b.ecx = sx - ST_.segment(0, n).array();
-  b.ecy = sy - ST_.segment(n, n).array();
-  b.ecz = sz - ST_.segment(2 * n, n).array();
-  t0_ = (b.ecx.square() + b.ecy.square() + b.ecz.square()).rsqrt();
-  b.ecx *= t0_;
-  b.ecy *= t0_;
-  b.ecz *= t0_;
-  esx_ = -b.ecy * b.ecx;
-  esy_ = 1.0 - b.ecy * b.ecy;
-  esz_ = -b.ecy * b.ecz;
-  t0_ = (esx_.square() + esy_.square() + esz_.square()).rsqrt();
-  esx_ *= t0_;
-  esy_ *= t0_;
-  esz_ *= t0_;
-  b.nx = esy_ * b.ecz - esz_ * b.ecy;
-  b.ny = esz_ * b.ecx - esx_ * b.ecz;
-  b.nz = esx_ * b.ecy - esy_ * b.ecx;
-  midx_ = sx - 0.5 * b.chord_m * b.ecx;
-  midy_ = sy - 0.5 * b.chord_m * b.ecy;
-  midz_ = sz - 0.5 * b.chord_m * b.ecz;
-  // v = v_O + w x s_L + u'_L; a0 = a_O0 + alpha x s_L + w (w.s_L) - |w|^2 s_L + 2 w x u'_L.
-  const Vec3& w = m.omega_W;
-  const Vec3& al = m.alpha0_W;
-  b.vx = m.v_O_W.x() + (w.y() * sz - w.z() * sy) + ux;
-  b.vy = m.v_O_W.y() + (w.z() * sx - w.x() * sz) + uy;
-  b.vz = m.v_O_W.z() + (w.x() * sy - w.y() * sx) + uz;
-  const double w2 = w.squaredNorm();
-  t1_ = w.x() * sx + w.y() * sy + w.z() * sz;  // w . s_L
-  b.ax = m.a_O0_W.x() + (al.y() * sz - al.z() * sy) + w.x() * t1_ - w2 * sx +
-         2.0 * (w.y() * uz - w.z() * uy);
-  b.ay = m.a_O0_W.y() + (al.z() * sx - al.x() * sz) + w.y() * t1_ - w2 * sy +
-         2.0 * (w.z() * ux - w.x() * uz);
-  b.az = m.a_O0_W.z() + (al.x() * sy - al.y() * sx) + w.z() * t1_ - w2 * sz +
-         2.0 * (w.x() * uy - w.y() * ux);
-  // w_s = w + twist' e_s; wdot0 = alpha + w x (twist' e_s).
-  const auto tr = twist_rate_.array();
-  b.wx = w.x() + tr * esx_;
-  b.wy = w.y() + tr * esy_;
-  b.wz = w.z() + tr * esz_;
-  b.wdx = al.x() + tr * (w.y() * esz_ - w.z() * esy_);
-  b.wdy = al.y() + tr * (w.z() * esx_ - w.x() * esz_);
-  b.wdz = al.z() + tr * (w.x() * esy_ - w.y() * esx_);
+  // One pass over the strips (the compiler vectorises it; every intermediate stays in a
+  // register instead of a temporary array).
+  const double* __restrict Lx = SL_.data();
+  const double* __restrict Ly = Lx + n;
+  const double* __restrict Lz = Lx + 2 * n;
+  const double* __restrict Tx = ST_.data();
+  const double* __restrict Ty = Tx + n;
+  const double* __restrict Tz = Tx + 2 * n;
+  const double* __restrict Ux = UdL_.data();
+  const double* __restrict Uy = Ux + n;
+  const double* __restrict Uz = Ux + 2 * n;
+  const double* __restrict tr = twist_rate_.data();
+  const double* __restrict chord = b.chord_m.data();
+  double* __restrict ecx = b.ecx.data();
+  double* __restrict ecy = b.ecy.data();
+  double* __restrict ecz = b.ecz.data();
+  double* __restrict nx = b.nx.data();
+  double* __restrict ny = b.ny.data();
+  double* __restrict nz = b.nz.data();
+  double* __restrict esx = esx_.data();
+  double* __restrict esy = esy_.data();
+  double* __restrict esz = esz_.data();
+  double* __restrict midx = midx_.data();
+  double* __restrict midy = midy_.data();
+  double* __restrict midz = midz_.data();
+  double* __restrict vx = b.vx.data();
+  double* __restrict vy = b.vy.data();
+  double* __restrict vz = b.vz.data();
+  double* __restrict ax = b.ax.data();
+  double* __restrict ay = b.ay.data();
+  double* __restrict az = b.az.data();
+  double* __restrict wx = b.wx.data();
+  double* __restrict wy = b.wy.data();
+  double* __restrict wz = b.wz.data();
+  double* __restrict wdx = b.wdx.data();
+  double* __restrict wdy = b.wdy.data();
+  double* __restrict wdz = b.wdz.data();
+  // Frame motion as plain scalars (loop invariants the vectoriser can broadcast).
+  const double w_x = m.omega_W.x(), w_y = m.omega_W.y(), w_z = m.omega_W.z();
+  const double al_x = m.alpha0_W.x(), al_y = m.alpha0_W.y(), al_z = m.alpha0_W.z();
+  const double vO_x = m.v_O_W.x(), vO_y = m.v_O_W.y(), vO_z = m.v_O_W.z();
+  const double aO_x = m.a_O0_W.x(), aO_y = m.a_O0_W.y(), aO_z = m.a_O0_W.z();
+  const double w2 = w_x * w_x + w_y * w_y + w_z * w_z;
+#pragma GCC ivdep  // the outputs are distinct arrays (GCC ignores restrict on local pointers)
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double sx = Lx[j], sy = Ly[j], sz = Lz[j];
+    const double ux = Ux[j], uy = Uy[j], uz = Uz[j];
+    // e_c = (s_L - s_T)/|.| (TE -> LE); e_s = (e_y - (e_c.e_y) e_c)/|.|; n = e_s x e_c (up).
+    double cx = sx - Tx[j], cy = sy - Ty[j], cz = sz - Tz[j];
+    const double inv_c = 1.0 / std::sqrt(cx * cx + cy * cy + cz * cz);
+    cx *= inv_c;
+    cy *= inv_c;
+    cz *= inv_c;
+    double ex = -cy * cx, ey = 1.0 - cy * cy, ez = -cy * cz;
+    const double inv_s = 1.0 / std::sqrt(ex * ex + ey * ey + ez * ez);
+    ex *= inv_s;
+    ey *= inv_s;
+    ez *= inv_s;
+    ecx[j] = cx;
+    ecy[j] = cy;
+    ecz[j] = cz;
+    esx[j] = ex;
+    esy[j] = ey;
+    esz[j] = ez;
+    nx[j] = ey * cz - ez * cy;
+    ny[j] = ez * cx - ex * cz;
+    nz[j] = ex * cy - ey * cx;
+    const double half_c = 0.5 * chord[j];
+    midx[j] = sx - half_c * cx;
+    midy[j] = sy - half_c * cy;
+    midz[j] = sz - half_c * cz;
+    // v = v_O + w x s_L + u'_L; a0 = a_O0 + alpha x s_L + w (w.s_L) - |w|^2 s_L + 2 w x u'_L.
+    vx[j] = vO_x + (w_y * sz - w_z * sy) + ux;
+    vy[j] = vO_y + (w_z * sx - w_x * sz) + uy;
+    vz[j] = vO_z + (w_x * sy - w_y * sx) + uz;
+    const double ws = w_x * sx + w_y * sy + w_z * sz;
+    ax[j] = aO_x + (al_y * sz - al_z * sy) + w_x * ws - w2 * sx +
+            2.0 * (w_y * uz - w_z * uy);
+    ay[j] = aO_y + (al_z * sx - al_x * sz) + w_y * ws - w2 * sy +
+            2.0 * (w_z * ux - w_x * uz);
+    az[j] = aO_z + (al_x * sy - al_y * sx) + w_z * ws - w2 * sz +
+            2.0 * (w_x * uy - w_y * ux);
+    // w_s = w + twist' e_s; wdot0 = alpha + w x (twist' e_s).
+    const double t = tr[j];
+    wx[j] = w_x + t * ex;
+    wy[j] = w_y + t * ey;
+    wz[j] = w_z + t * ez;
+    wdx[j] = al_x + t * (w_y * ez - w_z * ey);
+    wdy[j] = al_y + t * (w_z * ex - w_x * ez);
+    wdz[j] = al_z + t * (w_x * ey - w_y * ex);
+  }
 }
 
 void StripKinematics::modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q) {
