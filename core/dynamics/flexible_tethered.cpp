@@ -19,12 +19,13 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       n_aero_(model.aeroStateCount()),
       data_(model),
       q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_), frame_inertia_(M_),
-      A_(M_, M_),
+      mass_base_packed_(packedLower(flex.M_qq + flex.stacked.apparent_const)),
       chol_(M_),
       kin_(flex.stacked, flex.mode_count),
       packed_(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2),
       extra_force_(static_cast<Eigen::Index>(model.strips.size())),
       extra_couple_(static_cast<Eigen::Index>(model.strips.size())),
+      twist_mid_qdd_(2 * static_cast<Eigen::Index>(model.strips.size())),
       split_(flex, 0, 2 * M_ + n_aero_ + kQuadratureChannels) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw std::invalid_argument(
@@ -84,15 +85,17 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   // Generalised aerodynamic forces (structure.md 4.3) and, on the left (4.4), the apparent air
   // mass along each strip's mid-chord normal and the apparent rotary inertia about e_s.
   kin_.modalForce(b, &Q_);
-  A_ = flex_.M_qq;
-  addApparentModalMass(flex_.stacked, b.separation_f, 1.0, &packed_, A_);
+  // Left-hand side M_qq + A(f) as a packed lower triangle: the f-independent part plus one
+  // product over the strips (flexible_wing.hpp).
+  packed_ = mass_base_packed_;
+  packed_.noalias() += flex_.stacked.apparent_per_f * b.separation_f.matrix();
 
   // Modal equation (structure.md 3.4) with w = phi' e_x, alpha = phi'' e_x.
   modalFrameInertia(flex_, q_, qd_, flap.phi_dot_radps, flap.phi_ddot_radps2, &frame_inertia_);
   rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_) -
              frame_inertia_;
   qdd_ = rhs_vec_;
-  if (chol_.factor(A_))  // lower triangle
+  if (chol_.factorPacked(packed_.data()))
     chol_.solveInPlace(qdd_);
   else  // not positive definite: a non-finite derivative makes the integrator retry smaller
     qdd_.setConstant(std::numeric_limits<double>::quiet_NaN());
@@ -101,12 +104,12 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   // force and couple of q'' that the kernel could not know.
   if (aero) {
     const StackedStrips& st = flex_.stacked;
-    extra_force_.noalias() = st.psi_mid * qdd_;
+    const Eigen::Index ns = st.ns;
+    twist_mid_qdd_.noalias() = st.shapes.bottomRows(2 * ns) * qdd_;  // [psi_twist; psi_mid] q''
     extra_force_ = -(0.5 * (1.0 + b.separation_f) * flex_.apparent_mass_kg.array() *
-                     extra_force_.array()).matrix();
-    extra_couple_.noalias() = st.psi_twist * qdd_;
+                     twist_mid_qdd_.tail(ns).array()).matrix();
     extra_couple_ = -(b.separation_f * flex_.apparent_rotary_kgm2.array() *
-                      extra_couple_.array()).matrix();
+                      twist_mid_qdd_.head(ns).array()).matrix();
     kin_.resultant(b, extra_force_, extra_couple_, omega_W_, &aero->F_W, &aero->M_P2_W,
                    &aero->power_aero_W);
   }

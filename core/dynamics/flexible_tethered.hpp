@@ -61,10 +61,10 @@ class FlexibleTetheredSystem {
   Mat3 R_BW_ = Mat3::Identity();
   Vec3 omega_W_ = Vec3::Zero(), alpha_W_ = Vec3::Zero();
   Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
-  Eigen::MatrixXd A_;
+  Eigen::VectorXd mass_base_packed_;  // M_qq + the f-independent apparent mass, packed lower
   SmallCholesky chol_;
   StripKinematics kin_;
-  Eigen::VectorXd packed_, extra_force_, extra_couple_;
+  Eigen::VectorXd packed_, extra_force_, extra_couple_, twist_mid_qdd_;
   ModalImplicitSplit split_;
 };
 

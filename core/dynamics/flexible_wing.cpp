@@ -64,27 +64,24 @@ StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_cou
   const int M = mode_count;
   const auto ns = static_cast<Eigen::Index>(strips.size());
   StackedStrips st;
-  st.x_L.resize(3 * ns);
-  st.x_T.resize(3 * ns);
-  st.phi_L.setZero(3 * ns, M);
-  st.phi_T.setZero(3 * ns, M);
-  st.psi_twist.setZero(ns, M);
-  st.psi_mid.setZero(ns, M);
+  st.ns = ns;
+  st.points.resize(6 * ns);
+  st.shapes.setZero(8 * ns, M);
   st.apparent_const.setZero(M, M);
   st.apparent_per_f.setZero(static_cast<Eigen::Index>(M) * (M + 1) / 2, ns);
   for (Eigen::Index i = 0; i < ns; ++i) {
     const FlexibleStrip& fs = strips[static_cast<std::size_t>(i)];
-    for (int k = 0; k < 3; ++k) {  // component-major: row k ns + i
-      st.x_L[k * ns + i] = fs.x_L_W_m[k];
-      st.x_T[k * ns + i] = fs.x_T_W_m[k];
+    for (int k = 0; k < 3; ++k) {  // component-major: row k ns + i of each block
+      st.points[k * ns + i] = fs.x_T_W_m[k];
+      st.points[3 * ns + k * ns + i] = fs.x_L_W_m[k];
       if (M > 0) {
-        st.phi_L.row(k * ns + i) = fs.phi_L.row(k);
-        st.phi_T.row(k * ns + i) = fs.phi_T.row(k);
+        st.shapes.row(k * ns + i) = fs.phi_T.row(k);
+        st.shapes.row(3 * ns + k * ns + i) = fs.phi_L.row(k);
       }
     }
     if (M == 0) continue;
-    st.psi_twist.row(i) = fs.psi_twist;
-    st.psi_mid.row(i) = fs.psi_mid.transpose();
+    st.shapes.row(6 * ns + i) = fs.psi_twist;
+    st.shapes.row(7 * ns + i) = fs.psi_mid.transpose();
     const Eigen::MatrixXd mid = 0.5 * apparent_mass_kg[i] * fs.psi_mid * fs.psi_mid.transpose();
     const Eigen::MatrixXd per_f =
         mid + apparent_rotary_kgm2[i] * fs.psi_twist.transpose() * fs.psi_twist;
@@ -94,6 +91,15 @@ StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_cou
       for (int l = c; l < M; ++l) st.apparent_per_f(r++, i) = per_f(l, c);
   }
   return st;
+}
+
+Eigen::VectorXd packedLower(const Eigen::MatrixXd& A) {
+  const Eigen::Index n = A.rows();
+  Eigen::VectorXd p(n * (n + 1) / 2);
+  Eigen::Index r = 0;
+  for (Eigen::Index c = 0; c < n; ++c)
+    for (Eigen::Index l = c; l < n; ++l) p[r++] = A(l, c);
+  return p;
 }
 
 void addApparentModalMass(const StackedStrips& st, const Eigen::ArrayXd& f, double scale,

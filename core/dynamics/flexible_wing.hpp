@@ -31,12 +31,20 @@ struct FlexibleStrip {
   double lever_T_m = 0.0;           ///< |x_T - x_L|
 };
 
-/// The strips' modal data stacked for one matrix product per evaluation. Point data are
-/// component-major: row k ns + j is component k (x, y, z) of strip j; scalar data row j.
+/// The strips' modal data stacked for one matrix product per use. Point data are component-major:
+/// row k ns + j is component k (x, y, z) of strip j; scalar data row j. All shapes live in one
+/// matrix, rows [phi_T (3 ns); phi_L (3 ns); psi_twist (ns); psi_mid (ns)], so that the products
+/// of an evaluation that share a vector are one product over adjacent row blocks.
 struct StackedStrips {
-  Eigen::VectorXd x_L, x_T;             ///< undeformed sample points (3 ns)
-  Eigen::MatrixXd phi_L, phi_T;         ///< translational shapes at L and T (3 ns x M)
-  Eigen::MatrixXd psi_twist, psi_mid;   ///< twist and mid-chord normal shapes (ns x M)
+  Eigen::Index ns = 0;                  ///< strips
+  Eigen::VectorXd points;               ///< undeformed sample points [x_T; x_L] (6 ns)
+  Eigen::MatrixXd shapes;               ///< (8 ns) x M, see above
+  auto x_T() const { return points.head(3 * ns); }
+  auto x_L() const { return points.segment(3 * ns, 3 * ns); }
+  auto phi_T() const { return shapes.topRows(3 * ns); }        ///< translation at T (3 ns x M)
+  auto phi_L() const { return shapes.middleRows(3 * ns, 3 * ns); }  ///< translation at L
+  auto psi_twist() const { return shapes.middleRows(6 * ns, ns); }  ///< elastic twist (ns x M)
+  auto psi_mid() const { return shapes.middleRows(7 * ns, ns); }    ///< mid-chord normal
   /// Apparent air mass on the modes (structure.md 4.4) with separation fractions f_j:
   ///   A(f) = sum_j 0.5 (1 + f_j) m_a,j psi_mid psi_mid^T + f_j k_j psi_t^T psi_t
   /// (k_j = rho pi c^4/128 dy, the apparent rotary inertia of M17) = apparent_const +
@@ -50,6 +58,10 @@ struct StackedStrips {
 StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count,
                           const Eigen::VectorXd& apparent_mass_kg,
                           const Eigen::VectorXd& apparent_rotary_kgm2);
+
+/// The lower triangle of a square matrix, packed column by column (rows j .. n-1 of column j):
+/// the layout of StackedStrips::apparent_per_f and SmallCholesky::factorPacked().
+Eigen::VectorXd packedLower(const Eigen::MatrixXd& A);
 
 /// out (lower triangle only) += scale * A(f) of StackedStrips; `packed` is workspace of
 /// M(M+1)/2 entries. No allocation.

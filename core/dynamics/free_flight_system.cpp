@@ -265,10 +265,10 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
       auto Aqb = A_.block(3, 0, M_, 3);
       for (int c = 0; c < 3; ++c) {
         tmp_ns_ = b_strip_.cwiseProduct(*nus[c]);
-        Aqb.col(c).noalias() += 2.0 * (st.psi_mid.transpose() * tmp_ns_);
+        Aqb.col(c).noalias() += 2.0 * (st.psi_mid().transpose() * tmp_ns_);
       }
       tmp_ns_ = k_twist_.cwiseProduct(nutQ_);
-      Aqb.col(2).noalias() += 2.0 * (st.psi_twist.transpose() * tmp_ns_);
+      Aqb.col(2).noalias() += 2.0 * (st.psi_twist().transpose() * tmp_ns_);
       addApparentModalMass(st, b.separation_f, 2.0, &packed_, A_.bottomRightCorner(M_, M_));
     }
     separated_fraction_ = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() /
@@ -398,8 +398,8 @@ void FreeFlightSystem::apparentAccelerations() {
   extra_force_ = nuU_ * ud_[0] + nuW_ * ud_[1] + nuQ_ * ud_[2];
   extra_couple_ = nutQ_ * ud_[2];
   if (M_ > 0) {
-    extra_force_.noalias() += flex_->stacked.psi_mid * ud_.tail(M_);
-    extra_couple_.noalias() += flex_->stacked.psi_twist * ud_.tail(M_);
+    extra_force_.noalias() += flex_->stacked.psi_mid() * ud_.tail(M_);
+    extra_couple_.noalias() += flex_->stacked.psi_twist() * ud_.tail(M_);
   }
   extra_force_ = -b_strip_.cwiseProduct(extra_force_);
   extra_couple_ = -k_twist_.cwiseProduct(extra_couple_);

@@ -23,7 +23,7 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
   // A0 = M_qq + A(f = 1) (lower triangle from addApparentModalMass, then mirrored).
   Eigen::MatrixXd lower = flex.M_qq;
   Eigen::VectorXd packed(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2);
-  const Eigen::ArrayXd attached = Eigen::ArrayXd::Ones(flex.stacked.psi_mid.rows());
+  const Eigen::ArrayXd attached = Eigen::ArrayXd::Ones(flex.stacked.ns);
   addApparentModalMass(flex.stacked, attached, 1.0, &packed, lower);
   A0_ = lower.selfadjointView<Eigen::Lower>();
   const Eigen::LLT<Eigen::MatrixXd> llt(A0_);

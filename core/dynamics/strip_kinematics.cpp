@@ -7,40 +7,36 @@ namespace orni {
 StripKinematics::StripKinematics(const StackedStrips& stacked, int mode_count)
     : st_(stacked),
       M_(mode_count),
-      ns_(static_cast<int>(stacked.x_L.size() / 3)),
-      SL_(stacked.x_L),
-      ST_(stacked.x_T),
-      UdL_(Eigen::VectorXd::Zero(3 * ns_)),
-      twist_rate_(Eigen::VectorXd::Zero(ns_)),
-      Fall_(Eigen::VectorXd::Zero(3 * ns_)),
-      mpitch_(Eigen::VectorXd::Zero(ns_)),
+      ns_(static_cast<int>(stacked.ns)),
+      S_(stacked.points),
+      rates_(Eigen::VectorXd::Zero(4 * ns_)),
+      loads_(Eigen::VectorXd::Zero(4 * ns_)),
       esx_(ns_), esy_(ns_), esz_(ns_), midx_(ns_), midy_(ns_), midz_(ns_),
-      t0_(ns_), t1_(ns_), vx_(ns_), vy_(ns_), vz_(ns_), wsx_(ns_), wsy_(ns_), wsz_(ns_),
-      vmn_(ns_) {}
+      cFx_(Eigen::ArrayXd::Zero(ns_)), cFy_(Eigen::ArrayXd::Zero(ns_)),
+      cFz_(Eigen::ArrayXd::Zero(ns_)), cMx_(Eigen::ArrayXd::Zero(ns_)),
+      cMy_(Eigen::ArrayXd::Zero(ns_)), cMz_(Eigen::ArrayXd::Zero(ns_)),
+      cP_(Eigen::ArrayXd::Zero(ns_)) {}
 
 void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                               const WingFrameMotion& m, aero::StripBatch& b) {
   const Eigen::Index n = ns_;
-  if (M_ > 0) {
-    SL_ = st_.x_L;
-    SL_.noalias() += st_.phi_L * q;
-    ST_ = st_.x_T;
-    ST_.noalias() += st_.phi_T * q;
-    UdL_.noalias() = st_.phi_L * qd;
-    twist_rate_.noalias() = st_.psi_twist * qd;
+  if (M_ > 0) {  // [s_T; s_L] = x + [phi_T; phi_L] q, [u'_L; twist'] = [phi_L; psi_twist] q'
+    S_ = st_.points;
+    S_.noalias() += st_.shapes.topRows(6 * n) * q;
+    rates_.noalias() = st_.shapes.middleRows(3 * n, 4 * n) * qd;
   }
   // One pass over the strips (the compiler vectorises it; every intermediate stays in a
   // register instead of a temporary array).
-  const double* __restrict Lx = SL_.data();
-  const double* __restrict Ly = Lx + n;
-  const double* __restrict Lz = Lx + 2 * n;
-  const double* __restrict Tx = ST_.data();
+  const double* __restrict Tx = S_.data();
   const double* __restrict Ty = Tx + n;
   const double* __restrict Tz = Tx + 2 * n;
-  const double* __restrict Ux = UdL_.data();
+  const double* __restrict Lx = Tx + 3 * n;
+  const double* __restrict Ly = Tx + 4 * n;
+  const double* __restrict Lz = Tx + 5 * n;
+  const double* __restrict Ux = rates_.data();
   const double* __restrict Uy = Ux + n;
   const double* __restrict Uz = Ux + 2 * n;
-  const double* __restrict tr = twist_rate_.data();
+  const double* __restrict tr = Ux + 3 * n;
   const double* __restrict chord = b.chord_m.data();
   double* __restrict ecx = b.ecx.data();
   double* __restrict ecy = b.ecy.data();
@@ -124,60 +120,84 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
 
 void StripKinematics::modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q) {
   const Eigen::Index n = ns_;
-  Fall_.segment(0, n) = b.Fx.matrix();
-  Fall_.segment(n, n) = b.Fy.matrix();
-  Fall_.segment(2 * n, n) = b.Fz.matrix();
-  mpitch_ = (b.Mx * esx_ + b.My * esy_ + b.Mz * esz_).matrix();
-  Q->noalias() = st_.phi_L.transpose() * Fall_;
-  Q->noalias() += st_.psi_twist.transpose() * mpitch_;
+  loads_.segment(0, n) = b.Fx.matrix();
+  loads_.segment(n, n) = b.Fy.matrix();
+  loads_.segment(2 * n, n) = b.Fz.matrix();
+  loads_.segment(3 * n, n) = (b.Mx * esx_ + b.My * esy_ + b.Mz * esz_).matrix();
+  Q->noalias() = st_.shapes.middleRows(3 * n, 4 * n).transpose() * loads_;  // [phi_L; psi_twist]^T
 }
 
 void StripKinematics::resultant(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
                                 const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W,
                                 Vec3* F_W, Vec3* M_P2_W, double* power_W) {
-  const Eigen::Index n = ns_;
-  const auto sx = SL_.segment(0, n).array(), sy = SL_.segment(n, n).array(),
-             sz = SL_.segment(2 * n, n).array();
-  const auto ef = extra_force.array(), ec = extra_couple.array();
-  // Apparent-mass force along n at mid-chord and couple about e_s.
-  const Vec3 F(b.Fx.sum() + (ef * b.nx).sum(), b.Fy.sum() + (ef * b.ny).sum(),
-               b.Fz.sum() + (ef * b.nz).sum());
-  Vec3 M;
-  M.x() = (sy * b.Fz - sz * b.Fy).sum() + b.Mx.sum() +
-          (ef * (midy_ * b.nz - midz_ * b.ny)).sum() + (ec * esx_).sum();
-  M.y() = (sz * b.Fx - sx * b.Fz).sum() + b.My.sum() +
-          (ef * (midz_ * b.nx - midx_ * b.nz)).sum() + (ec * esy_).sum();
-  M.z() = (sx * b.Fy - sy * b.Fx).sum() + b.Mz.sum() +
-          (ef * (midx_ * b.ny - midy_ * b.nx)).sum() + (ec * esz_).sum();
-  *F_W = F;
-  *M_P2_W = M;
-  if (power_W) *power_W = power(b, extra_force, extra_couple, omega_rel_W);
+  contributions(b, extra_force, extra_couple, omega_rel_W, power_W != nullptr);
+  *F_W = Vec3(cFx_.sum(), cFy_.sum(), cFz_.sum());
+  *M_P2_W = Vec3(cMx_.sum(), cMy_.sum(), cMz_.sum());
+  if (power_W) *power_W = cP_.sum();
 }
 
 double StripKinematics::power(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
                               const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W) {
+  contributions(b, extra_force, extra_couple, omega_rel_W, true);
+  return cP_.sum();
+}
+
+void StripKinematics::contributions(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
+                                    const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W,
+                                    bool with_power) {
   const Eigen::Index n = ns_;
-  const auto sx = SL_.segment(0, n).array(), sy = SL_.segment(n, n).array(),
-             sz = SL_.segment(2 * n, n).array();
-  const auto ux = UdL_.segment(0, n).array(), uy = UdL_.segment(n, n).array(),
-             uz = UdL_.segment(2 * n, n).array();
-  const auto ef = extra_force.array(), ec = extra_couple.array();
-  // Relative motion: v_rel_L = w_rel x s_L + u'_L, w_strip = w_rel + twist' e_s,
-  // v_rel_mid . n = (v_rel_L + w_strip x (mid - s_L)) . n.
-  const Vec3& w = omega_rel_W;
-  const auto tr = twist_rate_.array();
-  vx_ = (w.y() * sz - w.z() * sy) + ux;
-  vy_ = (w.z() * sx - w.x() * sz) + uy;
-  vz_ = (w.x() * sy - w.y() * sx) + uz;
-  wsx_ = w.x() + tr * esx_;
-  wsy_ = w.y() + tr * esy_;
-  wsz_ = w.z() + tr * esz_;
-  vmn_ = (vx_ + wsy_ * (midz_ - sz) - wsz_ * (midy_ - sy)) * b.nx +
-         (vy_ + wsz_ * (midx_ - sx) - wsx_ * (midz_ - sz)) * b.ny +
-         (vz_ + wsx_ * (midy_ - sy) - wsy_ * (midx_ - sx)) * b.nz;
-  return -((b.Fx * vx_ + b.Fy * vy_ + b.Fz * vz_).sum() +
-           (b.Mx * wsx_ + b.My * wsy_ + b.Mz * wsz_).sum() + (ef * vmn_).sum() +
-           (ec * (esx_ * wsx_ + esy_ * wsy_ + esz_ * wsz_)).sum());
+  const double* __restrict Lx = S_.data() + 3 * n;
+  const double* __restrict Ly = Lx + n;
+  const double* __restrict Lz = Lx + 2 * n;
+  const double* __restrict Ux = rates_.data();
+  const double* __restrict Uy = Ux + n;
+  const double* __restrict Uz = Ux + 2 * n;
+  const double* __restrict tr = Ux + 3 * n;
+  const double* __restrict ef = extra_force.data();
+  const double* __restrict ec = extra_couple.data();
+  const double *__restrict Fx = b.Fx.data(), *__restrict Fy = b.Fy.data(),
+               *__restrict Fz = b.Fz.data();
+  const double *__restrict Mx = b.Mx.data(), *__restrict My = b.My.data(),
+               *__restrict Mz = b.Mz.data();
+  const double *__restrict nx = b.nx.data(), *__restrict ny = b.ny.data(),
+               *__restrict nz = b.nz.data();
+  const double *__restrict esx = esx_.data(), *__restrict esy = esy_.data(),
+               *__restrict esz = esz_.data();
+  const double *__restrict midx = midx_.data(), *__restrict midy = midy_.data(),
+               *__restrict midz = midz_.data();
+  double *__restrict cFx = cFx_.data(), *__restrict cFy = cFy_.data(), *__restrict cFz = cFz_.data();
+  double *__restrict cMx = cMx_.data(), *__restrict cMy = cMy_.data(), *__restrict cMz = cMz_.data();
+  double* __restrict cP = cP_.data();
+  const double w_x = omega_rel_W.x(), w_y = omega_rel_W.y(), w_z = omega_rel_W.z();
+  // Per strip: force and moment about P2 with the apparent-mass force along n at mid-chord and
+  // couple about e_s; the power uses the motion relative to the fuselage:
+  // v_rel_L = w_rel x s_L + u'_L, w_strip = w_rel + twist' e_s,
+  // v_rel_mid . n = (v_rel_L + w_strip x (mid - s_L)) . n (M19 sign: power put into the air).
+#pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double sx = Lx[j], sy = Ly[j], sz = Lz[j];
+    const double e = ef[j];
+    cFx[j] = Fx[j] + e * nx[j];
+    cFy[j] = Fy[j] + e * ny[j];
+    cFz[j] = Fz[j] + e * nz[j];
+    cMx[j] = (sy * Fz[j] - sz * Fy[j]) + Mx[j] + e * (midy[j] * nz[j] - midz[j] * ny[j]) +
+             ec[j] * esx[j];
+    cMy[j] = (sz * Fx[j] - sx * Fz[j]) + My[j] + e * (midz[j] * nx[j] - midx[j] * nz[j]) +
+             ec[j] * esy[j];
+    cMz[j] = (sx * Fy[j] - sy * Fx[j]) + Mz[j] + e * (midx[j] * ny[j] - midy[j] * nx[j]) +
+             ec[j] * esz[j];
+    if (!with_power) continue;
+    const double vx = (w_y * sz - w_z * sy) + Ux[j];
+    const double vy = (w_z * sx - w_x * sz) + Uy[j];
+    const double vz = (w_x * sy - w_y * sx) + Uz[j];
+    const double t = tr[j];
+    const double wsx = w_x + t * esx[j], wsy = w_y + t * esy[j], wsz = w_z + t * esz[j];
+    const double dx = midx[j] - sx, dy = midy[j] - sy, dz = midz[j] - sz;
+    const double vmn = (vx + wsy * dz - wsz * dy) * nx[j] + (vy + wsz * dx - wsx * dz) * ny[j] +
+                       (vz + wsx * dy - wsy * dx) * nz[j];
+    cP[j] = -((Fx[j] * vx + Fy[j] * vy + Fz[j] * vz) + (Mx[j] * wsx + My[j] * wsy + Mz[j] * wsz) +
+              e * vmn + ec[j] * (esx[j] * wsx + esy[j] * wsy + esz[j] * wsz));
+  }
 }
 
 }  // namespace orni

@@ -50,24 +50,26 @@ class StripKinematics {
                const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W);
   int strips() const { return ns_; }
   // Component arrays of the last compute() (length ns).
-  Eigen::Ref<const Eigen::ArrayXd> sLx() const { return SL_.segment(0, ns_).array(); }
-  Eigen::Ref<const Eigen::ArrayXd> sLy() const { return SL_.segment(ns_, ns_).array(); }
-  Eigen::Ref<const Eigen::ArrayXd> sLz() const { return SL_.segment(2 * ns_, ns_).array(); }
   const Eigen::ArrayXd& esx() const { return esx_; }
   const Eigen::ArrayXd& esy() const { return esy_; }
   const Eigen::ArrayXd& esz() const { return esz_; }
   const Eigen::ArrayXd& midx() const { return midx_; }
   const Eigen::ArrayXd& midy() const { return midy_; }
   const Eigen::ArrayXd& midz() const { return midz_; }
-  const Eigen::VectorXd& twistRate() const { return twist_rate_; }
 
  private:
   const StackedStrips& st_;
   int M_;
   int ns_;
-  Eigen::VectorXd SL_, ST_, UdL_, twist_rate_, Fall_, mpitch_;
-  Eigen::ArrayXd esx_, esy_, esz_, midx_, midy_, midz_, t0_, t1_;
-  Eigen::ArrayXd vx_, vy_, vz_, wsx_, wsy_, wsz_, vmn_;  // resultant() workspace
+  Eigen::VectorXd S_;      // deformed sample points [s_T; s_L] (6 ns)
+  Eigen::VectorXd rates_;  // [u'_L (3 ns); twist' (ns)]
+  Eigen::VectorXd loads_;  // [F (3 ns); pitching moment about e_s (ns)], modalForce() workspace
+  Eigen::ArrayXd esx_, esy_, esz_, midx_, midy_, midz_;
+  // Per-strip contributions to the resultant force, moment about P2 and power.
+  Eigen::ArrayXd cFx_, cFy_, cFz_, cMx_, cMy_, cMz_, cP_;
+  void contributions(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
+                     const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W,
+                     bool with_power);
 };
 
 }  // namespace orni
