@@ -3,8 +3,9 @@
 //   orni_results compare BASE_DIR NEW_DIR [--rel R] [--abs-scale A] [--report N] [--quiet]
 //       Compare every summary.json value and every numeric CSV cell of every run folder under
 //       BASE_DIR (a folder holding summary.json, at any depth) with the same file under NEW_DIR.
-//       A number passes when |a - b| <= R |b| + A range(column) (CSV) or R |b| + floor(unit)
-//       (summary.json, the floor chosen from the key's unit suffix, see unitFloor). A NaN/null or
+//       A number passes when |a - b| <= R |b| + A range(column) + floor(unit) (CSV, the unit
+//       from the units row) or R |b| + floor(unit) (summary.json, the unit from the key's
+//       suffix); see unitFloor. A NaN/null or
 //       empty cell where the baseline has a number, a missing file, row or column, a changed
 //       status/kind/mode word or boolean fail. Run metadata (wall_time_s, version, ...) and free
 //       text (message, report columns and keys) are not compared. Exit 0 = match, 1 = mismatch,
@@ -258,6 +259,17 @@ double unitFloor(const std::string& key) {
   return 1e-4;
 }
 
+// CSV: the same floor from a column's unit (units row); 0 for dimensionless or unknown units.
+double csvUnitFloor(const std::string& unit) {
+  static const std::pair<const char*, const char*> kSuffix[] = {
+      {"N", "_N"},    {"N m", "_Nm"}, {"W", "_W"},   {"deg", "_deg"}, {"deg/s", "_degps"},
+      {"rad", "_rad"}, {"m/s", "_mps"}, {"m", "_m"}, {"m^2", "_m2"},  {"Hz", "_hz"},
+      {"kg", "_kg"},  {"s", "_s"}};
+  for (const auto& [u, suffix] : kSuffix)
+    if (unit == u) return unitFloor(std::string("x") + suffix);
+  return 0.0;
+}
+
 struct Cell {
   std::string where;  // file : key or file : row, column
   std::string base, now;
@@ -345,6 +357,7 @@ void compareCsv(const fs::path& bf, const fs::path& nf, const std::string& label
         lo = std::min(lo, v), hi = std::max(hi, v);
     }
     const double range = hi >= lo ? hi - lo : 0.0;
+    const double floor = j < b.units.size() ? csvUnitFloor(b.units[j]) : 0.0;
     int structural_in_column = 0;
     for (std::size_t i = 0; i < rows; ++i) {
       const std::string bt = j < b.rows[i].size() ? b.rows[i][j] : "";
@@ -363,7 +376,7 @@ void compareCsv(const fs::path& bf, const fs::path& nf, const std::string& label
             ++c->failed;
           continue;
         }
-        const double tol = c->rel * std::fabs(bv) + c->abs_scale * range;
+        const double tol = c->rel * std::fabs(bv) + c->abs_scale * range + floor;
         const double d = std::fabs(nv - bv);
         c->note({where, bt, nt, tol > 0 ? d / tol : (d > 0 ? HUGE_VAL : 0.0)});
       } else {

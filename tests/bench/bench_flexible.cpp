@@ -3,10 +3,13 @@
 // the default; explicit:0); explicit:1 is the explicit ARK4(3)6L run, for comparison.
 //   BM_EfwModalWingBuild: mesh (5 mm) + assembly + eigen-solution (12 modes) + reduction.
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the trim point, 12 modes, MST-TD.
+//   BM_FlexibleTetheredRhs: one right-hand side of that run.
 #include <benchmark/benchmark.h>
 
 #include <string>
+#include <vector>
 
+#include "core/dynamics/flexible_tethered.hpp"
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/structure/modal_wing.hpp"
@@ -59,5 +62,27 @@ void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
 }
 BENCHMARK(BM_TetheredEfwFlexible10Cycles)->ArgName("explicit")->Arg(0)->Arg(1)
     ->Unit(benchmark::kMillisecond);
+
+// One right-hand side of the flexible tethered wing (strip kinematics, MST-TD kernel, modal
+// loads, apparent mass and its LDL^T solve, resultant, quadratures) on a state of the orbit.
+void BM_FlexibleTetheredRhs(benchmark::State& state) {
+  const VehicleModel v = efwFlexible();
+  const FlightCoreModel model(v);
+  const OperatingPoint& op = v.operating_point;
+  FlexibleTetheredSystem sys(model, *model.flexible,
+                             tetheredBodyMotion(op.speed_mps, op.theta_rad),
+                             ControlInput{op.freq_hz, op.tail_angle_rad});
+  std::vector<double> y(static_cast<std::size_t>(sys.stateCount()));
+  std::vector<double> ydot(y.size());
+  sys.initialState(0.0, y.data());
+  for (int i = 0; i < 2 * model.flexible->mode_count; ++i) y[static_cast<std::size_t>(i)] = 1e-4;
+  double t = 0.0;
+  for (auto _ : state) {
+    sys.rhs(t, y.data(), ydot.data());
+    benchmark::DoNotOptimize(ydot.data());
+    t += 1e-5;
+  }
+}
+BENCHMARK(BM_FlexibleTetheredRhs)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
