@@ -25,11 +25,11 @@ set xrange [-0.2:4.3]
 set xtics add ('stage 2' 4)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
 plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 9.18', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.81', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.83'
-4,9.182247384487669
+4,9.182225718878406
 e
-4,10.809793045888854
+4,10.809794632397058
 e
-4,11.829094306848823
+4,11.82909503148502
 e
 
 unset multiplot
@@ -58,11 +58,11 @@ set xrange [-0.2:4.3]
 set xtics add ('stage 2' 4)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
 plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 9.18', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.81', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.83'
-4,9.182247384487669
+4,9.182225718878406
 e
-4,10.809793045888854
+4,10.809794632397058
 e
-4,11.829094306848823
+4,11.82909503148502
 e
 
 unset multiplot
