@@ -1,7 +1,9 @@
-// MST-TD over all strips of a wing at once, in structure-of-arrays form so that Eigen vectorises
-// every step (aero-mst.md 9.5). Same equations, same order of operations, as evalMstTd() (the
-// scalar reference, tests/unit/aero/test_mst_td_batch.cpp checks them against each other); only
-// atan2 is replaced by a branch-free vectorisable version accurate to a few ulp.
+// MST-TD over all strips of a wing at once, in structure-of-arrays form (aero-mst.md 9.5): two
+// fused passes over the strips that the compiler vectorises (kinematics, lag and stall angle;
+// then separation and loads), with Eigen's vectorised exp for f_st between them. Same equations,
+// same order of operations, as evalMstTd() (the scalar reference, tests/unit/aero/
+// test_mst_td_batch.cpp checks them against each other); only atan2 is replaced by a
+// branch-free version accurate to a few ulp.
 //
 // Scope: the Scherer lag (option A, states [z, f] per strip) with a smooth stall (stall width > 0);
 // other settings use the scalar kernel. The workspace is sized once; evaluation never allocates.

@@ -1,39 +1,15 @@
 #include "studies/runner/output/optimize_journal.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <charconv>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
 #include <limits>
-#include <sstream>
-#include <stdexcept>
 #include <system_error>
 
 #include "studies/runner/output/aeromap_journal.hpp"
-#include "studies/runner/output/atomic_file.hpp"
 
 namespace orni::studies {
 
 namespace {
-
-constexpr double kSyncInterval_s = 1.0;
-
-double nowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
-}
-
-std::string hex16(std::uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
 
 std::string header(std::uint64_t fingerprint, const OptimizeJournalShape& s) {
   return "# ornithopter optimize journal v1 fingerprint=" + hex16(fingerprint) +
@@ -55,19 +31,6 @@ bool parseInt(std::string_view s, int* v) {
   if (s.empty()) return false;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), *v);
   return r.ec == std::errc() && r.ptr == s.data() + s.size() && *v >= 0;
-}
-
-void writeAll(int fd, const std::string& text, const std::filesystem::path& file) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error("cannot append to " + file.string() + ": " +
-                               std::strerror(errno));
-    }
-    done += static_cast<std::size_t>(w);
-  }
 }
 
 }  // namespace
@@ -135,77 +98,28 @@ std::optional<orni::opt::Evaluation> OptimizeJournalResume::replay(
 }
 
 OptimizeJournal::OptimizeJournal(std::filesystem::path file, std::uint64_t fingerprint,
-                                 const OptimizeJournalShape& shape, OptimizeJournalResume* resume)
-    : file_(std::move(file)) {
+                                 const OptimizeJournalShape& shape, OptimizeJournalResume* resume) {
   OptimizeJournalResume r;
-  const std::string head = header(fingerprint, shape);
-  std::string kept = head + '\n';
-  std::error_code ec;
-  if (std::filesystem::exists(file_, ec)) {
-    r.existed = true;
-    std::ifstream in(file_, std::ios::binary);
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    const std::string text = buf.str();
-    const std::size_t first_nl = text.find('\n');
-    if (first_nl != std::string::npos && std::string_view(text).substr(0, first_nl) == head) {
-      r.fingerprint_matched = true;
-      std::size_t pos = first_nl + 1;
-      while (pos < text.size()) {
-        const std::size_t nl = text.find('\n', pos);
-        if (nl == std::string::npos) {  // torn last line
-          ++r.rejected_lines;
-          break;
-        }
-        const std::string_view line = std::string_view(text).substr(pos, nl - pos);
-        int start = 0, index = 0;
-        JournaledEvaluation e;
-        if (parseOptimizeJournalRecord(line, shape, &start, &index, &e)) {
-          r.evaluations[{start, index}] = std::move(e);  // a later record wins
-          kept.append(line.data(), line.size());
-          kept += '\n';
-        } else {
-          ++r.rejected_lines;
-        }
-        pos = nl + 1;
-      }
-      r.records = r.evaluations.size();
-    }
-  }
-  writeFileAtomic(file_, kept);
-  fd_ = ::open(file_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-  if (fd_ < 0)
-    throw std::runtime_error("cannot open " + file_.string() + ": " + std::strerror(errno));
-  last_sync_s_ = nowSeconds();
+  auto keep = [&](std::string_view line) {
+    int start = 0, index = 0;
+    JournaledEvaluation e;
+    if (!parseOptimizeJournalRecord(line, shape, &start, &index, &e)) return false;
+    r.evaluations[{start, index}] = std::move(e);  // a later record wins
+    return true;
+  };
+  JournalFile::Reading reading;
+  file_.emplace(std::move(file), header(fingerprint, shape), keep, &reading);
+  r.existed = reading.existed;
+  r.fingerprint_matched = reading.header_matched;
+  r.rejected_lines = reading.rejected_lines;
+  r.records = r.evaluations.size();
   if (resume) *resume = std::move(r);
 }
 
-OptimizeJournal::~OptimizeJournal() { close(); }
-
-void OptimizeJournal::close() {
-  if (fd_ < 0) return;
-  ::fdatasync(fd_);
-  ::close(fd_);
-  fd_ = -1;
-}
-
 void OptimizeJournal::append(const orni::opt::EvaluationRecord& record) {
-  const std::string line = optimizeJournalRecord(record);
-  std::lock_guard<std::mutex> lock(mutex_);
-  if (fd_ < 0) throw std::logic_error("OptimizeJournal: append after remove");
-  writeAll(fd_, line, file_);
-  const double now = nowSeconds();
-  if (now - last_sync_s_ >= kSyncInterval_s) {
-    ::fdatasync(fd_);
-    last_sync_s_ = now;
-  }
+  file_->append(optimizeJournalRecord(record));
 }
 
-void OptimizeJournal::remove() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  close();
-  std::error_code ec;
-  std::filesystem::remove(file_, ec);
-}
+void OptimizeJournal::remove() { file_->remove(); }
 
 }  // namespace orni::studies

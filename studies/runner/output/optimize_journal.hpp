@@ -20,7 +20,6 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
-#include <mutex>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +27,7 @@
 #include <vector>
 
 #include "optimize/optimizer.hpp"
+#include "studies/runner/output/journal_file.hpp"
 
 namespace orni::studies {
 
@@ -69,7 +69,6 @@ class OptimizeJournal {
   /// written.
   OptimizeJournal(std::filesystem::path file, std::uint64_t fingerprint,
                   const OptimizeJournalShape& shape, OptimizeJournalResume* resume);
-  ~OptimizeJournal();
   OptimizeJournal(const OptimizeJournal&) = delete;
   OptimizeJournal& operator=(const OptimizeJournal&) = delete;
 
@@ -78,14 +77,10 @@ class OptimizeJournal {
   /// Closes and deletes the journal (after the final outputs are written).
   void remove();
 
-  const std::filesystem::path& path() const { return file_; }
+  const std::filesystem::path& path() const { return file_->path(); }
 
  private:
-  void close();
-  std::filesystem::path file_;
-  std::mutex mutex_;
-  int fd_ = -1;
-  double last_sync_s_ = 0.0;
+  std::optional<JournalFile> file_;  // set by the constructor
 };
 
 }  // namespace orni::studies

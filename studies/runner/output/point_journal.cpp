@@ -1,52 +1,16 @@
 #include "studies/runner/output/point_journal.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
 #include <charconv>
-#include <chrono>
-#include <cstdio>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-#include <stdexcept>
 #include <system_error>
 #include <utility>
-
-#include "studies/runner/output/atomic_file.hpp"
 
 namespace orni::studies {
 
 namespace {
 
-constexpr double kSyncInterval_s = 1.0;
-
-double nowSeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::string hex16(std::uint64_t v) {
-  char buf[17];
-  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
-  return buf;
-}
-
 std::string header(const std::string& label, std::uint64_t fingerprint, std::size_t points) {
   return "# ornithopter " + label + " journal v1 fingerprint=" + hex16(fingerprint) +
          " points=" + std::to_string(points);
-}
-
-void writeAll(int fd, const std::string& text, const std::filesystem::path& file) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
-    if (w < 0) {
-      if (errno == EINTR) continue;
-      throw std::runtime_error("cannot append to " + file.string() + ": " + std::strerror(errno));
-    }
-    done += static_cast<std::size_t>(w);
-  }
 }
 
 }  // namespace
@@ -84,78 +48,31 @@ bool parsePointJournalRecord(std::string_view line, std::size_t points, std::siz
 
 PointJournal::PointJournal(std::filesystem::path file, std::string label, std::uint64_t fingerprint,
                            std::size_t points, const JournalPayloadCheck& accept,
-                           PointJournalResume* resume)
-    : file_(std::move(file)) {
+                           PointJournalResume* resume) {
   PointJournalResume r;
   r.payloads.resize(points);
-  const std::string head = header(label, fingerprint, points);
-  std::string kept = head + '\n';
-
-  std::error_code ec;
-  if (std::filesystem::exists(file_, ec)) {
-    r.existed = true;
-    std::ifstream in(file_, std::ios::binary);
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    const std::string text = buf.str();
-    const std::size_t first_nl = text.find('\n');
-    if (first_nl != std::string::npos && std::string_view(text).substr(0, first_nl) == head) {
-      r.fingerprint_matched = true;
-      std::size_t start = first_nl + 1;
-      while (start < text.size()) {
-        const std::size_t nl = text.find('\n', start);
-        if (nl == std::string::npos) {  // torn last line: no newline
-          ++r.rejected_lines;
-          break;
-        }
-        const std::string_view line = std::string_view(text).substr(start, nl - start);
-        std::size_t index = 0;
-        std::string_view payload;
-        if (parsePointJournalRecord(line, points, &index, &payload) && !r.payloads[index] &&
-            (!accept || accept(index, payload))) {
-          r.payloads[index] = std::string(payload);
-          ++r.records;
-          kept.append(line.data(), line.size());
-          kept += '\n';
-        } else {
-          ++r.rejected_lines;
-        }
-        start = nl + 1;
-      }
-    }
-  }
-  // Only trusted records survive: later appends never follow a torn fragment.
-  writeFileAtomic(file_, kept);
-  fd_ = ::open(file_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
-  if (fd_ < 0)
-    throw std::runtime_error("cannot open " + file_.string() + ": " + std::strerror(errno));
-  last_sync_s_ = nowSeconds();
+  auto keep = [&](std::string_view line) {
+    std::size_t index = 0;
+    std::string_view payload;
+    if (!parsePointJournalRecord(line, points, &index, &payload) || r.payloads[index] ||
+        (accept && !accept(index, payload)))
+      return false;
+    r.payloads[index] = std::string(payload);
+    ++r.records;
+    return true;
+  };
+  JournalFile::Reading reading;
+  file_.emplace(std::move(file), header(label, fingerprint, points), keep, &reading);
+  r.existed = reading.existed;
+  r.fingerprint_matched = reading.header_matched;
+  r.rejected_lines = reading.rejected_lines;
   if (resume) *resume = std::move(r);
 }
 
-PointJournal::~PointJournal() { close(); }
-
-void PointJournal::close() {
-  if (fd_ < 0) return;
-  ::fdatasync(fd_);
-  ::close(fd_);
-  fd_ = -1;
-}
-
 void PointJournal::append(std::size_t index, std::string_view payload) {
-  if (fd_ < 0) throw std::logic_error("PointJournal: append after remove");
-  writeAll(fd_, pointJournalRecord(index, payload), file_);
-  const double now = nowSeconds();
-  if (now - last_sync_s_ >= kSyncInterval_s) {
-    ::fdatasync(fd_);
-    last_sync_s_ = now;
-  }
+  file_->append(pointJournalRecord(index, payload));
 }
 
-void PointJournal::remove() {
-  close();
-  std::error_code ec;
-  std::filesystem::remove(file_, ec);
-}
+void PointJournal::remove() { file_->remove(); }
 
 }  // namespace orni::studies

@@ -24,6 +24,8 @@
 #include <string_view>
 #include <vector>
 
+#include "studies/runner/output/journal_file.hpp"
+
 namespace orni::studies {
 
 /// FNV-1a 64-bit hash of `text`.
@@ -58,7 +60,6 @@ class PointJournal {
   /// open for appending. Throws std::runtime_error when the file cannot be written.
   PointJournal(std::filesystem::path file, std::string label, std::uint64_t fingerprint,
                std::size_t points, const JournalPayloadCheck& accept, PointJournalResume* resume);
-  ~PointJournal();
   PointJournal(const PointJournal&) = delete;
   PointJournal& operator=(const PointJournal&) = delete;
 
@@ -67,13 +68,10 @@ class PointJournal {
   /// Closes and deletes the journal (after the final outputs are written).
   void remove();
 
-  const std::filesystem::path& path() const { return file_; }
+  const std::filesystem::path& path() const { return file_->path(); }
 
  private:
-  void close();
-  std::filesystem::path file_;
-  int fd_ = -1;
-  double last_sync_s_ = 0.0;
+  std::optional<JournalFile> file_;  // set by the constructor
 };
 
 }  // namespace orni::studies

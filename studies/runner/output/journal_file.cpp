@@ -1,0 +1,118 @@
+#include "studies/runner/output/journal_file.hpp"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <system_error>
+#include <utility>
+
+#include "studies/runner/output/atomic_file.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+constexpr double kSyncInterval_s = 1.0;
+
+double nowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+void writeAll(int fd, const std::string& text, const std::filesystem::path& file) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t w = ::write(fd, text.data() + done, text.size() - done);
+    if (w < 0) {
+      if (errno == EINTR) continue;
+      throw std::runtime_error("cannot append to " + file.string() + ": " + std::strerror(errno));
+    }
+    done += static_cast<std::size_t>(w);
+  }
+}
+
+}  // namespace
+
+std::string hex16(std::uint64_t v) {
+  char buf[17];
+  std::snprintf(buf, sizeof buf, "%016llx", static_cast<unsigned long long>(v));
+  return buf;
+}
+
+JournalFile::JournalFile(std::filesystem::path file, const std::string& header,
+                         const KeepLine& keep, Reading* reading)
+    : file_(std::move(file)) {
+  Reading r;
+  std::string kept = header + '\n';
+  std::error_code ec;
+  if (std::filesystem::exists(file_, ec)) {
+    r.existed = true;
+    std::ifstream in(file_, std::ios::binary);
+    std::ostringstream buf;
+    buf << in.rdbuf();
+    const std::string text = buf.str();
+    const std::size_t first_nl = text.find('\n');
+    if (first_nl != std::string::npos && std::string_view(text).substr(0, first_nl) == header) {
+      r.header_matched = true;
+      std::size_t start = first_nl + 1;
+      while (start < text.size()) {
+        const std::size_t nl = text.find('\n', start);
+        if (nl == std::string::npos) {  // torn last line: no newline
+          ++r.rejected_lines;
+          break;
+        }
+        const std::string_view line = std::string_view(text).substr(start, nl - start);
+        if (keep(line)) {
+          kept.append(line.data(), line.size());
+          kept += '\n';
+        } else {
+          ++r.rejected_lines;
+        }
+        start = nl + 1;
+      }
+    }
+  }
+  // Only trusted records survive: later appends never follow a torn fragment.
+  writeFileAtomic(file_, kept);
+  fd_ = ::open(file_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+  if (fd_ < 0)
+    throw std::runtime_error("cannot open " + file_.string() + ": " + std::strerror(errno));
+  last_sync_s_ = nowSeconds();
+  if (reading) *reading = r;
+}
+
+JournalFile::~JournalFile() { close(); }
+
+void JournalFile::close() {
+  if (fd_ < 0) return;
+  ::fdatasync(fd_);
+  ::close(fd_);
+  fd_ = -1;
+}
+
+void JournalFile::append(const std::string& line) {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (fd_ < 0) throw std::logic_error("journal " + file_.string() + ": append after remove");
+  writeAll(fd_, line, file_);
+  const double now = nowSeconds();
+  if (now - last_sync_s_ >= kSyncInterval_s) {
+    ::fdatasync(fd_);
+    last_sync_s_ = now;
+  }
+}
+
+void JournalFile::remove() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  close();
+  std::error_code ec;
+  std::filesystem::remove(file_, ec);
+}
+
+}  // namespace orni::studies

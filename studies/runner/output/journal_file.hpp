@@ -1,0 +1,60 @@
+// The append-only file under every resumable run's journal (point_journal.hpp for aero maps and
+// sweeps, optimize_journal.hpp for optimisations): a header line that names the run, then one
+// record per line.
+//
+// Opening reads an existing file: when its first line is the expected header, each complete line
+// is offered to the caller's `keep` (which parses and stores it); a torn last line (no newline)
+// and every line `keep` refuses are dropped. The file is then rewritten atomically with the header
+// and the kept lines only, so that later appends never follow a torn fragment, and kept open for
+// appending. Each append is one write(2) (a killed process loses nothing written); fdatasync runs
+// at most once a second and at close (an operating-system crash may lose the last second).
+// Appends are thread-safe.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <mutex>
+#include <string>
+#include <string_view>
+
+namespace orni::studies {
+
+/// 16 lower-case hex digits of v (the journals' checksums and fingerprints).
+std::string hex16(std::uint64_t v);
+
+class JournalFile {
+ public:
+  /// What opening found.
+  struct Reading {
+    bool existed = false;         ///< a file was there
+    bool header_matched = false;  ///< ... with the expected header line
+    std::size_t rejected_lines = 0;  ///< torn or refused lines dropped
+  };
+  /// Called for every complete line after a matching header (without its newline); true keeps it.
+  using KeepLine = std::function<bool(std::string_view line)>;
+
+  /// Opens `file` with `header` (one line, no newline). Throws std::runtime_error when the file
+  /// cannot be written.
+  JournalFile(std::filesystem::path file, const std::string& header, const KeepLine& keep,
+              Reading* reading);
+  ~JournalFile();
+  JournalFile(const JournalFile&) = delete;
+  JournalFile& operator=(const JournalFile&) = delete;
+
+  /// Appends `line` (which ends with its newline) in one write. Throws std::runtime_error on
+  /// failure or after remove().
+  void append(const std::string& line);
+  /// Closes and deletes the file.
+  void remove();
+  const std::filesystem::path& path() const { return file_; }
+
+ private:
+  void close();
+  std::filesystem::path file_;
+  std::mutex mutex_;
+  int fd_ = -1;
+  double last_sync_s_ = 0.0;
+};
+
+}  // namespace orni::studies
