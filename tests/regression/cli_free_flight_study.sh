@@ -7,14 +7,8 @@
 set -u
 bin=${1:?}; root=$(cd "${2:?}" && pwd); scratch=${3:?}
 rm -rf "$scratch"; mkdir -p "$scratch"
-fail=0
-check() {  # check "description" command...
-  local what=$1; shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fail=1; fi
-}
-json() {  # json FILE KEY: the first scalar value of "KEY" in FILE
-  grep -m1 "\"$2\":" "$1" | sed -E 's/.*: *([-+0-9.eE]+|true|false|null|"[^"]*").*/\1/' | tr -d '"'
-}
+# check, json, awk_true and fail=0
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_checks.sh"
 same() { awk "BEGIN { exit !(($1 - $2)^2 < 1e-18) }"; }
 
 out="$scratch/fig6_8"

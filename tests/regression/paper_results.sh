@@ -37,11 +37,8 @@ fast=(fig2_rfw_theta0 fig2_rfw_theta20 fig5_efw_aeromap table3_trim fig6_8_free_
       fig9_constrained_flight_test calibrate_magpie sweep_tail_arm_area)
 rel=1e-2
 abs_scale=2e-3
-fail=0
-check() {  # check "description" command...
-  local what=$1; shift
-  if "$@"; then echo "ok   $what"; else echo "FAIL $what"; fail=1; fi
-}
+# check, json, awk_true and fail=0
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_checks.sh"
 
 if [[ ! -x "$tool" ]]; then echo "FAIL orni_results not found at $tool"; exit 1; fi
 base="$root/results/paper"
