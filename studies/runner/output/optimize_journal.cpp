@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "studies/runner/output/aeromap_journal.hpp"
+#include "studies/runner/output/atomic_file.hpp"
 
 namespace orni::studies {
 
