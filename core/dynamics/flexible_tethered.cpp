@@ -105,7 +105,7 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   if (aero) {
     const StackedStrips& st = flex_.stacked;
     const Eigen::Index ns = st.ns;
-    twist_mid_qdd_.noalias() = st.shapes.bottomRows(2 * ns) * qdd_;  // [psi_twist; psi_mid] q''
+    twist_mid_qdd_.noalias() = st.apparentShapes() * qdd_;
     extra_force_ = -(0.5 * (1.0 + b.separation_f) * flex_.apparent_mass_kg.array() *
                      twist_mid_qdd_.tail(ns).array()).matrix();
     extra_couple_ = -(b.separation_f * flex_.apparent_rotary_kgm2.array() *

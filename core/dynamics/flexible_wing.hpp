@@ -39,12 +39,12 @@ struct StackedStrips {
   Eigen::Index ns = 0;                  ///< strips
   Eigen::VectorXd points;               ///< undeformed sample points [x_T; x_L] (6 ns)
   Eigen::MatrixXd shapes;               ///< (8 ns) x M, see above
-  auto x_T() const { return points.head(3 * ns); }
-  auto x_L() const { return points.segment(3 * ns, 3 * ns); }
-  auto phi_T() const { return shapes.topRows(3 * ns); }        ///< translation at T (3 ns x M)
-  auto phi_L() const { return shapes.middleRows(3 * ns, 3 * ns); }  ///< translation at L
+  // The row blocks the evaluations multiply with (adjacent, so one product each).
+  auto pointShapes() const { return shapes.topRows(6 * ns); }           ///< [phi_T; phi_L]
+  auto rateShapes() const { return shapes.middleRows(3 * ns, 4 * ns); }  ///< [phi_L; psi_twist]
+  auto apparentShapes() const { return shapes.bottomRows(2 * ns); }      ///< [psi_twist; psi_mid]
   auto psi_twist() const { return shapes.middleRows(6 * ns, ns); }  ///< elastic twist (ns x M)
-  auto psi_mid() const { return shapes.middleRows(7 * ns, ns); }    ///< mid-chord normal
+  auto psi_mid() const { return shapes.middleRows(7 * ns, ns); }    ///< mid-chord normal (ns x M)
   /// Apparent air mass on the modes (structure.md 4.4) with separation fractions f_j:
   ///   A(f) = sum_j 0.5 (1 + f_j) m_a,j psi_mid psi_mid^T + f_j k_j psi_t^T psi_t
   /// (k_j = rho pi c^4/128 dy, the apparent rotary inertia of M17) = apparent_const +

@@ -142,6 +142,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   extra_couple_.setZero(nsi);
   zero_ns_.setZero(nsi);
   tmp_ns_.setZero(nsi);
+  twist_mid_ud_.setZero(2 * nsi);
   packed_.setZero(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2);
   data_.batch.airx.setZero();
   data_.batch.airy.setZero();
@@ -398,8 +399,10 @@ void FreeFlightSystem::apparentAccelerations() {
   extra_force_ = nuU_ * ud_[0] + nuW_ * ud_[1] + nuQ_ * ud_[2];
   extra_couple_ = nutQ_ * ud_[2];
   if (M_ > 0) {
-    extra_force_.noalias() += flex_->stacked.psi_mid() * ud_.tail(M_);
-    extra_couple_.noalias() += flex_->stacked.psi_twist() * ud_.tail(M_);
+    const StackedStrips& st = flex_->stacked;
+    twist_mid_ud_.noalias() = st.apparentShapes() * ud_.tail(M_);
+    extra_force_ += twist_mid_ud_.tail(st.ns);
+    extra_couple_ += twist_mid_ud_.head(st.ns);
   }
   extra_force_ = -b_strip_.cwiseProduct(extra_force_);
   extra_couple_ = -k_twist_.cwiseProduct(extra_couple_);

@@ -126,6 +126,7 @@ class FreeFlightSystem {
   Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;      // body partials of the apparent accelerations
   Eigen::VectorXd extra_force_, extra_couple_;  // apparent-mass force and couple of u' (ns)
   Eigen::VectorXd zero_ns_, tmp_ns_, packed_;
+  Eigen::VectorXd twist_mid_ud_;  // [psi_twist; psi_mid] of the modal accelerations (2 ns)
   void apparentAccelerations();
   // Results of the last evaluate.
   Vec3 F_aero_W_ = Vec3::Zero(), M_aero_P2_W_ = Vec3::Zero();  // one wing, kernel loads

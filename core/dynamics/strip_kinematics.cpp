@@ -22,8 +22,8 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
   const Eigen::Index n = ns_;
   if (M_ > 0) {  // [s_T; s_L] = x + [phi_T; phi_L] q, [u'_L; twist'] = [phi_L; psi_twist] q'
     S_ = st_.points;
-    S_.noalias() += st_.shapes.topRows(6 * n) * q;
-    rates_.noalias() = st_.shapes.middleRows(3 * n, 4 * n) * qd;
+    S_.noalias() += st_.pointShapes() * q;
+    rates_.noalias() = st_.rateShapes() * qd;
   }
   // One pass over the strips (the compiler vectorises it; every intermediate stays in a
   // register instead of a temporary array).
@@ -124,7 +124,7 @@ void StripKinematics::modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q) 
   loads_.segment(n, n) = b.Fy.matrix();
   loads_.segment(2 * n, n) = b.Fz.matrix();
   loads_.segment(3 * n, n) = (b.Mx * esx_ + b.My * esy_ + b.Mz * esz_).matrix();
-  Q->noalias() = st_.shapes.middleRows(3 * n, 4 * n).transpose() * loads_;  // [phi_L; psi_twist]^T
+  Q->noalias() = st_.rateShapes().transpose() * loads_;
 }
 
 void StripKinematics::resultant(const aero::StripBatch& b, const Eigen::VectorXd& extra_force,
