@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <string>
 
 #include "core/dynamics/flexible_tethered.hpp"
 #include "core/integrate/ode_integrator.hpp"
@@ -220,6 +221,72 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
   return summary;
 }
 
+// A stateless strip model (the algebraic delaurier1993 model on the rigid wing) makes the loads an
+// explicit periodic function of time: the solution is periodic from the first cycle, so nothing
+// is integrated. The cycle means are the periodic rectangle rule over kStatelessMeanSamples
+// uniform samples, spectrally accurate for smooth loads and deterministic across a hard stall
+// switch; the samples come in pairs half a period apart, so a load that is odd under the
+// half-period shift (FV at theta 0 of a symmetric stroke) averages to zero up to rounding.
+constexpr int kStatelessMeanSamples = 4096;
+
+SimulationSummary sampleStatelessCycles(const FlightCoreModel& model, const OperatingPoint& point,
+                                        const SimulationOptions& options, TimeHistory* history) {
+  RigidTetheredSystem sys(model, tetheredBodyMotion(point.speed_mps, point.theta_rad),
+                          ControlInput{point.freq_hz, point.tail_angle_rad});
+  const double period_s = 1.0 / point.freq_hz;
+  SimulationSummary summary;
+  CycleMeans cm;
+  LoadSample s;
+  bool finite = true;
+  for (int i = 0; i < kStatelessMeanSamples; ++i) {
+    sys.sample(i * period_s / kStatelessMeanSamples, nullptr, &s);
+    cm.FV_N += s.FV_N;
+    cm.FH_N += s.FH_N;
+    cm.M_Nm += s.M_Nm;
+    cm.power_aero_W += s.power_aero_W;
+    cm.power_hinge_W += s.power_hinge_W;
+    finite = finite && std::isfinite(s.FV_N) && std::isfinite(s.FH_N) && std::isfinite(s.M_Nm) &&
+             std::isfinite(s.power_aero_W) && std::isfinite(s.power_hinge_W);
+  }
+  for (double* v : {&cm.FV_N, &cm.FH_N, &cm.M_Nm, &cm.power_aero_W, &cm.power_hinge_W})
+    *v /= kStatelessMeanSamples;
+  if (history && options.record_history) {
+    const int spc = options.samples_per_cycle;
+    const std::size_t total =
+        static_cast<std::size_t>(options.cycles) * static_cast<std::size_t>(spc) + 1;
+    history->t_s.assign(total, 0.0);
+    history->delta_M_rad.assign(total, 0.0);
+    history->loads.assign(total, LoadSample{});
+    for (std::size_t i = 0; i < total; ++i) {
+      // The same phase gives the same sample in every cycle: evaluate the first cycle only.
+      const std::size_t phase = i % static_cast<std::size_t>(spc);
+      const double t = static_cast<double>(i) * period_s / spc;
+      history->t_s[i] = t;
+      history->delta_M_rad[i] =
+          flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad;
+      if (i == phase)
+        sys.sample(t, nullptr, &history->loads[i]);
+      else
+        history->loads[i] = history->loads[phase];
+    }
+  }
+  summary.per_cycle.assign(static_cast<std::size_t>(options.cycles), cm);
+  summary.cycles_run = options.cycles;
+  summary.mean = cm;
+  if (!finite) {
+    summary.status = SimulationStatus::kDiverged;
+    summary.message = "non-finite loads in the first cycle (stateless strip model)";
+    return summary;
+  }
+  summary.status = SimulationStatus::kOk;
+  summary.steady_state_cycle = 1;
+  summary.message =
+      "stateless strip model: periodic from the first cycle; cycle means from " +
+      std::to_string(kStatelessMeanSamples) + " uniform samples per period";
+  summary.integrator_method = "none (stateless strip model, sampled directly)";
+  return summary;
+}
+
 }  // namespace
 
 SimulationSummary simulateTethered(const FlightCoreModel& model, const OperatingPoint& point,
@@ -245,6 +312,7 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     s.final_mode_count = model.flexible->mode_count;
     return s;
   }
+  if (model.aeroStateCount() == 0) return sampleStatelessCycles(model, point, options, history);
   RigidTetheredSystem sys(model, body, control);
   IntegratorOptions iopt = integratorOptions(sys, point, options);
   iopt.method = ErkMethod::kDormandPrince5;
