@@ -7,6 +7,8 @@
 // nose-up positive. Angles in radians, SI units.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "core/model/vehicle_model.hpp"
@@ -31,6 +33,29 @@ struct SchererFunction {
   double F = 1.0, G = 0.0, G_over_k = 0.0;
 };
 SchererFunction schererFunction(const MstConstants& constants, double reduced_frequency);
+
+/// The attached-flow circulatory force of MST-TD at large relative angles (issue 13 item 7).
+/// DeLaurier's M7 is dNc = 2 pi (alpha' + thetabar) rho U V/2 c dy, with the linear angle
+/// alpha ~ hdot/U (= tan of the physical angle in pure plunge) and V the local speed at the bound
+/// vortex, whose normal component U (alpha' + thetabar) is reduced by the finite-wing downwash.
+/// MST-TD writes the same force with the resultant angle alpha_E and V_r = |(V_t, V_n)|:
+///   angle = J sin(alpha_E + alpha0)            (the finite-wing angle, bounded)
+///   speed_ratio = V_K / V_r = sqrt(cos^2(alpha_E + alpha0) + angle^2)
+///   dNc = 2 pi angle (rho V_r V_K / 2) c dy = pi rho c dy J V_n sqrt(V_t^2 + J^2 V_n^2),
+/// which is DeLaurier's M7 exactly in the quasi-steady attached limit (alpha_E = alpha_34, V_t in
+/// place of U): the normal force grows like V_n V, not like alpha V_r^2 (the unbounded linear
+/// angle times the resultant dynamic pressure, 11 % above DeLaurier at 30 deg, 26 % at 45 deg).
+/// The leading-edge suction uses the same angle and dynamic pressure: 2 pi eta (J sin)^2 q_K, the
+/// flat plate's sin^2 growth; DeLaurier's tan^2 U V exceeds it by 1/cos(relative angle). For
+/// small angles both reduce to alpha'_t + alpha0 and rho V_r^2/2.
+struct BoundedAttachedFlow {
+  double angle = 0.0;        ///< J sin(alpha_E + alpha0), rad-like
+  double speed_ratio = 1.0;  ///< V_K / V_r
+};
+inline BoundedAttachedFlow boundedAttachedFlow(double jones_factor, double alpha_rad) {
+  const double s = jones_factor * std::sin(alpha_rad), c = std::cos(alpha_rad);
+  return {s, std::sqrt(c * c + s * s)};
+}
 
 /// Hoerner turbulent flat-plate friction coefficient (M11), Re clamped to >= 1e3 (pitfall 11).
 double frictionCoefficient(double reynolds_number);

@@ -174,17 +174,21 @@ SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometr
     state_derivatives[n_lag] = 0.0;
   }
 
-  // 9.5 step 5: attached branch with q_ref = 0.5 rho V_r^2.
+  // 9.5 step 5: attached branch, bounded at large angles (boundedAttachedFlow: the finite-wing
+  // angle as J sin(alpha_E + alpha0) and DeLaurier's Kutta-Joukowski dynamic pressure).
+  const BoundedAttachedFlow bounded =
+      boundedAttachedFlow(context.constants.jones_factor, alpha_E + alpha0);
   const double q_ref_c_dy = 0.5 * rho * V_r * V_r * c * dy;
-  const double dNc = kTwoPi * (alpha_t + alpha0) * q_ref_c_dy;                   // M7
+  const double q_K_c_dy = q_ref_c_dy * bounded.speed_ratio;
+  const double dNc = kTwoPi * bounded.angle * q_K_c_dy;                          // M7
   const double dNa = rho * kPi * c * c * 0.25 * flow.vdot2_mps2 * dy;              // M8
-  // M9 with the suction angle alpha'_t - c thetadot/(4 V_r); off in reversed flow (pitfall 10).
-  const double suction_angle = alpha_t - 0.25 * c * thetadot * inv_V_r;
+  // M9 with the suction angle (bounded) - c thetadot/(4 V_r); off in reversed flow (pitfall 10).
+  const double suction_angle = bounded.angle - alpha0 - 0.25 * c * thetadot * inv_V_r;
   const double dTs = flow.V_t_mps > 0.0
                          ? params.suction_efficiency * kTwoPi * suction_angle * suction_angle *
-                               q_ref_c_dy
+                               q_K_c_dy
                          : 0.0;
-  const double dDcamber = -kTwoPi * alpha0 * alpha_t * q_ref_c_dy;  // M10
+  const double dDcamber = -kTwoPi * alpha0 * (bounded.angle - alpha0) * q_K_c_dy;  // M10
   double dDf = 0.0;
   if (params.skin_friction) {
     // M11 with Re = U c/nu (flight speed) and V_t|V_t| (pitfall 10).

@@ -111,6 +111,8 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
   double* __restrict fst_arg = b.t[10].data();  // then f_st
   double* __restrict zdot = b.t[11].data();
   double* __restrict f_state_a = b.t[12].data();
+  double* __restrict speed_ratio_a = b.t[13].data();
+  double* __restrict angle_b_a = b.t[14].data();
   const double* __restrict ecx = b.ecx.data();
   const double* __restrict ecy = b.ecy.data();
   const double* __restrict ecz = b.ecz.data();
@@ -163,6 +165,12 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
     const double z = states[2 * j];
     const double alpha_E = (1.0 - C1) * alpha34 + C1 * z;
     const double alpha_t = J * (alpha_E + alpha0) - alpha0;  // alpha'_t
+    // Bounded attached flow (boundedAttachedFlow, mst_strip.hpp): J sin(alpha_E + alpha0) and
+    // the speed ratio V_K / V_r = sqrt(cos^2 + (J sin)^2) of DeLaurier's dynamic pressure.
+    const double sE = std::sin(alpha_E + alpha0), cE = std::cos(alpha_E + alpha0);
+    const double angle_b = J * sE;
+    speed_ratio_a[j] = std::sqrt(cE * cE + angle_b * angle_b);
+    angle_b_a[j] = angle_b;
     const double alpha_crit = alpha_t - (lever75[j] + xP[j]) * thd * (1.0 / Vr);  // 9.4.2: 0.75 c
     // 9.4.1: f_st = 0.5 [1 - tanh(x)] = 1 / (1 + exp(2x)), split at the midpoint of the limits.
     const double x = alpha_crit >= stall_mid ? alpha_crit - stall_max : stall_min - alpha_crit;
@@ -205,21 +213,22 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
   for (Eigen::Index j = 0; j < n; ++j) {
     const double f = separation_lag ? std::max(std::min(f_state_a[j], 1.0), 0.0) : fst[j];
     const double Vr = Vr_a[j], Vt = Vt_a[j], Vn50 = Vn50_a[j], thd = thd_a[j];
-    const double alpha_t = alpha_t_a[j];
-    // Attached branch with q_ref = 0.5 rho V_r^2, separated branch (M15, 3-D).
-    const double qcdy = Vr * Vr * k_q[j];
-    const double dN4 = f * (kTwoPi * (alpha_t + alpha0) * qcdy);           // f dNc (M7)
+    const double angle_b = angle_b_a[j];
+    // Attached branch (bounded, DeLaurier's dynamic pressure), separated branch (M15, 3-D).
+    const double qcdy = Vr * Vr * k_q[j] * speed_ratio_a[j];
+    const double qrcdy = Vr * Vr * k_q[j];
+    const double dN4 = f * (kTwoPi * angle_b * qcdy);                       // f dNc (M7)
     const double dNa = k_apparent[j] * vdot2_a[j];                          // dNa (M8)
     const double dNs = k_crossflow[j] * std::sqrt(Vt * Vt + Vn50 * Vn50) * Vn50;  // dNc_s
     const double dN2 = (1.0 - f) * dNs + 0.5 * (1.0 + f) * dNa;
     // Chordwise: suction (off in reversed flow), camber, friction (M9-M12), blended (9.4.2).
-    const double alpha_s = alpha_t - (lever25[j] + xP[j]) * thd * (1.0 / Vr);  // suction angle
+    const double alpha_s = angle_b - alpha0 - (lever25[j] + xP[j]) * thd * (1.0 / Vr);  // suction
     double dFx = Vt > 0.0 ? suction_eff * kTwoPi * alpha_s * alpha_s * qcdy : 0.0;  // dTs
-    dFx += kTwoPi * alpha0 * alpha_t * qcdy;                                   // - dDcamber
+    dFx += kTwoPi * alpha0 * (angle_b - alpha0) * qcdy;                        // - dDcamber
     dFx = std::sqrt(f) * dFx - f * (k_friction[j] * Vt * std::abs(Vt));
     // Couples (M17 with q_ref; V_r in the apparent-mass couple), blended.
     const double couple =
-        f * (cm_ac * qcdy * chord[j] - k_couple1[j] * Vr * thd - k_couple2[j] * thdd_a[j]);
+        f * (cm_ac * qrcdy * chord[j] - k_couple1[j] * Vr * thd - k_couple2[j] * thdd_a[j]);
     // 6.3: F = dN n + dFx e_c; moment about P along a_pitch.
     const double dN = dN4 + dN2;
     Fx[j] = dN * nx[j] + dFx * ecx[j];

@@ -44,14 +44,19 @@ TEST(DynamicsFlexibleTethered, RunsToAPeriodicStateAndDiffersFromTheRigidWing) {
 
 TEST(DynamicsFlexibleTethered, StiffWingApproachesTheRigidWing) {
   // Members and skin 1000 times stiffer: deflections shrink 1000-fold and the loads converge
-  // to the rigid wing's (same mass, same aerodynamics).
+  // to the rigid wing's (same mass, same aerodynamics). Mean FH is a small net of thrust and drag
+  // (0.007 N of 0.5 N components), so its tolerance adds the runs' own convergence, the
+  // steady-state tolerance of the cycle means (steady_tol q S).
   VehicleModel stiff = efw(StructureLevel::kFlexible);
   for (Material& m : stiff.materials) m.youngs_modulus_pa *= 1000.0;
   const SimulationSummary flex = run(stiff);
   const SimulationSummary rigid = run(efw(StructureLevel::kRigid));
   ASSERT_EQ(flex.status, SimulationStatus::kOk) << flex.message;
   EXPECT_NEAR(flex.mean.FV_N, rigid.mean.FV_N, 0.02 * std::abs(rigid.mean.FV_N));
-  EXPECT_NEAR(flex.mean.FH_N, rigid.mean.FH_N, 0.02 * std::abs(rigid.mean.FH_N));
+  const double q_S = 0.5 * stiff.air.density_kgpm3 * stiff.operating_point.speed_mps *
+                     stiff.operating_point.speed_mps * FlightCoreModel(stiff).wing_area_both_m2;
+  EXPECT_NEAR(flex.mean.FH_N, rigid.mean.FH_N,
+              0.02 * std::abs(rigid.mean.FH_N) + SimulationOptions{}.steady_tol * q_S);
   EXPECT_NEAR(flex.mean.power_aero_W, rigid.mean.power_aero_W, 0.02 * rigid.mean.power_aero_W);
 }
 
