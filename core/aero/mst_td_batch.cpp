@@ -49,6 +49,20 @@ inline double atan2Poly(double y, double x) {
   r = x < 0.0 ? kPi - r : r;
   return y < 0.0 ? -r : r;
 }
+// sin and cos of |x| <= 2 (the lagged 3/4-chord angle is clipped to +-pi/2, plus alpha0) without
+// a call, so the strip loop still vectorises: the Taylor series to x^23 / x^22 (remainders below
+// 2^25/25! = 2e-18). Outside that range (never reached) the error grows.
+inline void sinCosPoly(double x, double* s, double* c) {
+  const double x2 = x * x;
+  *s = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (
+           -1.0 / 39916800 + x2 * (1.0 / 6227020800.0 + x2 * (-1.0 / 1307674368000.0 + x2 * (
+           1.0 / 355687428096000.0 + x2 * (-1.0 / 121645100408832000.0 + x2 * (
+           1.0 / 51090942171709440000.0 + x2 * (-1.0 / 25852016738884976640000.0))))))))))));
+  *c = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (
+           -1.0 / 3628800 + x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0 + x2 * (
+           1.0 / 20922789888000.0 + x2 * (-1.0 / 6402373705728000.0 + x2 * (
+           1.0 / 2432902008176640000.0 + x2 * (-1.0 / 1124000727777607680000.0)))))))))));
+}
 }  // namespace
 
 ArrayXd& atan2Array(const ArrayXd& y, const ArrayXd& x, ArrayXd& out) {
@@ -167,7 +181,8 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
     const double alpha_t = J * (alpha_E + alpha0) - alpha0;  // alpha'_t
     // Bounded attached flow (boundedAttachedFlow, mst_strip.hpp): J sin(alpha_E + alpha0) and
     // the speed ratio V_K / V_r = sqrt(cos^2 + (J sin)^2) of DeLaurier's dynamic pressure.
-    const double sE = std::sin(alpha_E + alpha0), cE = std::cos(alpha_E + alpha0);
+    double sE, cE;
+    sinCosPoly(alpha_E + alpha0, &sE, &cE);
     const double angle_b = J * sE;
     speed_ratio_a[j] = std::sqrt(cE * cE + angle_b * angle_b);
     angle_b_a[j] = angle_b;
