@@ -23,6 +23,7 @@ constexpr Entry kEntries[] = {
     {CalibrationParameter::kHingeZ, "kinematics.hinge_z_m"},
     {CalibrationParameter::kTailArm, "tail.arm_m"},
     {CalibrationParameter::kPitchInertia, "body.pitch_inertia_kgm2"},
+    {CalibrationParameter::kP3Position, "wing.p3_aft_of_le_m"},
 };
 
 struct CalibrationContext {
@@ -128,6 +129,7 @@ double valueOf(const VehicleModel& v, CalibrationParameter p) {
     case CalibrationParameter::kHingeZ: return v.flapping.hinge_z_B_m;
     case CalibrationParameter::kTailArm: return v.tail.arm_m;
     case CalibrationParameter::kPitchInertia: return v.body.pitch_inertia_kgm2;
+    case CalibrationParameter::kP3Position: return v.wing.p3_aft_of_le_m;
   }
   return 0.0;
 }
@@ -140,6 +142,7 @@ void setValue(VehicleModel* v, CalibrationParameter p, double value) {
     case CalibrationParameter::kHingeZ: v->flapping.hinge_z_B_m = value; break;
     case CalibrationParameter::kTailArm: v->tail.arm_m = value; break;
     case CalibrationParameter::kPitchInertia: v->body.pitch_inertia_kgm2 = value; break;
+    case CalibrationParameter::kP3Position: v->wing.p3_aft_of_le_m = value; break;
   }
 }
 

@@ -16,6 +16,7 @@ enum class CalibrationParameter {
   kHingeZ,               ///< kinematics.hinge_z_m
   kTailArm,              ///< tail.arm_m
   kPitchInertia,         ///< body.pitch_inertia_kgm2
+  kP3Position,           ///< wing.p3_aft_of_le_m (the universal joint on the root chord)
 };
 /// The vehicle-file key ("wing.member_diameter_scale", ...).
 const char* keyOf(CalibrationParameter p);

@@ -149,6 +149,8 @@ std::string structuralKey(const VehicleModel& v) {
   appendDouble(&k, w.member_diameter_scale);
   appendBytes(&k, &w.fe.mode_count, sizeof w.fe.mode_count);
   k.push_back(w.fe.p3_cross_axis_normal ? 'n' : 's');
+  k.push_back(static_cast<char>('0' + static_cast<int>(w.fe.p3_joint)));
+  k.push_back(w.fe.root_edge_pinned ? 'r' : '-');
   k += w.skin.material + '\0';
   for (const WingMember& m : w.members) {
     k += m.name + '\0' + m.material + '\0';
@@ -176,8 +178,7 @@ std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& 
   opts.selection.max_modes = vehicle.wing.fe.mode_count;
   opts.selection.cutoff_hz = vehicle.wing.fe.cutoff_hz;
   opts.damping_ratio = vehicle.wing.fe.damping_ratio;
-  opts.p3_cross_axis = vehicle.wing.fe.p3_cross_axis_normal ? structure::UniversalJointCrossAxis::kZW
-                                                            : structure::UniversalJointCrossAxis::kYW;
+  opts.support = structure::WingSupport::of(vehicle.wing.fe);
   auto built = std::make_shared<const structure::ModalWing>(
       structure::buildModalWing(vehicle, mesh, opts));
   g_builds.fetch_add(1);

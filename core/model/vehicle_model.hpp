@@ -49,6 +49,16 @@ struct WingSkin {
 enum class Planform { kRectangular, kQuarterEllipse };
 enum class StructureLevel { kRigid, kFlexible };
 
+/// The joint that attaches the wing at P3 to the fuselage (structure.md 2.1; issue 13 item 1).
+/// Translations are always held; the rotations held at P3 in the wing frame W are:
+enum class P3Joint {
+  kUniversal,  ///< the rotation about the cross axis n_u (p3_cross_axis_normal): the paper's
+               ///< "universal joint"; the stiffener roots pivot about the other in-plane axis
+  kSpherical,  ///< none (a ball joint)
+  kRevoluteX,  ///< about y_W and z_W: a pin along the flapping axis x_W only
+  kClamped,    ///< all three: the stiffener roots bonded to a root block that flaps with W
+};
+
 /// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6).
 struct WingFeSettings {
   double element_size_m = 0.005;  ///< target element edge h, (0, semispan]
@@ -56,6 +66,11 @@ struct WingFeSettings {
   double cutoff_hz = 0.0;         ///< keep only modes below this frequency; 0 = no cut-off
   double damping_ratio = 0.015;   ///< modal damping zeta of every mode, [0, 1)
   bool p3_cross_axis_normal = true;  ///< universal-joint cross axis n_u = z_W (true) or y_W
+  P3Joint p3_joint = P3Joint::kUniversal;  ///< the joint at P3
+  /// Every node of the root chord (y_W = 0: the skin's root edge, on the flapping axis) held in
+  /// translation, as a membrane taped to the fuselage along the hinge line; false = the wing is
+  /// attached at P2 and P3 only (the paper).
+  bool root_edge_pinned = false;
 };
 
 /// Geometry and structure of the right wing; the left wing is its mirror image.
@@ -148,6 +163,15 @@ struct VehicleModel {
   TailModel tail;
   OperatingPoint operating_point;
   std::vector<Material> materials;
+
+  /// The main wing alone, as the paper's Fig. 5 and its load cells see it: the same vehicle
+  /// without the tail and without fuselage parasite drag (mass properties unchanged).
+  VehicleModel mainWingAlone() const {
+    VehicleModel v = *this;
+    v.tail.present = false;
+    v.body.drag_area_m2 = 0.0;
+    return v;
+  }
 
   /// The material of that name, or nullptr.
   const Material* findMaterial(const std::string& material_name) const {

@@ -1,6 +1,8 @@
 // CalculiX deck writer (structure.md 6.2). See calculix_deck.hpp for units and element choices.
 #include "core/structure/calculix_deck.hpp"
 
+#include "core/structure/fe_assembly.hpp"
+
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -268,13 +270,25 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
         << "0., 0., 1.\n";
   }
 
-  // Joints (structure.md 2.1): P2 clamped; P3 universal joint = translations plus the rotation
-  // about the cross axis n_u (z_W: DOF 6, y_W: DOF 5).
+  // Joints (structure.md 2.1): P2 clamped; P3 translations plus the rotations its joint holds
+  // (the universal joint: about the cross axis n_u, z_W: DOF 6, y_W: DOF 5), the same DOFs as
+  // wingBoundaryDofs; with a pinned root edge every node on y_W = 0, midside nodes included.
+  if (options.root_edge_pinned) {
+    out << "*NSET, NSET=ROOT\n";
+    const auto& x = nodes.positions();
+    for (int i = 0; i < node_count; ++i)
+      if (x[static_cast<std::size_t>(i)].y() == 0.0) out << i + 1 << "\n";
+  }
   out << "*BOUNDARY\n" << "P2, 1, 6\n";
   if (mesh.p3_node >= 0) {
-    const int r = options.p3_cross_axis_normal ? 6 : 5;
-    out << "P3, 1, 3\n" << "P3, " << r << ", " << r << "\n";
+    WingSupport support;
+    support.p3_joint = options.p3_joint;
+    support.p3_cross_axis = options.p3_cross_axis_normal ? UniversalJointCrossAxis::kZW
+                                                         : UniversalJointCrossAxis::kYW;
+    out << "P3, 1, 3\n";
+    for (int d : p3HeldRotations(support)) out << "P3, " << d + 1 << ", " << d + 1 << "\n";
   }
+  if (options.root_edge_pinned) out << "ROOT, 1, 3\n";
   out << "*STEP\n*FREQUENCY\n" << options.mode_count << "\n";
   if (options.node_file) out << "*NODE FILE\nU\n";
   out << "*END STEP\n";

@@ -34,6 +34,8 @@ enum class CalculixBeamElement {
 struct CalculixDeckOptions {
   int mode_count = 12;  ///< eigenvalues of the *FREQUENCY step, [1, 10000]
   bool p3_cross_axis_normal = true;  ///< P3 rotation fixed about z_W (true, DOF 6) or y_W (DOF 5)
+  P3Joint p3_joint = P3Joint::kUniversal;  ///< the rotations held at P3 (WingSupport)
+  bool root_edge_pinned = false;  ///< every root-chord node (midside nodes too) held in translation
   CalculixSkinElement skin = CalculixSkinElement::kS6;
   CalculixBeamElement beam = CalculixBeamElement::kB32R;
   bool node_file = true;  ///< *NODE FILE U: mode shapes in JOB.frd (for cgx)

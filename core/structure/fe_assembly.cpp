@@ -107,7 +107,34 @@ std::vector<bool> dofActivityMask(const WingMesh& mesh) {
   return active;
 }
 
-std::vector<int> wingBoundaryDofs(const WingMesh& mesh, UniversalJointCrossAxis cross_axis) {
+WingSupport WingSupport::of(const WingFeSettings& fe) {
+  WingSupport s;
+  s.p3_joint = fe.p3_joint;
+  s.p3_cross_axis =
+      fe.p3_cross_axis_normal ? UniversalJointCrossAxis::kZW : UniversalJointCrossAxis::kYW;
+  s.root_edge_pinned = fe.root_edge_pinned;
+  return s;
+}
+
+std::vector<int> p3HeldRotations(const WingSupport& support) {
+  switch (support.p3_joint) {
+    case P3Joint::kUniversal:
+      return {support.p3_cross_axis == UniversalJointCrossAxis::kZW ? kThetaZ : kThetaY};
+    case P3Joint::kSpherical: return {};
+    case P3Joint::kRevoluteX: return {kThetaY, kThetaZ};
+    case P3Joint::kClamped: return {kThetaX, kThetaY, kThetaZ};
+  }
+  return {};
+}
+
+std::vector<int> rootChordNodes(const WingMesh& mesh) {
+  std::vector<int> nodes;
+  for (int p = 0; p < mesh.nodeCount(); ++p)
+    if (mesh.nodes_W_m[static_cast<std::size_t>(p)].y() == 0.0) nodes.push_back(p);
+  return nodes;
+}
+
+std::vector<int> wingBoundaryDofs(const WingMesh& mesh, const WingSupport& support) {
   std::vector<int> dofs;
   if (mesh.p2_node >= 0) {
     checkNode(mesh.p2_node, mesh.nodeCount());
@@ -116,10 +143,13 @@ std::vector<int> wingBoundaryDofs(const WingMesh& mesh, UniversalJointCrossAxis 
   if (mesh.p3_node >= 0 && mesh.p3_node != mesh.p2_node) {
     checkNode(mesh.p3_node, mesh.nodeCount());
     for (int d : {kU, kV, kW}) dofs.push_back(globalDof(mesh.p3_node, d));
-    dofs.push_back(globalDof(mesh.p3_node,
-                             cross_axis == UniversalJointCrossAxis::kZW ? kThetaZ : kThetaY));
+    for (int d : p3HeldRotations(support)) dofs.push_back(globalDof(mesh.p3_node, d));
   }
+  if (support.root_edge_pinned)
+    for (int p : rootChordNodes(mesh))
+      for (int d : {kU, kV, kW}) dofs.push_back(globalDof(p, d));
   std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
   return dofs;
 }
 

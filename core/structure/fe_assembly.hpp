@@ -46,10 +46,26 @@ enum class UniversalJointCrossAxis {
   kYW,  ///< alternative: rotation about y_W (theta_y at P3) constrained
 };
 
+/// How the wing is held besides the clamped hinge node P2 (structure.md 2.1).
+struct WingSupport {
+  P3Joint p3_joint = P3Joint::kUniversal;
+  UniversalJointCrossAxis p3_cross_axis = UniversalJointCrossAxis::kZW;  ///< universal joint only
+  bool root_edge_pinned = false;  ///< every root-chord node (y_W = 0) held in translation
+  /// The support a vehicle's wing.fe settings describe.
+  static WingSupport of(const WingFeSettings& fe);
+};
+
 /// Boundary DOFs of the fixed-interface problem, ascending global ids: P2 all six, P3 u, v, w and
-/// the rotation about n_u (structure.md 2.1). A node index < 0 is skipped (test meshes).
-std::vector<int> wingBoundaryDofs(
-    const WingMesh& mesh, UniversalJointCrossAxis cross_axis = UniversalJointCrossAxis::kZW);
+/// the rotations its joint holds (structure.md 2.1; the universal joint: the one about n_u), and
+/// with root_edge_pinned u, v, w of every node on y_W = 0. A node index < 0 is skipped (test
+/// meshes).
+std::vector<int> wingBoundaryDofs(const WingMesh& mesh, const WingSupport& support = {});
+
+/// The rotation DOFs (kThetaX, kThetaY, kThetaZ) the joint at P3 holds.
+std::vector<int> p3HeldRotations(const WingSupport& support);
+
+/// Mesh nodes on the root chord (y_W = 0), ascending.
+std::vector<int> rootChordNodes(const WingMesh& mesh);
 
 /// Lumped nodal mass: translational mass per node (kg) and the rotational 3 x 3 block per node
 /// (kg m^2, W components), identical to the lumped assembled M (which is block diagonal).

@@ -81,7 +81,7 @@ ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
   fe_options.mass = options.mass;
   const WingFeModel fe = assembleWingFe(vehicle, mesh, fe_options);
   const DofPartition part = makeDofPartition(
-      fe.active, wingBoundaryDofs(mesh, options.p3_cross_axis), options.free_boundary_dofs);
+      fe.active, wingBoundaryDofs(mesh, options.support), options.free_boundary_dofs);
   if (part.interior.empty()) throw std::invalid_argument("buildModalWing: no interior DOF");
 
   const Basis basis = part.boundary_free.empty() ? fixedInterfaceBasis(fe, part, options)

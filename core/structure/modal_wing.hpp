@@ -23,7 +23,7 @@ enum class ModalDampingSchedule {
 
 struct ModalWingOptions {
   MassLumping mass = MassLumping::kConsistent;  ///< M used for modes and invariants
-  UniversalJointCrossAxis p3_cross_axis = UniversalJointCrossAxis::kZW;  ///< structure.md 2.1
+  WingSupport support;  ///< P3 joint and root edge (structure.md 2.1)
   /// Boundary DOFs (global ids 6 node + dof) left free (b_f) and reduced by Craig-Bampton with
   /// orthonormalisation; empty = the default fixed-interface basis (structure.md 2.4).
   std::vector<int> free_boundary_dofs;

@@ -113,7 +113,8 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
 
   // Built once, before the threads start (the flexible wing's modes come through the cache), and
   // shared read-only by every point.
-  const FlightCoreModel model(study.vehicle);
+  const FlightCoreModel model(study.aeromap.wing_only ? study.vehicle.mainWingAlone()
+                                                      : study.vehicle);
   const std::string resolved = resolvedStudyToml(study);
   const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
 

@@ -26,6 +26,16 @@ namespace orni::studies {
 
 namespace {
 
+const char* p3JointName(P3Joint j) {
+  switch (j) {
+    case P3Joint::kUniversal: return "universal";
+    case P3Joint::kSpherical: return "spherical";
+    case P3Joint::kRevoluteX: return "revolute_x";
+    case P3Joint::kClamped: return "clamped";
+  }
+  return "universal";
+}
+
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
@@ -321,8 +331,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   const double mesh_s = seconds(t0);
 
   structure::ModalWingOptions options;
-  options.p3_cross_axis = fe.p3_cross_axis_normal ? structure::UniversalJointCrossAxis::kZW
-                                                  : structure::UniversalJointCrossAxis::kYW;
+  options.support = structure::WingSupport::of(fe);
   options.selection.max_modes = fe.mode_count;
   options.selection.cutoff_hz = fe.cutoff_hz;
   options.damping_ratio = fe.damping_ratio;
@@ -337,6 +346,8 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
     structure::CalculixDeckOptions deck_options;
     deck_options.mode_count = fe.mode_count;
     deck_options.p3_cross_axis_normal = fe.p3_cross_axis_normal;
+    deck_options.p3_joint = fe.p3_joint;
+    deck_options.root_edge_pinned = fe.root_edge_pinned;
     deck_options.heading = "Ornithopter wing " + vehicle.name + " (" + study.name +
                            "), fixed-interface modes";
     writeFileAtomic(export_ccx_path, structure::calculixDeck(vehicle, mesh, deck_options));
@@ -401,6 +412,8 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
                            .set("cutoff_hz", fe.cutoff_hz)
                            .set("damping_ratio", fe.damping_ratio)
                            .set("p3_cross_axis", fe.p3_cross_axis_normal ? "normal" : "span")
+                           .set("p3_joint", p3JointName(fe.p3_joint))
+                           .set("root_edge", fe.root_edge_pinned ? "pinned" : "free")
                            .set("mass_matrix", "consistent"))
       .set("selection", JsonObject()
                             .set("cutoff_reached", wing.selection.cutoff_reached)

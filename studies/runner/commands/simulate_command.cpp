@@ -138,7 +138,7 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
 
   if (study.simulate.mode == FlightMode::kFree) return runFreeFlightStudy(study, out_dir);
 
-  const FlightCoreModel model(study.vehicle);
+  const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle);
   TimeHistory history;
   SimulationOptions opts = study.simulate;
   opts.record_history = true;
@@ -174,6 +174,7 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
       .set("freq_hz", study.point.freq_hz)
       .set("theta_deg", study.point.theta_rad * kRadToDeg)
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
+      .set("wing_only", study.wing_only)
       .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
                                                                            : "delaurier1993")
       .set("structure", model.flexible ? "flexible" : "rigid")

@@ -153,6 +153,7 @@ void readAeromap(TableReader& am, Study& study) {
                           "a larger grid");
     points *= axis->values.size();
   }
+  a.wing_only = am.optionalBool("wing_only", a.wing_only);
   SimulationOptions& o = a.options;
   o.cycles = am.optionalInt("cycles", o.cycles, kIntMin, kIntMax);
   readTolerances(am, o);
@@ -306,7 +307,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
   if (std::optional<TableReader> sim = top.optionalTable(
           "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
                        "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol",
-                       "samples_per_cycle", "history_every", "free"})) {
+                       "samples_per_cycle", "history_every", "wing_only", "free"})) {
     SimulationOptions& o = study.simulate;
     OperatingPoint& p = study.point;
     constexpr int kIntMin = std::numeric_limits<int>::min();
@@ -329,6 +330,10 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
     o.samples_per_cycle =
         sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
     study.history_every = sim->optionalInt("history_every", study.history_every, 1, 1000000);
+    study.wing_only = sim->optionalBool("wing_only", study.wing_only);
+    if (study.wing_only && o.mode == FlightMode::kFree)
+      throw sim->valueError("wing_only", "false in free flight (the main wing alone cannot fly)",
+                            "true");
     std::string why;
     if (!o.IsValid(&why)) throwInvalidOptions(*sim, why);
     sim->finish();
@@ -341,8 +346,8 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
                                      std::string(toString(study.kind)) + "\"");
   if (study.kind == StudyKind::kAeromap) {
     TableReader am = top.requiredTable(
-        "aeromap", {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles", "rel_tol",
-                    "abs_tol", "separation_abs_tol", "steady_tol"});
+        "aeromap", {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "wing_only", "cycles",
+                    "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol"});
     readAeromap(am, study);
   }
 
@@ -460,6 +465,8 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     out.number("steady_tol", o.steady_tol);
     out.integer("samples_per_cycle", o.samples_per_cycle);
     out.integer("history_every", study.history_every);
+    if (o.mode == FlightMode::kTethered)
+      out.boolean("wing_only", study.wing_only, "true = the main wing alone (no tail, no body drag)");
     if (o.mode == FlightMode::kFree) {
       const FreeFlightOptions& f = o.free;
       out.header({"simulate", "free"});
@@ -481,6 +488,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     writeGridAxis(out, "freq_hz", a.freq_hz);
     writeGridAxis(out, "theta_deg", a.theta_deg);
     writeGridAxis(out, "tail_angle_deg", a.tail_angle_deg);
+    out.boolean("wing_only", a.wing_only, "true = the main wing alone (paper Fig. 5)");
     out.integer("cycles", a.options.cycles, "the maximum per point (each stops when steady)");
     out.number("rel_tol", a.options.rel_tol);
     out.number("abs_tol", a.options.abs_tol);

@@ -114,6 +114,9 @@ struct GridAxis {
 /// The [aeromap] section (kind "aeromap").
 struct AeromapSettings {
   GridAxis speed_mps, freq_hz, theta_deg, tail_angle_deg;
+  /// The main wing alone (VehicleModel::mainWingAlone: no tail, no fuselage drag), the quantity
+  /// of paper Fig. 5; false = the whole vehicle (wings, tail at the tail angle, fuselage drag).
+  bool wing_only = false;
   /// Per-point options; cycles is the maximum (default 40), stop_when_steady is always on.
   orni::SimulationOptions options = orni::trim::AeroMapOptions::defaultSimulation();
 };
@@ -157,6 +160,7 @@ struct Study {
   orni::VehicleModel vehicle;          ///< resolved, overrides applied, SI
   orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
+  bool wing_only = false;              ///< [simulate] wing_only (tethered): the main wing alone
   int history_every = 1;               ///< [simulate] history_every: histories.csv keeps every
                                        ///< n-th sample (output only; the analysis uses all)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)

@@ -28,6 +28,14 @@ const std::vector<std::pair<std::string, CirculationLag>> kLags = {
     {"scherer", CirculationLag::kScherer1}, {"jones", CirculationLag::kJones2}};
 /// Cross axis n_u of the universal joint at P3 (structure.md 2.1): the wing normal z_W or y_W.
 const std::vector<std::pair<std::string, bool>> kCrossAxes = {{"normal", true}, {"span", false}};
+/// The joint at P3 (structure.md 2.1, WingFeSettings::p3_joint).
+const std::vector<std::pair<std::string, P3Joint>> kP3Joints = {
+    {"universal", P3Joint::kUniversal},
+    {"spherical", P3Joint::kSpherical},
+    {"revolute_x", P3Joint::kRevoluteX},
+    {"clamped", P3Joint::kClamped}};
+/// The root chord's support: free (attached at P2 and P3 only) or pinned along y_W = 0.
+const std::vector<std::pair<std::string, bool>> kRootEdges = {{"free", false}, {"pinned", true}};
 /// Largest number of fixed-interface modes a vehicle may ask for.
 constexpr int kMaxModes = 200;
 
@@ -163,7 +171,8 @@ void readWing(TableReader& top, VehicleModel& v) {
 
   // [wing.fe]: finite-element and modal settings, every key optional (structure.md 1.6, 2.5, 2.6).
   if (std::optional<TableReader> fe = w.optionalTable(
-          "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis"})) {
+          "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis",
+                 "p3_joint", "root_edge"})) {
     WingFeSettings& f = wing.fe;
     f.element_size_m = fe->optionalDouble("element_size_m", f.element_size_m,
                                           Range::openClosed(0.0, wing.semispan_m));
@@ -173,6 +182,8 @@ void readWing(TableReader& top, VehicleModel& v) {
         fe->optionalDouble("damping_ratio", f.damping_ratio, Range::closedOpen(0.0, 1.0));
     f.p3_cross_axis_normal =
         fe->optionalEnum("p3_cross_axis", f.p3_cross_axis_normal, kCrossAxes);
+    f.p3_joint = fe->optionalEnum("p3_joint", f.p3_joint, kP3Joints);
+    f.root_edge_pinned = fe->optionalEnum("root_edge", f.root_edge_pinned, kRootEdges);
     fe->finish();
   } else if (!(wing.fe.element_size_m <= wing.semispan_m)) {
     // Default h = min(5 mm, s), so that a (tiny) wing without [wing.fe] still writes a resolved
@@ -350,6 +361,8 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
   out.number("cutoff_hz", w.fe.cutoff_hz, w.fe.cutoff_hz > 0.0 ? "" : "0 = no cut-off");
   out.number("damping_ratio", w.fe.damping_ratio);
   out.string("p3_cross_axis", nameOf(kCrossAxes, w.fe.p3_cross_axis_normal));
+  out.string("p3_joint", nameOf(kP3Joints, w.fe.p3_joint));
+  out.string("root_edge", nameOf(kRootEdges, w.fe.root_edge_pinned));
 
   for (const Material& m : v.materials) {
     out.header(path({"materials", m.name}));

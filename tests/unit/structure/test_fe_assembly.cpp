@@ -101,7 +101,7 @@ TEST(StructureFeAssembly, BoundaryDofsOfP2AndP3) {
   for (int d : {kU, kV, kW, kThetaZ}) expected.push_back(globalDof(p3, d));
   std::sort(expected.begin(), expected.end());
   EXPECT_EQ(wingBoundaryDofs(w.mesh), expected);
-  const std::vector<int> alt = wingBoundaryDofs(w.mesh, UniversalJointCrossAxis::kYW);
+  const std::vector<int> alt = wingBoundaryDofs(w.mesh, WingSupport{P3Joint::kUniversal, UniversalJointCrossAxis::kYW, false});
   EXPECT_NE(std::find(alt.begin(), alt.end(), globalDof(p3, kThetaY)), alt.end());
   EXPECT_EQ(std::find(alt.begin(), alt.end(), globalDof(p3, kThetaZ)), alt.end());
 
