@@ -25,16 +25,17 @@
 # and on a perturbation below tolerance, and fail on one above it, on an injected NaN and on a
 # missing file.
 #
-# Which studies: every paper study but the optimisation (measured on the 2-core machine, -j 2:
-# together ~40 s: calibrate_magpie ~20 s, the sweep ~10 s, the rest a few s); optimize_magpie
-# (~2 minutes) is left to results/regenerate.sh.
+# Which studies: every paper study but the optimisation and the sensitivity study (measured on
+# the 2-core machine, -j 2: together ~50 s: the two sweeps ~15 s each, the rest a few s);
+# optimize_magpie and sensitivity_magpie (minutes) are left to results/regenerate.sh.
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
 root=$(cd "$root" && pwd)
 rm -rf "$scratch"; mkdir -p "$scratch"
 tool=${ORNI_RESULTS:-$(dirname "$bin")/../tools/orni_results}
-fast=(fig2_rfw_theta0 fig2_rfw_theta20 fig5_efw_aeromap table3_trim fig6_8_free_flight
-      fig9_constrained_flight_test calibrate_magpie sweep_tail_arm_area)
+fast=(fig2_rfw_theta0 fig2_rfw_theta20 fig2_rfw_flexible_theta0 fig2_rfw_flexible_theta20
+      fig5_efw_aeromap fig5_efw_aeromap_wing_only table3_trim fig6_8_free_flight
+      fig9_constrained_flight_test placement_sweep_magpie sweep_tail_arm_area)
 rel=1e-2
 abs_scale=2e-3
 # check, json, awk_true and fail=0

@@ -135,7 +135,8 @@ std::string phaseFigure(const Study& study, double t_from) {
 
 }  // namespace
 
-int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir) {
+int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
+                       const JsonObject* trim_point) {
   const auto t0 = std::chrono::steady_clock::now();
   const FlightCoreModel model(study.vehicle);
   FreeFlightHistory history;
@@ -162,6 +163,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir)
                        .set("M_Nm", s.mean.M_Nm)
                        .set("power_W", s.mean.power_aero_W))
       .set("bounded", s.analysed && s.verdict.bounded);
+  if (trim_point) summary.set("trim_point", *trim_point);
   if (s.analysed) {
     const LimitCycleMetrics& m = s.limit_cycle;
     summary.set("norm_ratio_max", s.verdict.norm_ratio_max)

@@ -7,11 +7,15 @@
 #include <filesystem>
 
 #include "studies/runner/config/study_file.hpp"
+#include "studies/runner/output/json_writer.hpp"
 
 namespace orni::studies {
 
 /// Exit code 0 whenever the run finished, bounded, not bounded or diverged (the verdict is in
 /// summary.json); 1 when the simulation itself failed.
-int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir);
+/// `trim_point` (may be null): the "trim_point" object of summary.json when the study flies at its
+/// trim ([simulate] at_trim).
+int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
+                       const JsonObject* trim_point = nullptr);
 
 }  // namespace orni::studies

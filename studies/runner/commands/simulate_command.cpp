@@ -10,6 +10,7 @@
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
+#include "trim/trim_solver.hpp"
 #include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/commands/free_flight_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
@@ -21,6 +22,33 @@
 namespace orni::studies {
 
 namespace {
+
+struct SimulationTrim {
+  bool converged = false;
+  OperatingPoint point;
+  std::string message;
+  JsonObject json;  ///< summary.json's "trim_point"
+};
+
+// The trim a simulation flies at ([simulate] at_trim): Eq. (4) refined in free flight at the
+// study's frequency, from the study's point as the initial guess (trim/trim_solver.hpp).
+SimulationTrim trimForSimulation(const Study& study) {
+  TrimOptions options = defaultTrimOptions(study.vehicle);
+  options.initial = study.point;
+  options.verify_free_flight = false;  // the simulation is the check
+  const TrimSummary t = solveTrim(FlightCoreModel(study.vehicle), options);
+  SimulationTrim out;
+  out.converged = t.converged;
+  out.point = t.solution;
+  out.message = t.message;
+  out.json.set("converged", t.converged)
+      .set("freq_hz", t.solution.freq_hz)
+      .set("theta_mean_deg", t.solution.theta_rad * kRadToDeg)
+      .set("speed_mps", t.solution.speed_mps)
+      .set("tail_angle_deg", t.solution.tail_angle_rad * kRadToDeg)
+      .set("message", t.message);
+  return out;
+}
 
 template <typename Getter>
 std::vector<double> column(const TimeHistory& h, Getter get) {
@@ -131,12 +159,36 @@ double halfRange(const double* x, std::size_t n, std::size_t stride) {
 
 }  // namespace
 
-int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
+int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   const auto t0 = std::chrono::steady_clock::now();
   JsonObject summary;
   summary.set("kind", "simulate");
 
-  if (study.simulate.mode == FlightMode::kFree) return runFreeFlightStudy(study, out_dir);
+  // [simulate] at_trim: solve the trim first; a vehicle that does not trim is a reported outcome.
+  Study study = given;
+  JsonObject trim_point;
+  if (study.at_trim) {
+    const SimulationTrim t = trimForSimulation(study);
+    trim_point = t.json;
+    if (!t.converged) {
+      summary.set("status", "not_converged")
+          .set("message", "no trim at " + formatShortest(study.point.freq_hz) +
+                              " Hz to fly at: " + t.message)
+          .set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
+                                  .count())
+          .set("version", versionString())
+          .set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered")
+          .set("trim_point", trim_point);
+      writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+      writeFileAtomic(out_dir / "summary.json", summary.toString());
+      std::cout << study.name << ": not_converged: no trim to fly at: " << t.message << "\n";
+      return 0;
+    }
+    study.point = t.point;
+  }
+
+  if (study.simulate.mode == FlightMode::kFree)
+    return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr);
 
   const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle);
   TimeHistory history;
@@ -174,7 +226,9 @@ int runSimulateStudy(const Study& study, const std::filesystem::path& out_dir) {
       .set("freq_hz", study.point.freq_hz)
       .set("theta_deg", study.point.theta_rad * kRadToDeg)
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
-      .set("wing_only", study.wing_only)
+      .set("wing_only", study.wing_only);
+  if (study.at_trim) summary.set("trim_point", trim_point);
+  summary
       .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
                                                                            : "delaurier1993")
       .set("structure", model.flexible ? "flexible" : "rigid")

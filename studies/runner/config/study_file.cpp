@@ -307,7 +307,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
   if (std::optional<TableReader> sim = top.optionalTable(
           "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
                        "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol",
-                       "samples_per_cycle", "history_every", "wing_only", "free"})) {
+                       "samples_per_cycle", "history_every", "wing_only", "at_trim", "free"})) {
     SimulationOptions& o = study.simulate;
     OperatingPoint& p = study.point;
     constexpr int kIntMin = std::numeric_limits<int>::min();
@@ -331,6 +331,10 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
         sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
     study.history_every = sim->optionalInt("history_every", study.history_every, 1, 1000000);
     study.wing_only = sim->optionalBool("wing_only", study.wing_only);
+    study.at_trim = sim->optionalBool("at_trim", study.at_trim);
+    if (study.at_trim && !study.vehicle.body.present)
+      throw sim->valueError("at_trim", "false for a vehicle without [body] (no weight to trim)",
+                            "true");
     if (study.wing_only && o.mode == FlightMode::kFree)
       throw sim->valueError("wing_only", "false in free flight (the main wing alone cannot fly)",
                             "true");
@@ -467,6 +471,8 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     out.integer("history_every", study.history_every);
     if (o.mode == FlightMode::kTethered)
       out.boolean("wing_only", study.wing_only, "true = the main wing alone (no tail, no body drag)");
+    out.boolean("at_trim", study.at_trim,
+                "true = at the trim point at freq_hz (speed, theta, tail: the initial guess)");
     if (o.mode == FlightMode::kFree) {
       const FreeFlightOptions& f = o.free;
       out.header({"simulate", "free"});

@@ -161,6 +161,10 @@ struct Study {
   orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
   orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
   bool wing_only = false;              ///< [simulate] wing_only (tethered): the main wing alone
+  /// [simulate] at_trim: fly at the vehicle's trim point at point.freq_hz (Eq. 4 refined in free
+  /// flight, trim/trim_solver.hpp) instead of the given theta, speed and tail angle, which are
+  /// then the trim's initial guess.
+  bool at_trim = false;
   int history_every = 1;               ///< [simulate] history_every: histories.csv keeps every
                                        ///< n-th sample (output only; the analysis uses all)
   AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
