@@ -264,7 +264,9 @@ TEST(AeroMstTd, AttachedForceAgreesWithDeLaurierAtLargeRelativeAngles) {
     EXPECT_NEAR(td.dN_c4_N, dl.dN_c4_N, kRoundOffRel * std::fabs(dl.dN_c4_N) + kRoundOffAbs);
     EXPECT_NEAR(td.dFx_N, dl.dFx_N * std::cos(eps), kRoundOffRel * std::fabs(dl.dFx_N) + kRoundOffAbs);
     // The criterion: the normal force within 3 % of DeLaurier up to 30 deg (here exact).
-    if (eps_deg > 0.0 && eps_deg <= 30.0) EXPECT_NEAR(td.dN_c4_N / dl.dN_c4_N, 1.0, 0.03);
+    if (eps_deg > 0.0 && eps_deg <= 30.0) {
+      EXPECT_NEAR(td.dN_c4_N / dl.dN_c4_N, 1.0, 0.03);
+    }
   }
 }
 
