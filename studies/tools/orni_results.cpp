@@ -476,8 +476,9 @@ int compareCommand(int argc, char** argv) {
 // (%.2f, %.3g, ...; default %.4g):
 //   j:FILE:KEY             number at KEY (dotted path, arrays as [i]) of the JSON file FILE
 //   c:FILE:COL:AGG         aggregate of a CSV column: min max mean range first last count absmax
-//   cw:FILE:COL:AGG:WCOL=V  the same over the rows where column WCOL equals V (numerically);
-//                          WCOL>=V and WCOL<=V select at least / at most V; join with &
+//   cw:FILE:COL:AGG:WCOL=V  the same over the rows where column WCOL equals V (numerically, or
+//                          as text when V is not a number); WCOL>=V and WCOL<=V select at
+//                          least / at most V; join with &
 //   at:FILE:COL:BYCOL:max|min   COL in the row where BYCOL is largest / smallest
 //   fit:FILE:Y:X1,X2,..:Xk  least-squares coefficient of Xk in Y = a + sum b_i X_i (rows with
 //                          numbers); fit:FILE:Y:X1,..:r2 gives the coefficient of determination
@@ -526,6 +527,8 @@ std::vector<double> columnValues(const Csv& t, const std::string& f, const std::
     int col = -1;
     char op = '=';
     double value = 0.0;
+    bool numeric = true;  ///< false: '=' compares the cell's text with `text`
+    std::string text;
   };
   std::vector<Cond> conds;
   if (!where.empty()) {
@@ -537,13 +540,21 @@ std::vector<double> columnValues(const Csv& t, const std::string& f, const std::
       if (w[eq - 1] == '>' || w[eq - 1] == '<') c.op = w[eq - 1], name_end = eq - 1;
       c.col = t.column(w.substr(0, name_end));
       if (c.col < 0) throw Failure(f + ": no column '" + w.substr(0, name_end) + "'");
-      c.value = std::atof(w.substr(eq + 1).c_str());
+      c.text = w.substr(eq + 1);
+      c.numeric = parseNumber(c.text, &c.value);
+      if (!c.numeric && c.op != '=') throw Failure("bad condition '" + w + "': >= and <= need a number");
       conds.push_back(c);
     }
   }
   auto keep = [&](const std::vector<std::string>& r) {
     for (const Cond& c : conds) {
       double w = 0.0;
+      if (!c.numeric) {
+        if (static_cast<std::size_t>(c.col) >= r.size() ||
+            r[static_cast<std::size_t>(c.col)] != c.text)
+          return false;
+        continue;
+      }
       if (static_cast<std::size_t>(c.col) >= r.size() ||
           !parseNumber(r[static_cast<std::size_t>(c.col)], &w))
         return false;
