@@ -14,7 +14,8 @@ std::string cell(const std::optional<double>& v) {
 }
 
 /// A gnuplot double-quoted string of `s` (a '"' is escaped; "\\n" in `s` is a line break there).
-std::string quoted(const std::string& s) {
+/// Not named `quoted`: argument-dependent lookup would prefer std::quoted for a non-const string.
+std::string gnuplotString(const std::string& s) {
   std::string out = "\"";
   for (const char c : s) {
     if (c == '"') out += '\\';
@@ -147,16 +148,16 @@ std::string tornadoFigure(const Study& study, const std::vector<PredictionRankin
 
   std::ostringstream g;
   // Title lines centred on the canvas (the plot area is shifted right by the long labels).
-  g << "set label 101 " << quoted(study.name + ": " + col.name + " (" + col.label + ")")
+  g << "set label 101 " << gnuplotString(study.name + ": " + col.name + " (" + col.label + ")")
     << " at screen 0.5, 0.975 center noenhanced font ',13'\n";
   g << "set label 102 "
-    << quoted("base vehicle: " + (p.base ? shortNumber(*p.base) + unit : std::string("no value")) +
+    << gnuplotString("base vehicle: " + (p.base ? shortNumber(*p.base) + unit : std::string("no value")) +
               "; bars: the change with the parameter at the low and at the high end of its "
               "range, largest swing on top")
     << " at screen 0.5, 0.945 center noenhanced font ',10'\n";
   g << "set tmargin at screen 0.91\n";
   g << "set xlabel "
-    << quoted("change of " + col.name + " from the base vehicle's value" +
+    << gnuplotString("change of " + col.name + " from the base vehicle's value" +
               (col.unit == "-" ? std::string() : " (" + col.unit + ")"))
     << " noenhanced\n";
   g << "set lmargin at screen 0.40\nset rmargin at screen 0.96\n";
@@ -171,7 +172,7 @@ std::string tornadoFigure(const Study& study, const std::vector<PredictionRankin
                                                         : "high";
       label += std::string("\\nno value at ") + which + ": see sensitivity.csv";
     }
-    g << (r ? ", " : "") << quoted(label) << " " << n - r;
+    g << (r ? ", " : "") << gnuplotString(label) << " " << n - r;
   }
   g << ") noenhanced font ',9'\n";
   g << "set grid noytics\n";
@@ -200,7 +201,7 @@ std::string overviewFigure(const Study& study, const std::vector<PredictionRanki
   const std::string share = "($" + std::to_string(C::kSwingShare) + ")";
   std::ostringstream g;
   g << "set title "
-    << quoted(study.name +
+    << gnuplotString(study.name +
               ": swing of each prediction over each parameter's "
               "range, as a share of that prediction's largest swing (in brackets)\\n"
               "empty: a point without a value; tornado_<prediction> shows the "
@@ -216,11 +217,11 @@ std::string overviewFigure(const Study& study, const std::vector<PredictionRanki
       if (e.swing && (!largest || *e.swing > *largest)) largest = e.swing;
     const std::string scale =
         largest ? shortNumber(*largest) + (col.unit == "-" ? "" : " " + col.unit) : "-";
-    g << (k ? ", " : "") << quoted(col.name + " (" + scale + ")") << " " << k + 1;
+    g << (k ? ", " : "") << gnuplotString(col.name + " (" + scale + ")") << " " << k + 1;
   }
   g << ") rotate by 40 right noenhanced font ',9'\n";
   g << "set ytics (";
-  for (std::size_t i = 0; i < n; ++i) g << (i ? ", " : "") << quoted(params[i].key) << " " << n - i;
+  for (std::size_t i = 0; i < n; ++i) g << (i ? ", " : "") << gnuplotString(params[i].key) << " " << n - i;
   g << ") noenhanced font ',9'\n";
   g << "unset grid\nunset key\n";
   g << "set cbrange [0:1]\nset palette defined (0 '#ffffff', 1 '#c0392b')\n";
