@@ -151,14 +151,15 @@ std::string tornadoFigure(const Study& study, const std::vector<PredictionRankin
   g << "set label 101 " << gnuplotString(study.name + ": " + col.name + " (" + col.label + ")")
     << " at screen 0.5, 0.975 center noenhanced font ',13'\n";
   g << "set label 102 "
-    << gnuplotString("base vehicle: " + (p.base ? shortNumber(*p.base) + unit : std::string("no value")) +
-              "; bars: the change with the parameter at the low and at the high end of its "
-              "range, largest swing on top")
+    << gnuplotString(
+           "base vehicle: " + (p.base ? shortNumber(*p.base) + unit : std::string("no value")) +
+           "; bars: the change with the parameter at the low and at the high end of its "
+           "range, largest swing on top")
     << " at screen 0.5, 0.945 center noenhanced font ',10'\n";
   g << "set tmargin at screen 0.91\n";
   g << "set xlabel "
     << gnuplotString("change of " + col.name + " from the base vehicle's value" +
-              (col.unit == "-" ? std::string() : " (" + col.unit + ")"))
+                     (col.unit == "-" ? std::string() : " (" + col.unit + ")"))
     << " noenhanced\n";
   g << "set lmargin at screen 0.40\nset rmargin at screen 0.96\n";
   g << "set yrange [0.4:" << n + 0.6 << "]\n";
@@ -200,13 +201,16 @@ std::string overviewFigure(const Study& study, const std::vector<PredictionRanki
       "(" + std::to_string(n + 1) + "-$" + std::to_string(C::kParameterIndex) + ")";
   const std::string share = "($" + std::to_string(C::kSwingShare) + ")";
   std::ostringstream g;
-  g << "set title "
-    << gnuplotString(study.name +
-              ": swing of each prediction over each parameter's "
-              "range, as a share of that prediction's largest swing (in brackets)\\n"
-              "empty: a point without a value; tornado_<prediction> shows the "
-              "signed changes")
-    << " noenhanced font ',12'\n";
+  // Title lines centred on the canvas (the plot area is shifted right by the long labels).
+  g << "set label 101 "
+    << gnuplotString(study.name + ": the swing of each prediction over each parameter's range")
+    << " at screen 0.5, 0.975 center noenhanced font ',13'\n";
+  g << "set label 102 "
+    << gnuplotString(
+           "as a share of that prediction's largest swing (in brackets); empty: an end "
+           "without a value (see tornado_<prediction> and sensitivity.csv)")
+    << " at screen 0.5, 0.945 center noenhanced font ',10'\n";
+  g << "set tmargin at screen 0.91\n";
   g << "set lmargin at screen 0.30\nset bmargin at screen 0.22\nset rmargin at screen 0.88\n";
   g << "set xrange [0.5:" << rankings.size() + 0.5 << "]\nset yrange [0.5:" << n + 0.5 << "]\n";
   g << "set xtics (";  // each prediction with its largest swing: the scale of its column
@@ -221,7 +225,8 @@ std::string overviewFigure(const Study& study, const std::vector<PredictionRanki
   }
   g << ") rotate by 40 right noenhanced font ',9'\n";
   g << "set ytics (";
-  for (std::size_t i = 0; i < n; ++i) g << (i ? ", " : "") << gnuplotString(params[i].key) << " " << n - i;
+  for (std::size_t i = 0; i < n; ++i)
+    g << (i ? ", " : "") << gnuplotString(params[i].key) << " " << n - i;
   g << ") noenhanced font ',9'\n";
   g << "unset grid\nunset key\n";
   g << "set cbrange [0:1]\nset palette defined (0 '#ffffff', 1 '#c0392b')\n";
