@@ -52,8 +52,8 @@ done
 check "no journal or temporary file left" bash -c "! ls '$a' | grep -q -e journal -e tmp"
 
 csv="$a/sensitivity.csv"
-check "CSV names row" bash -c "head -1 '$csv' | grep -q '^point,parameter,side,value,value_unit,status,theta_mean_deg,speed_mps,tail_angle_deg,hinge_power_W,pitch_swing_deg,altitude_p2p_m,altitude_p2p_slow_m,norm_ratio_max,CF_V_min,CF_V_max,CF_H_min,CF_H_max,CM_CG_min,CM_CG_max,power_aero_W,bounded,theta_min_deg,theta_max_deg,climb_rate_mps,message$'"
-check "CSV units row" bash -c "sed -n 2p '$csv' | grep -q '^-,-,-,value_unit,-,-,deg,m/s,deg,W,deg,m,m,-,-,-,-,-,-,-,W,-,deg,deg,m/s,-$'"
+check "CSV names row" bash -c "head -1 '$csv' | grep -q '^point,parameter,side,value,value_unit,status,theta_mean_deg,speed_mps,tail_angle_deg,hinge_power_W,pitch_swing_deg,altitude_p2p_m,altitude_p2p_slow_m,norm_ratio_max,CF_V_min,CF_V_max,CF_H_min,CF_H_max,CM_CG_min,CM_CG_max,power_aero_W,hinge_power_eq4_W,bounded,theta_min_deg,theta_max_deg,climb_rate_mps,message$'"
+check "CSV units row" bash -c "sed -n 2p '$csv' | grep -q '^-,-,-,value_unit,-,-,deg,m/s,deg,W,deg,m,m,-,-,-,-,-,-,-,W,W,-,deg,deg,m/s,-$'"
 check "5 rows after the two header rows" test "$(( $(wc -l < "$csv") - 2 ))" -eq 5
 check "row order: base, then each parameter low and high" test \
   "$(tail -n +3 "$csv" | cut -d, -f1-5 | tr '\n' ' ')" = \

@@ -36,6 +36,7 @@ enum Cell : std::size_t {
   kCMMin,
   kCMMax,
   kAeroPower,
+  kHingePowerEq4,
   kBounded,
   kThetaMin,
   kThetaMax,
@@ -81,8 +82,7 @@ SweepPointResult runPoint(const Study& point, const SensitivitySettings& setting
   r.cells[kTheta] = num(at.theta_rad * kRadToDeg);
   r.cells[kSpeed] = num(at.speed_mps);
   r.cells[kTail] = num(at.tail_angle_rad * kRadToDeg);
-  r.cells[kHingePower] = num(s.mean.power_hinge_W);
-  r.cells[kAeroPower] = num(s.mean.power_aero_W);
+  r.cells[kHingePowerEq4] = num(s.mean.power_hinge_W);
 
   // Free flight from the trim point (paper Eq. 5, Figs. 6-8).
   SimulationOptions free_options;
@@ -120,6 +120,8 @@ SweepPointResult runPoint(const Study& point, const SensitivitySettings& setting
     held.point = at;
     const std::optional<ConstrainedFlightTest> cft =
         lastCycleConstrainedFlightTest(held, model, history, tethered_options.samples_per_cycle);
+    r.cells[kHingePower] = num(t.mean.power_hinge_W);
+    r.cells[kAeroPower] = num(t.mean.power_aero_W);
     if (cft) {
       r.cells[kCFVMin] = num(cft->CF_V.min);
       r.cells[kCFVMax] = num(cft->CF_V.max);
@@ -149,7 +151,7 @@ const std::vector<SensitivityColumn>& sensitivityResultColumns() {
       {"theta_mean_deg", "deg", "trim: mean pitch attitude", true},
       {"speed_mps", "m/s", "trim: flight speed", true},
       {"tail_angle_deg", "deg", "trim: tail angle", true},
-      {"hinge_power_W", "W", "trim: flapping (hinge) power", true},
+      {"hinge_power_W", "W", "flapping (hinge) power at the trim point", true},
       {"pitch_swing_deg", "deg", "free flight: pitch swing theta_max - theta_min", true},
       {"altitude_p2p_m", "m", "free flight: altitude peak-to-peak at the flapping frequency", true},
       {"altitude_p2p_slow_m", "m", "free flight: slow altitude oscillation peak-to-peak", true},
@@ -161,6 +163,7 @@ const std::vector<SensitivityColumn>& sensitivityResultColumns() {
       {"CM_CG_min", "-", "constrained flight test: minimum of C_M,CG", true},
       {"CM_CG_max", "-", "constrained flight test: maximum of C_M,CG", true},
       {"power_aero_W", "W", "trim: aerodynamic power", false},
+      {"hinge_power_eq4_W", "W", "trim: hinge power at the Eq. (4) point (stage 1)", false},
       {"bounded", "-", "free flight: bounded (1) or not (0)", false},
       {"theta_min_deg", "deg", "free flight: minimum pitch", false},
       {"theta_max_deg", "deg", "free flight: maximum pitch", false},
@@ -169,7 +172,7 @@ const std::vector<SensitivityColumn>& sensitivityResultColumns() {
 }
 
 SweepPointResult runSensitivityPoint(const Study& point, const SensitivitySettings& settings) {
-  static_assert(kCellCount == 19, "one cell per column of sensitivityResultColumns");
+  static_assert(kCellCount == 20, "one cell per column of sensitivityResultColumns");
   SweepPointResult r;
   try {
     r = runPoint(point, settings);

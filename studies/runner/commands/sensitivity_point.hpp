@@ -10,8 +10,11 @@
 //              [sensitivity.free] (default tolerances, as the trim's check): pitch swing, the
 //              altitude oscillations (core/analysis/limit_cycle.hpp) and the Eq. (5) verdict;
 //   tethered   simulateTethered at the trim point with the trim's periodic-run options (rel_tol
-//              1e-6, stop at the periodic steady state, at most max_cycles): the constrained
-//              flight test of its last cycle (core/analysis/zero_moment_point.hpp, paper Fig. 9).
+//              1e-6, stop at the periodic steady state, at most max_cycles): the hinge and
+//              aerodynamic power (cycle means) and the constrained flight test of its last cycle
+//              (core/analysis/zero_moment_point.hpp, paper Fig. 9), all at the trim point after
+//              the free-flight refinement. (The trim's own mean.hinge_power_W, which `trim` reports
+//              and `optimize` minimises, is at the stage-1 Eq. (4) point: hinge_power_eq4_W.)
 //
 // Status of a point (the worst that applies) and the cells it fills:
 //   not_converged  the trim did not converge: every cell empty, the message says why; or the
@@ -41,7 +44,8 @@ struct SensitivityColumn {
 };
 
 /// The result columns, between `status` and `message`: the predictions first, then the other
-/// results of the runs (aerodynamic power, bounded, theta range, climb rate).
+/// results of the runs (aerodynamic power, the stage-1 hinge power, bounded, theta range, climb
+/// rate).
 const std::vector<SensitivityColumn>& sensitivityResultColumns();
 
 /// Runs one point (a study of kind trim) with the free-flight settings of `settings` and tabulates

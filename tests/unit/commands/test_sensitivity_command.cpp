@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "studies/runner/commands/sensitivity_command.hpp"
+#include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {
@@ -52,6 +53,13 @@ std::vector<std::string> cells(const std::string& row, std::size_t n) {
   return c;
 }
 
+/// The value of "key": number in a summary.json (first occurrence).
+std::string jsonValue(const std::string& json, const std::string& key) {
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(json, m, std::regex("\"" + key + "\": ([-+0-9.eE]+)"))) << key;
+  return m.empty() ? std::string() : std::string(m[1]);
+}
+
 double number(const std::string& text) {
   double v = 0.0;
   const auto r = std::from_chars(text.data(), text.data() + text.size(), v);
@@ -75,15 +83,19 @@ class CommandsSensitivity : public ::testing::Test {
     o.figures = false;
     return o;
   }
-  Study study() const {
-    const fs::path f = dir_ / "inertia.toml";
-    std::ofstream(f) << "kind = \"sensitivity\"\nvehicle = \""
-                     << (repo() / "studies/vehicles/efw_magpie.toml").generic_string() << R"("
+  /// The study; `sensitivity` = false gives the trim study of its base vehicle.
+  Study study(int free_flight_cycles = 12, bool sensitivity = true) const {
+    const fs::path f = dir_ / (sensitivity ? "inertia.toml" : "trim.toml");
+    std::ofstream(f) << "kind = \"" << (sensitivity ? "sensitivity" : "trim") << "\"\nvehicle = \""
+                     << (repo() / "studies/vehicles/efw_magpie.toml").generic_string() << "\"\n"
+                     << (sensitivity ? "[sensitivity]\nfree_flight_cycles = " +
+                                           std::to_string(free_flight_cycles) +
+                                           "\nparameters = [{ key = \"body.pitch_inertia_kgm2\", "
+                                           "low = 1e-4, high = 3.2e-4 }]\n"
+                                     : std::string())
+                     << R"(
 [override]
 wing.structure = "rigid"
-[sensitivity]
-free_flight_cycles = 12
-parameters = [{ key = "body.pitch_inertia_kgm2", low = 1e-4, high = 3.2e-4 }]
 [trim]
 freq_hz = 12.0
 initial = { theta_mean_deg = 10.0, speed_mps = 10.0, tail_angle_deg = 10.0 }
@@ -96,8 +108,9 @@ refine_in_free_flight = false
 
 // Columns of sensitivity.csv (0-based): point, parameter, side, value, value_unit, status, then
 // the results in the order of sensitivityResultColumns().
-constexpr std::size_t kStatus = 5, kTheta = 6, kTail = 8, kPitchSwing = 10, kCFVMin = 14,
-                      kCMMax = 19, kCells = 25;
+constexpr std::size_t kStatus = 5, kTheta = 6, kTail = 8, kPitchSwing = 10, kAltitude = 11,
+                      kNormRatio = 13, kCFVMin = 14, kCMMax = 19, kHingeEq4 = 21, kThetaMin = 23,
+                      kCells = 26;
 
 TEST_F(CommandsSensitivity, InertiaMovesTheFreeFlightButNotTheTrim) {
   ASSERT_EQ(runSensitivityStudy(study(), dir_ / "out", quiet(2)), 0);
@@ -132,6 +145,27 @@ TEST_F(CommandsSensitivity, InertiaMovesTheFreeFlightButNotTheTrim) {
   EXPECT_FALSE(std::regex_search(readAll(dir_ / "out" / "sensitivity.csv"),
                                  std::regex("(^|,)-?(nan|inf)(,|$)", std::regex::icase)));
   EXPECT_FALSE(fs::exists(dir_ / "out" / kSensitivityJournalName));
+}
+
+TEST_F(CommandsSensitivity, BaseEqualsATrimStudyOfTheSameVehicle) {
+  // At 60 free-flight cycles (the trim's own check) the base row is the trim study's summary:
+  // the trim point, its free-flight check and the stage-1 hinge power, to the last digit.
+  ASSERT_EQ(runSensitivityStudy(study(60), dir_ / "sens", quiet(2)), 0);
+  ASSERT_EQ(runTrimStudy(study(60, false), dir_ / "trim"), 0);
+  const std::vector<std::string> base =
+      cells(lines(readAll(dir_ / "sens" / "sensitivity.csv"))[2], kCells);
+  const std::string json = readAll(dir_ / "trim" / "summary.json");
+  ASSERT_EQ(base[kStatus], "ok") << base.back();
+  EXPECT_EQ(base[kTheta], jsonValue(json, "theta_mean_deg"));
+  EXPECT_EQ(base[kTheta + 1], jsonValue(json, "speed_mps"));
+  EXPECT_EQ(base[kTail], jsonValue(json, "tail_angle_deg"));
+  EXPECT_EQ(base[kNormRatio], jsonValue(json, "norm_ratio_max"));
+  EXPECT_EQ(base[kAltitude], jsonValue(json, "altitude_p2p_m"));
+  EXPECT_EQ(base[kThetaMin], jsonValue(json, "theta_min_deg"));
+  EXPECT_EQ(base[kThetaMin + 1], jsonValue(json, "theta_max_deg"));
+  EXPECT_EQ(base[kHingeEq4], jsonValue(json, "hinge_power_W"));
+  EXPECT_DOUBLE_EQ(number(base[kPitchSwing]),
+                   number(base[kThetaMin + 1]) - number(base[kThetaMin]));
 }
 
 TEST_F(CommandsSensitivity, SameBytesForAnyThreadCountAndAfterAResume) {

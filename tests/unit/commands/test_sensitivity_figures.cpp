@@ -17,8 +17,7 @@ namespace {
 
 std::size_t count(const std::string& text, const std::string& what) {
   std::size_t n = 0;
-  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
-    ++n;
+  for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
   return n;
 }
 
@@ -26,9 +25,9 @@ Study twoParameters() {
   Study s;
   s.name = "demo";
   s.kind = StudyKind::kSensitivity;
-  s.sensitivity.parameters = {{"body.pitch_inertia_kgm2", 4e-5, 3.2e-4, 3e-4},
-                              {"aero.suction_efficiency", 0.5, 1.0,
-                               std::numeric_limits<double>::quiet_NaN()}};
+  s.sensitivity.parameters = {
+      {"body.pitch_inertia_kgm2", 4e-5, 3.2e-4, 3e-4},
+      {"aero.suction_efficiency", 0.5, 1.0, std::numeric_limits<double>::quiet_NaN()}};
   return s;
 }
 
