@@ -2,9 +2,10 @@
 # CLI and output contract of `kind = "sensitivity"` studies (architecture.md 3-6) on a cheap case:
 # the magpie with a rigid wing, two parameters (5 points), short free flights. The files, names and
 # units rows, the row order (base, then each parameter low and high), statuses and empty cells
-# (never NaN), summary keys, tornado.csv ranked by swing, byte-identical outputs for -j 1 and
-# -j 2, the figures that `plot` redraws, exit 2 for a bad range, and a kill -9 in the middle
-# followed by a resume that gives the same bytes without recomputing the journaled points.
+# (never NaN), summary keys, tornado.csv ranked by swing, the figures that `plot` redraws, exit 2
+# for a bad range, and a -j 2 run killed (kill -9) in the middle and resumed that gives the same
+# bytes as the -j 1 run without recomputing the journaled points. (Two runs, not three: the 15
+# figures of a run take most of the time.)
 #   usage: bash cli_sensitivity.sh <ornithopter-binary> <repo-root> <scratch-dir>
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
@@ -34,15 +35,8 @@ freq_hz = 12.0
 initial = { theta_mean_deg = 10.0, speed_mps = 10.0, tail_angle_deg = 10.0 }
 refine_in_free_flight = false
 TOML
-a="$scratch/j1"; b="$scratch/j2"
+a="$scratch/j1"
 check "sensitivity -j 1 exits 0" "$bin" run "$scratch/sens.toml" -j 1 -o "$a"
-check "sensitivity -j 2 exits 0" "$bin" run "$scratch/sens.toml" -j 2 -o "$b"
-for f in sensitivity.csv tornado.csv study.resolved.toml; do
-  check "$f identical for -j 1 and -j 2" cmp "$a/$f" "$b/$f"
-done
-meta='"(wall_time_s|threads|version)":'
-check "summary.json identical for -j 1 and -j 2 but the run metadata" \
-  cmp <(grep -vE "$meta" "$a/summary.json") <(grep -vE "$meta" "$b/summary.json")
 for f in sensitivity.csv tornado.csv summary.json study.resolved.toml \
          tornado_theta_mean_deg.png tornado_theta_mean_deg.svg tornado_theta_mean_deg.gp \
          tornado_hinge_power_W.png tornado_CM_CG_max.png tornado_altitude_p2p_slow_m.png \
@@ -91,9 +85,10 @@ check "bad range exits 2" test $? -eq 2
 check "... naming file, line and key" grep -q "bad_range.toml:11: key 'sensitivity.parameters\[1\].high'" "$scratch/bad.txt"
 check "bad input writes nothing" test ! -e "$scratch/bad"
 
-# Kill -9 after two journaled points, then resume: the same bytes as the uninterrupted run.
+# -j 2, killed (kill -9) after two journaled points, then resumed with -j 2: the same bytes as the
+# uninterrupted -j 1 run.
 killed="$scratch/killed"
-"$bin" run "$scratch/sens.toml" -j 1 -o "$killed" > /dev/null 2>&1 &
+"$bin" run "$scratch/sens.toml" -j 2 -o "$killed" > /dev/null 2>&1 &
 pid=$!
 journal="$killed/sensitivity.journal"
 for _ in $(seq 1 3000); do  # up to 30 s for 2 journaled points
@@ -107,11 +102,15 @@ if [ -f "$journal" ]; then
   echo "info killed with $lines journaled points"
   printf '0123456789abcdef 4,ok,1.5' >> "$journal"   # a torn last write
   check "resume after kill -9 exits 0" "$bin" run "$scratch/sens.toml" -j 2 -o "$killed"
-  check "resumed sensitivity.csv is byte-identical" cmp "$a/sensitivity.csv" "$killed/sensitivity.csv"
-  check "resumed tornado.csv is byte-identical" cmp "$a/tornado.csv" "$killed/tornado.csv"
   check "resumed points were not recomputed ($lines)" test "$(json "$killed/summary.json" points_resumed)" -eq "$lines"
   check "journal removed after the resume" test ! -e "$journal"
 else
-  echo "skip kill-and-resume: the study finished before it could be killed"
+  echo "info the -j 2 run finished before it could be killed: compared without a resume"
 fi
+for f in sensitivity.csv tornado.csv study.resolved.toml; do
+  check "$f identical for -j 1 and for -j 2 (killed and resumed)" cmp "$a/$f" "$killed/$f"
+done
+meta='"(wall_time_s|threads|version|points_computed|points_resumed)":'
+check "summary.json identical but the run metadata" \
+  cmp <(grep -vE "$meta" "$a/summary.json") <(grep -vE "$meta" "$killed/summary.json")
 exit $fail

@@ -268,10 +268,10 @@ std::string resolvedSensitivityToml(const Study& study) {
   out.integer("free_flight_cycles", s.free_flight_cycles, "the free flight from every trim");
   for (const SensitivityParameter& p : s.parameters) {
     out.arrayHeader({"sensitivity", "parameters"});
-    out.string("key", p.key);
-    out.number("low", p.low);
-    out.number("high", p.high,
+    out.string("key", p.key,
                std::isfinite(p.base) ? "base vehicle: " + formatNumber(p.base) : std::string());
+    out.number("low", p.low);
+    out.number("high", p.high);
   }
   writeFreeFlightTable(s.free, {"sensitivity", "free"}, out);
   return out.str() + "\n" + sectionsText(study);
