@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CLI and output contract of `kind = "sensitivity"` studies (architecture.md 3-6) on a cheap case:
-# the magpie with a rigid wing, two parameters (5 points), short free flights. The files, names and
+# a frozen rigid-wing magpie, two parameters (5 points), short free flights. The files, names and
 # units rows, the row order (base, then each parameter low and high), statuses and empty cells
 # (never NaN), summary keys, tornado.csv ranked by swing, the figures that `plot` redraws, exit 2
 # for a bad range, and a -j 2 run killed (kill -9) in the middle and resumed that gives the same
@@ -14,14 +14,13 @@ rm -rf "$scratch"; mkdir -p "$scratch"
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_checks.sh"
 no_nan() { ! grep -qiE '(^|,)-?(nan|inf)(,|$)' "$1"; }
 root=$(cd "$root" && pwd)
-efw="$root/studies/vehicles/efw_magpie.toml"
+# A frozen rigid-wing magpie (see its header): it trims cheaply, and its suction efficiency 0.5
+# does not trim, which gives a not_converged row.
+fixture="$root/tests/data/sensitivity/magpie_rigid_fixture.toml"
 
 cat > "$scratch/sens.toml" <<TOML
 kind = "sensitivity"
-vehicle = "$efw"
-
-[override]
-wing.structure = "rigid"
+vehicle = "$fixture"
 
 [sensitivity]
 free_flight_cycles = 24
@@ -58,6 +57,10 @@ check "no NaN in tornado.csv" no_nan "$a/tornado.csv"
 # A point that is ok has every prediction; one that is not ok has empty cells where it lacks them.
 check "ok rows fill the 14 predictions" bash -c "tail -n +3 '$csv' | awk -F, '\$6 == \"ok\" { for (c = 7; c <= 20; ++c) if (\$c == \"\") exit 1 }'"
 check "the base trims (ok)" test "$(sed -n 3p "$csv" | cut -d, -f6)" = ok
+check "a point without a trim: not_converged, every result cell empty, a reason" bash -c \
+  "sed -n 6p '$csv' | awk -F, '\$6 != \"not_converged\" || \$0 !~ /trim: / { exit 1 }
+     { for (c = 7; c <= 26; ++c) if (\$c != \"\") exit 1 }'"
+check "its tornado bars say so" grep -q 'no value at low: see sensitivity.csv' "$a/tornado_theta_mean_deg.gp"
 
 # tornado.csv: 14 predictions x 2 parameters, ranked by swing within each prediction.
 t="$a/tornado.csv"
@@ -82,7 +85,7 @@ echo "info base: $(sed -n 3p "$csv" | cut -d, -f6-10)"
 sed 's/low = 0.5, high = 1.0/low = 0.5, high = 1.5/' "$scratch/sens.toml" > "$scratch/bad_range.toml"
 "$bin" run "$scratch/bad_range.toml" -o "$scratch/bad" > /dev/null 2> "$scratch/bad.txt"
 check "bad range exits 2" test $? -eq 2
-check "... naming file, line and key" grep -q "bad_range.toml:11: key 'sensitivity.parameters\[1\].high'" "$scratch/bad.txt"
+check "... naming file, line and key" grep -q "bad_range.toml:8: key 'sensitivity.parameters\[1\].high'" "$scratch/bad.txt"
 check "bad input writes nothing" test ! -e "$scratch/bad"
 
 # -j 2, killed (kill -9) after two journaled points, then resumed with -j 2: the same bytes as the

@@ -1,5 +1,5 @@
-// The sensitivity command (studies/runner/commands/sensitivity_command.hpp) on a cheap study: the
-// magpie with a rigid wing, one parameter (the pitch inertia), no free-flight refinement of the
+// The sensitivity command (studies/runner/commands/sensitivity_command.hpp) on a cheap study: a
+// frozen rigid-wing magpie (tests/data/sensitivity/magpie_rigid_fixture.toml), one parameter (the pitch inertia), no free-flight refinement of the
 // trim, short free flights. The pitch inertia does not enter paper Eq. (4) nor the tethered run, so
 // the trim point and the Fig. 9 ranges of the three points must be the same bytes while the free
 // flight's pitch swing moves (falls with a larger inertia); the outputs are the same for any
@@ -87,15 +87,14 @@ class CommandsSensitivity : public ::testing::Test {
   Study study(int free_flight_cycles = 12, bool sensitivity = true) const {
     const fs::path f = dir_ / (sensitivity ? "inertia.toml" : "trim.toml");
     std::ofstream(f) << "kind = \"" << (sensitivity ? "sensitivity" : "trim") << "\"\nvehicle = \""
-                     << (repo() / "studies/vehicles/efw_magpie.toml").generic_string() << "\"\n"
+                     << (repo() / "tests/data/sensitivity/magpie_rigid_fixture.toml").generic_string()
+                     << "\"\n"
                      << (sensitivity ? "[sensitivity]\nfree_flight_cycles = " +
                                            std::to_string(free_flight_cycles) +
                                            "\nparameters = [{ key = \"body.pitch_inertia_kgm2\", "
                                            "low = 1e-4, high = 3.2e-4 }]\n"
                                      : std::string())
                      << R"(
-[override]
-wing.structure = "rigid"
 [trim]
 freq_hz = 12.0
 initial = { theta_mean_deg = 10.0, speed_mps = 10.0, tail_angle_deg = 10.0 }
