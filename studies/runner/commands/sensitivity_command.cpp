@@ -146,20 +146,22 @@ JsonObject predictionsJson(const SensitivitySettings& s,
   return o;
 }
 
+/// The base point: status, message and every result column by name (null where no value).
 JsonObject baseJson(const SweepPointResult& base) {
   const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
-  JsonObject values;
+  JsonObject o;
+  o.set("status", base.status).set("message", base.message);
   for (std::size_t c = 0; c < columns.size(); ++c) {
     if (columns[c].name == "bounded") {
       if (base.cells[c].empty())
-        values.setNull("bounded");
+        o.setNull("bounded");
       else
-        values.set("bounded", base.cells[c] == "1");
+        o.set("bounded", base.cells[c] == "1");
       continue;
     }
-    values.set(columns[c].name, orNull(cellNumber(base.cells[c])));
+    o.set(columns[c].name, orNull(cellNumber(base.cells[c])));
   }
-  return JsonObject().set("status", base.status).set("message", base.message).set("values", values);
+  return o;
 }
 
 }  // namespace

@@ -18,7 +18,8 @@
 //   summary.json        kind "sensitivity", status (ok when every point is ok, else
 //                       not_converged), message, wall_time_s, version, points and the counts by
 //                       status, parameters {key: unit, low, high, base, base_inside_range},
-//                       base {status, message, the predictions}, predictions {name: unit, label,
+//                       base {status, message, every result column by name: theta_mean_deg,
+//                       ..., bounded}, predictions {name: unit, label,
 //                       base, ranking (keys by swing), effects {key: low_value, high_value,
 //                       delta_low, delta_high, swing, swing_share}} (null where no value).
 //   study.resolved.toml the study resolved; re-runs the same points.

@@ -141,6 +141,11 @@ TEST_F(CommandsSensitivity, InertiaMovesTheFreeFlightButNotTheTrim) {
                           "\"parameters\":", "\"base_inside_range\":", "\"predictions\":",
                           "\"pitch_swing_deg\":", "\"ranking\":", "\"delta_low\":"})
     EXPECT_NE(summary.find(key), std::string::npos) << key;
+  // The base predictions by name under "base" (results/README.template.md reads base.<name>).
+  const std::size_t base = summary.find("\"base\": {");
+  ASSERT_NE(base, std::string::npos);
+  EXPECT_EQ(jsonValue(summary.substr(base), "theta_mean_deg"), c[0][kTheta]);
+  EXPECT_EQ(jsonValue(summary.substr(base), "pitch_swing_deg"), c[0][kPitchSwing]);
   EXPECT_FALSE(std::regex_search(readAll(dir_ / "out" / "sensitivity.csv"),
                                  std::regex("(^|,)-?(nan|inf)(,|$)", std::regex::icase)));
   EXPECT_FALSE(fs::exists(dir_ / "out" / kSensitivityJournalName));
