@@ -17,6 +17,7 @@
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/optimize_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/commands/sensitivity_command.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/commands/sweep_command.hpp"
 #include "studies/runner/commands/trim_command.hpp"
@@ -89,6 +90,11 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
       SweepRunOptions opts;
       opts.threads = jobs;
       return runSweepStudy(study, out_dir, opts);
+    }
+    case StudyKind::kSensitivity: {
+      SensitivityRunOptions opts;
+      opts.threads = jobs;
+      return runSensitivityStudy(study, out_dir, opts);
     }
     case StudyKind::kOptimize: {
       OptimizeRunOptions opts;

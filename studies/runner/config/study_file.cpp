@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::array<std::pair<std::string_view, StudyKind>, 7> kKinds = {{
+constexpr std::array<std::pair<std::string_view, StudyKind>, 8> kKinds = {{
     {"simulate", StudyKind::kSimulate},
     {"modes", StudyKind::kModes},
     {"aeromap", StudyKind::kAeromap},
@@ -32,6 +32,7 @@ constexpr std::array<std::pair<std::string_view, StudyKind>, 7> kKinds = {{
     {"optimize", StudyKind::kOptimize},
     {"sweep", StudyKind::kSweep},
     {"calibrate", StudyKind::kCalibrate},
+    {"sensitivity", StudyKind::kSensitivity},
 }};
 
 const std::vector<std::pair<std::string, FlightMode>> kModes = {{"tethered", FlightMode::kTethered},
@@ -227,6 +228,8 @@ Study loadStudyText(const std::string& text, const fs::path& study_file, bool ve
   const toml::node* kind = root.get("kind");
   if (kind && kind->value<std::string>() == std::string(toString(StudyKind::kSweep)))
     return loadSweepStudy(root, text, study_file, verify_resolved);
+  if (kind && kind->value<std::string>() == std::string(toString(StudyKind::kSensitivity)))
+    return loadSensitivityStudy(root, text, study_file, verify_resolved);
   return readStudyRoot(root, study_file);
 }
 
@@ -237,12 +240,21 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim", "sweep", "calibrate", "optimize"});
+                   "aeromap", "trim", "sweep", "calibrate", "optimize", "sensitivity"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
   if (study.kind == StudyKind::kSweep)  // loadStudyText sends sweeps to loadSweepStudy
     throw std::logic_error("readStudyRoot: a sweep document");
+  if (study.kind == StudyKind::kSensitivity)  // ... and sensitivity studies to their loader
+    throw std::logic_error("readStudyRoot: a sensitivity document");
+  if (top.has("sensitivity"))
+    throw InputError::unknownKey(top.fileOf("sensitivity"), top.lineOf("sensitivity"),
+                                 "sensitivity",
+                                 "[sensitivity] is only allowed in a study of kind "
+                                 "\"sensitivity\", this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  top.take("sensitivity");
   if (top.has("sweep"))
     throw InputError::unknownKey(top.fileOf("sweep"), top.lineOf("sweep"), "sweep",
                                  "[sweep] is only allowed in a study of kind \"sweep\", this "
@@ -439,6 +451,7 @@ Study aeromapStudyFromVehicle(const fs::path& vehicle_file, GridAxis speed_mps, 
 
 std::string resolvedStudyToml(const Study& study) {
   if (study.kind == StudyKind::kSweep) return resolvedSweepToml(study);
+  if (study.kind == StudyKind::kSensitivity) return resolvedSensitivityToml(study);
   TomlWriter out;
   out.comment("Resolved study: every default filled in; units in the key suffixes.");
   out.comment(
@@ -473,19 +486,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
       out.boolean("wing_only", study.wing_only, "true = the main wing alone (no tail, no body drag)");
     out.boolean("at_trim", study.at_trim,
                 "true = at the trim point at freq_hz (speed, theta, tail: the initial guess)");
-    if (o.mode == FlightMode::kFree) {
-      const FreeFlightOptions& f = o.free;
-      out.header({"simulate", "free"});
-      out.number("bound_speed_mps", f.bounds.U_mps);
-      out.number("bound_W_mps", f.bounds.W_mps);
-      out.scaled("bound_theta_deg", f.bounds.theta_rad, orni::kDegToRad);
-      out.scaled("bound_Q_degps", f.bounds.Q_radps, orni::kDegToRad,
-                 "0 = automatic: 2 pi f bound_theta");
-      out.number("bound_h_m", f.bounds.h_m);
-      out.number("transient_fraction", f.transient_fraction);
-      out.number("divergence_ratio", f.divergence_ratio);
-      out.number("initial_altitude_m", f.initial_altitude_m);
-    }
+    if (o.mode == FlightMode::kFree) writeFreeFlightTable(o.free, {"simulate", "free"}, out);
   }
   if (kind == StudyKind::kAeromap) {
     const AeromapSettings& a = study.aeromap;
@@ -505,6 +506,24 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
   if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate, out);
   if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
+}
+
+std::vector<std::string> freeFlightKeys() { return kFreeKeys; }
+
+void readFreeFlightTable(TableReader& r, FreeFlightOptions& f) { readFreeFlight(r, f); }
+
+void writeFreeFlightTable(const FreeFlightOptions& f, const std::vector<std::string>& header,
+                          TomlWriter& out) {
+  out.header(header);
+  out.number("bound_speed_mps", f.bounds.U_mps);
+  out.number("bound_W_mps", f.bounds.W_mps);
+  out.scaled("bound_theta_deg", f.bounds.theta_rad, orni::kDegToRad);
+  out.scaled("bound_Q_degps", f.bounds.Q_radps, orni::kDegToRad,
+             "0 = automatic: 2 pi f bound_theta");
+  out.number("bound_h_m", f.bounds.h_m);
+  out.number("transient_fraction", f.transient_fraction);
+  out.number("divergence_ratio", f.divergence_ratio);
+  out.number("initial_altitude_m", f.initial_altitude_m);
 }
 
 }  // namespace orni::studies

@@ -5,7 +5,8 @@
 //
 // Top-level keys of a study file:
 //   kind     (required) "simulate" | "modes" | "aeromap" | "trim" | "optimize" | "sweep" |
-//            "calibrate" ([calibrate]: config/calibrate_section.hpp)
+//            "calibrate" ([calibrate]: config/calibrate_section.hpp) | "sensitivity"
+//            ([sensitivity] and [trim]: config/sensitivity_study.hpp)
 //   name     (optional) run name, [A-Za-z0-9_.-]+; default: the file stem
 //   vehicle  (required) path of the vehicle file relative to the study's folder, or an inline
 //            [vehicle] table (as written into study.resolved.toml)
@@ -39,7 +40,8 @@
 //            so that the two cannot be confused.) Options: cycles (the maximum per point,
 //            default 40), steady_tol, rel_tol, abs_tol, separation_abs_tol (default:
 //            SimulationOptions). Every point stops at its periodic steady state.
-//   [trim]   (optional, kind = "trim" only) freq_hz, unknowns = ["theta_mean_deg", "speed_mps",
+//   [trim]   (optional, kind = "trim" only; in a sweep or sensitivity study the settings of every
+//            point's trim) freq_hz, unknowns = ["theta_mean_deg", "speed_mps",
 //            "tail_angle_deg"] (any 1-3 of these and "freq_hz"), initial = { theta_mean_deg,
 //            speed_mps, tail_angle_deg } (default: the vehicle's operating point), bounds =
 //            { <unknown> = [lower, upper] }, max_iterations, residual_tol, function_tol, rel_tol,
@@ -98,9 +100,18 @@
 
 namespace orni::studies {
 
-enum class StudyKind { kSimulate, kModes, kAeromap, kTrim, kOptimize, kSweep, kCalibrate };
+enum class StudyKind {
+  kSimulate,
+  kModes,
+  kAeromap,
+  kTrim,
+  kOptimize,
+  kSweep,
+  kCalibrate,
+  kSensitivity
+};
 
-/// "simulate", "modes", "aeromap", "trim", "optimize", "sweep".
+/// "simulate", "modes", "aeromap", "trim", "optimize", "sweep", "calibrate", "sensitivity".
 std::string_view toString(StudyKind kind);
 /// The kind of that spelling, or nullopt.
 std::optional<StudyKind> parseStudyKind(std::string_view text);
@@ -142,6 +153,29 @@ struct SweepSettings {
   std::vector<std::string> derived_keys;
 };
 
+/// One parameter of a sensitivity study: a vehicle value the paper does not give, moved over its
+/// plausible range (config/sensitivity_study.hpp).
+struct SensitivityParameter {
+  std::string key;    ///< a vehicle key as in [override], e.g. "body.pitch_inertia_kgm2"
+  double low = 0.0;   ///< lower end of the plausible range, file units of the key
+  double high = 0.0;  ///< upper end, > low
+  /// The base vehicle's value in file units (from its resolved form); NaN when the resolved
+  /// vehicle does not write the key.
+  double base = 0.0;
+};
+
+/// The [sensitivity] section (kind "sensitivity").
+struct SensitivitySettings {
+  std::vector<SensitivityParameter> parameters;  ///< in file order
+  /// The free flight flown at every trim (the pitch swing and altitude oscillations): cycles and
+  /// the bounded-norm settings ([sensitivity.free], the keys of [simulate.free]).
+  int free_flight_cycles = 60;
+  orni::FreeFlightOptions free;
+  /// One resolved study of kind trim per point: [0] the base vehicle, then for parameter i the
+  /// vehicle with that key at low [1 + 2 i] and at high [2 + 2 i].
+  std::vector<Study> points;
+};
+
 /// The [optimize] section (kind "optimize"; config/optimize_section.hpp).
 struct OptimizeSettings {
   orni::opt::OptimizerOptions optimizer;  ///< threads: set by the command line (-j)
@@ -174,6 +208,8 @@ struct Study {
   /// run's section and the vehicle without the axes.
   SweepSettings sweep;
   OptimizeSettings optimize;           ///< [optimize] (kind optimize)
+  /// [sensitivity] (kind sensitivity). vehicle and trim above then hold the base study.
+  SensitivitySettings sensitivity;
 };
 
 /// True for an axis key of the run's analysis section ("trim.*" in a trim sweep), false for a
@@ -213,8 +249,10 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
 /// [calibrate] (kind calibrate) or [optimize] with all options, sub-tables and variables (kind
 /// optimize), and the resolved vehicle as a [vehicle] table in file units and key names; a sweep
 /// writes [sweep] with run and its axes as [[sweep.axes]] tables, then its base study's section
-/// and vehicle. loadStudyFile reads it back into the same Study (apart from study_path); a sweep's
-/// points are the same (loadStudyFile checks this when it loads a sweep).
+/// and vehicle; a sensitivity study writes [sensitivity] with free_flight_cycles, its parameters
+/// as [[sensitivity.parameters]] tables and [sensitivity.free], then [trim] and the base vehicle.
+/// loadStudyFile reads it back into the same Study (apart from study_path); a sweep's or
+/// sensitivity study's points are the same (loadStudyFile checks this when it loads one).
 std::string resolvedStudyToml(const Study& study);
 
 }  // namespace orni::studies

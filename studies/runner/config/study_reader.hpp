@@ -1,11 +1,14 @@
-// The study-file reader's internals, shared by study_file.cpp (every kind) and sweep_study.cpp
-// (kind "sweep", whose points are studies of another kind). Private to orni_studies: includes
+// The study-file reader's internals, shared by study_file.cpp (every kind), sweep_study.cpp
+// (kind "sweep", whose points are studies of another kind) and sensitivity_study.cpp (kind
+// "sensitivity", whose points are trim studies). Private to orni_studies: includes
 // toml++ through toml_access.hpp; the rest of the program includes study_file.hpp.
 #pragma once
 
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/config/toml_access.hpp"
@@ -39,5 +42,35 @@ void writeGridAxis(TomlWriter& out, std::string_view key, const GridAxis& axis);
 
 /// study.resolved.toml of a sweep (resolvedStudyToml dispatches here).
 std::string resolvedSweepToml(const Study& study);
+
+/// Reads the study of kind `run` (trim or simulate) that the document `text` (the file
+/// `study_file`) becomes with `kind` set to the run, the top-level keys `drop` removed and each
+/// (dotted key, value) written in: a key of the run's section ("trim.freq_hz") into that section,
+/// any other key into [override] after the file's own overrides (a whole number as a TOML
+/// integer). Every check of the ordinary loader applies. Throws InputError.
+Study readStudyWithValues(const std::string& text, const std::filesystem::path& study_file,
+                          StudyKind run, const std::vector<std::string>& drop,
+                          const std::vector<std::pair<std::string, double>>& values);
+
+/// The parts of a dotted key of bare parts ("tail.arm_m" -> {"tail", "arm_m"}); empty when the
+/// text is not such a key.
+std::vector<std::string> dottedKeyParts(const std::string& key);
+
+/// The message of an InputError without its "FILE:LINE: " prefix.
+std::string inputErrorBody(const InputError& e);
+
+/// The keys of [simulate.free] (also [sensitivity.free]); reads such a table into `f` (calls
+/// finish()); writes one under `header` with every key.
+std::vector<std::string> freeFlightKeys();
+void readFreeFlightTable(TableReader& r, orni::FreeFlightOptions& f);
+void writeFreeFlightTable(const orni::FreeFlightOptions& f, const std::vector<std::string>& header,
+                          TomlWriter& out);
+
+/// Reads a parsed sensitivity document (`root` parsed from `text`; config/sensitivity_study.hpp).
+Study loadSensitivityStudy(toml::table& root, const std::string& text,
+                           const std::filesystem::path& study_file, bool verify_resolved);
+
+/// study.resolved.toml of a sensitivity study (resolvedStudyToml dispatches here).
+std::string resolvedSensitivityToml(const Study& study);
 
 }  // namespace orni::studies

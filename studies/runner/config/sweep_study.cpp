@@ -160,21 +160,10 @@ using PointValues = std::vector<std::optional<double>>;
 /// the values written in, read by readStudyRoot.
 Study readPoint(const std::string& text, const fs::path& study_file, StudyKind run,
                 const std::vector<AxisInput>& axes, const PointValues& values) {
-  toml::table root = parseTomlText(text, study_file);
-  root.insert_or_assign("kind", sectionOf(run));
-  root.erase("sweep");
-  for (std::size_t k = 0; k < axes.size(); ++k) {
-    if (!values[k]) continue;
-    const std::string& key = axes[k].axis.key;
-    std::vector<std::string> parts = keyParts(key);
-    if (isAnalysisKey(key, run)) {
-      parts.erase(parts.begin());
-      insertValue(tableAt(root, sectionOf(run)), parts, *values[k]);
-    } else {
-      insertValue(tableAt(root, "override"), parts, *values[k]);
-    }
-  }
-  return readStudyRoot(root, study_file);
+  std::vector<std::pair<std::string, double>> keyed;
+  for (std::size_t k = 0; k < axes.size(); ++k)
+    if (values[k]) keyed.emplace_back(axes[k].axis.key, *values[k]);
+  return readStudyWithValues(text, study_file, run, {"sweep"}, keyed);
 }
 
 /// The message of an InputError without its "FILE:LINE: " prefix.
@@ -291,6 +280,29 @@ std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>
 }
 
 }  // namespace
+
+Study readStudyWithValues(const std::string& text, const fs::path& study_file, StudyKind run,
+                          const std::vector<std::string>& drop,
+                          const std::vector<std::pair<std::string, double>>& values) {
+  toml::table root = parseTomlText(text, study_file);
+  root.insert_or_assign("kind", sectionOf(run));
+  for (const std::string& key : drop) root.erase(key);
+  for (const auto& [key, value] : values) {
+    std::vector<std::string> parts = keyParts(key);
+    if (parts.empty()) throw std::invalid_argument("readStudyWithValues: not a dotted key: " + key);
+    if (isAnalysisKey(key, run)) {
+      parts.erase(parts.begin());
+      insertValue(tableAt(root, sectionOf(run)), parts, value);
+    } else {
+      insertValue(tableAt(root, "override"), parts, value);
+    }
+  }
+  return readStudyRoot(root, study_file);
+}
+
+std::vector<std::string> dottedKeyParts(const std::string& key) { return keyParts(key); }
+
+std::string inputErrorBody(const InputError& e) { return bodyOf(e); }
 
 bool isAnalysisKey(const std::string& key, StudyKind run) {
   const std::string prefix = sectionOf(run) + ".";

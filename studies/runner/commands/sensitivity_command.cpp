@@ -1,0 +1,277 @@
+#include "studies/runner/commands/sensitivity_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/commands/sensitivity_figures.hpp"
+#include "studies/runner/commands/sensitivity_point.hpp"
+#include "studies/runner/commands/sensitivity_ranking.hpp"
+#include "studies/runner/config/sensitivity_study.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/point_journal.hpp"
+#include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/point_pool.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// NaN (written as null by JsonObject) for a value that does not exist.
+double orNull(const std::optional<double>& v) {
+  return v ? *v : std::numeric_limits<double>::quiet_NaN();
+}
+
+/// sensitivity.csv: point, parameter, side, value, value_unit, status, results, message.
+CsvTable sensitivityTable(const SensitivitySettings& s, const std::vector<SweepPointResult>& rows) {
+  const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
+  std::vector<std::string> point, parameter, side, value, value_unit, status, message;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const SensitivityPointId id = sensitivityPointId(i);
+    point.push_back(std::to_string(i));
+    side.push_back(toString(id.side));
+    if (id.side == SensitivitySide::kBase) {
+      parameter.emplace_back();
+      value.emplace_back();
+      value_unit.emplace_back();
+    } else {
+      const SensitivityParameter& p = s.parameters[id.parameter];
+      parameter.push_back(p.key);
+      value.push_back(formatShortest(id.side == SensitivitySide::kLow ? p.low : p.high));
+      value_unit.push_back(keyUnit(p.key));
+    }
+    status.push_back(rows[i].status);
+    message.push_back(rows[i].message);
+  }
+  CsvTable t;
+  t.addTextColumn("point", "-", std::move(point));
+  t.addTextColumn("parameter", "-", std::move(parameter));
+  t.addTextColumn("side", "-", std::move(side));
+  t.addTextColumn("value", "value_unit", std::move(value));
+  t.addTextColumn("value_unit", "-", std::move(value_unit));
+  t.addTextColumn("status", "-", std::move(status));
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    std::vector<std::string> cells;
+    for (const SweepPointResult& r : rows) cells.push_back(r.cells[c]);
+    t.addTextColumn(columns[c].name, columns[c].unit, std::move(cells));
+  }
+  t.addTextColumn("message", "-", std::move(message));
+  return t;
+}
+
+struct Counts {
+  std::size_t ok = 0, not_converged = 0, diverged = 0, failed = 0;
+};
+
+Counts countRows(const std::vector<SweepPointResult>& rows) {
+  Counts n;
+  for (const SweepPointResult& r : rows) {
+    if (r.status == "ok")
+      ++n.ok;
+    else if (r.status == "not_converged")
+      ++n.not_converged;
+    else if (r.status == "diverged")
+      ++n.diverged;
+    else
+      ++n.failed;
+  }
+  return n;
+}
+
+std::string runMessage(const Counts& n, std::size_t points) {
+  char buf[300];
+  if (n.ok == points)
+    std::snprintf(buf, sizeof buf, "all %zu points ok", points);
+  else
+    std::snprintf(buf, sizeof buf,
+                  "%zu of %zu points not ok (%zu not_converged, %zu diverged, %zu failed): see the "
+                  "status and message columns of sensitivity.csv",
+                  points - n.ok, points, n.not_converged, n.diverged, n.failed);
+  return buf;
+}
+
+JsonObject parametersJson(const SensitivitySettings& s) {
+  JsonObject o;
+  for (const SensitivityParameter& p : s.parameters) {
+    JsonObject q;
+    q.set("unit", keyUnit(p.key)).set("low", p.low).set("high", p.high).set("base", p.base);
+    if (std::isfinite(p.base))
+      q.set("base_inside_range", p.base >= p.low && p.base <= p.high);
+    else
+      q.setNull("base_inside_range");
+    o.set(p.key, q);
+  }
+  return o;
+}
+
+JsonObject predictionsJson(const SensitivitySettings& s,
+                           const std::vector<PredictionRanking>& rankings) {
+  const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
+  JsonObject o;
+  for (const PredictionRanking& p : rankings) {
+    const SensitivityColumn& col = columns[p.column];
+    std::vector<std::string> ranking;
+    JsonObject effects;
+    for (const SensitivityEffect& e : p.ranked) {
+      const std::string& key = s.parameters[e.parameter].key;
+      ranking.push_back(key);
+      effects.set(key, JsonObject()
+                           .set("low_value", orNull(e.low_value))
+                           .set("high_value", orNull(e.high_value))
+                           .set("delta_low", orNull(e.delta_low))
+                           .set("delta_high", orNull(e.delta_high))
+                           .set("swing", orNull(e.swing))
+                           .set("swing_share", orNull(e.swing_share)));
+    }
+    o.set(col.name, JsonObject()
+                        .set("unit", col.unit)
+                        .set("label", col.label)
+                        .set("base", orNull(p.base))
+                        .setStrings("ranking", ranking)
+                        .set("effects", effects));
+  }
+  return o;
+}
+
+/// The base point: status, message and every result column by name (null where no value).
+JsonObject baseJson(const SweepPointResult& base) {
+  const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
+  JsonObject o;
+  o.set("status", base.status).set("message", base.message);
+  for (std::size_t c = 0; c < columns.size(); ++c) {
+    if (columns[c].name == "bounded") {
+      if (base.cells[c].empty())
+        o.setNull("bounded");
+      else
+        o.set("bounded", base.cells[c] == "1");
+      continue;
+    }
+    o.set(columns[c].name, orNull(cellNumber(base.cells[c])));
+  }
+  return o;
+}
+
+}  // namespace
+
+int runSensitivityStudy(const Study& study, const fs::path& out_dir,
+                        const SensitivityRunOptions& run) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const SensitivitySettings& s = study.sensitivity;
+  const std::size_t n = sensitivityPointCount(s.parameters.size());
+  if (s.parameters.empty() || s.points.size() != n)
+    throw std::invalid_argument("sensitivity: one study per point expected");
+  const std::size_t columns = sensitivityResultColumns().size();
+
+  for (const SensitivityParameter& p : s.parameters)
+    if (std::isfinite(p.base) && (p.base < p.low || p.base > p.high))
+      std::cerr << "sensitivity: note: the base vehicle's " << p.key << " = "
+                << formatShortest(p.base) << " lies outside its range [" << formatShortest(p.low)
+                << ", " << formatShortest(p.high) << "]: both ends move it the same way\n";
+
+  const std::string resolved = resolvedStudyToml(study);
+  const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
+  fs::create_directories(out_dir);
+  PointJournalResume resume;
+  PointJournal journal(
+      out_dir / kSensitivityJournalName, "sensitivity", fingerprint, n,
+      [&](std::size_t, std::string_view payload) {
+        SweepPointResult r;
+        return decodeSweepPoint(payload, columns, &r);
+      },
+      &resume);
+  if (resume.existed && !resume.fingerprint_matched)
+    std::cerr << "sensitivity: " << journal.path().string()
+              << " belongs to another study or version: starting afresh\n";
+  else if (resume.existed)
+    std::cerr << "sensitivity: resuming from " << journal.path().string() << ": " << resume.records
+              << " of " << n << " points already done"
+              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
+                                              " torn or corrupt line(s) dropped)"
+                                        : std::string())
+              << "\n";
+
+  std::vector<SweepPointResult> rows(n);
+  std::vector<std::size_t> todo;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (resume.payloads[i])
+      decodeSweepPoint(*resume.payloads[i], columns, &rows[i]);
+    else
+      todo.push_back(i);
+  }
+
+  std::optional<ProgressLine> progress;
+  if (run.progress) progress.emplace("sensitivity", n, resume.records);
+  trim::runPoints(
+      todo, run.threads, [&](std::size_t i) { rows[i] = runSensitivityPoint(s.points[i], s); },
+      [&](std::size_t i) {
+        journal.append(i, encodeSweepPoint(rows[i]));
+        if (progress) progress->pointDone();
+        if (run.on_point) run.on_point(i, rows[i]);
+      });
+  if (progress) progress->finish();
+
+  const std::vector<PredictionRanking> rankings = rankSensitivity(s.parameters.size(), rows);
+  writeFileAtomic(out_dir / "sensitivity.csv", sensitivityTable(s, rows).toString());
+  writeFileAtomic(out_dir / "tornado.csv", tornadoTable(study, rankings).toString());
+  writeFileAtomic(out_dir / "study.resolved.toml", resolved);
+  const Counts count = countRows(rows);
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  JsonObject summary;
+  summary.set("kind", "sensitivity")
+      .set("status", count.ok == n ? "ok" : "not_converged")
+      .set("message", runMessage(count, n))
+      .set("wall_time_s", wall_s)
+      .set("version", versionString())
+      .set("points", static_cast<long>(n))
+      .set("points_ok", static_cast<long>(count.ok))
+      .set("points_not_converged", static_cast<long>(count.not_converged))
+      .set("points_diverged", static_cast<long>(count.diverged))
+      .set("points_failed", static_cast<long>(count.failed))
+      .set("points_computed", static_cast<long>(todo.size()))
+      .set("points_resumed", static_cast<long>(resume.records))
+      .set("threads", run.threads)
+      .set("free_flight_cycles", s.free_flight_cycles)
+      .set("parameters", parametersJson(s))
+      .set("base", baseJson(rows[0]))
+      .set("predictions", predictionsJson(s, rankings));
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  journal.remove();  // every result is in sensitivity.csv now
+
+  int drawn = 0;
+  if (run.figures) {
+    for (std::size_t k = 0; k < rankings.size(); ++k) {
+      const std::string figure = tornadoFigure(study, rankings, k);
+      if (figure.empty()) continue;
+      drawFigure(out_dir, tornadoStem(rankings[k]), figure);
+      ++drawn;
+    }
+    const std::string overview = overviewFigure(study, rankings);
+    if (!overview.empty()) {
+      drawFigure(out_dir, "sensitivity_overview", overview);
+      ++drawn;
+    }
+    if (drawn == 0) std::cerr << "sensitivity: no prediction has a value to plot: no figure\n";
+  }
+  std::cout << study.name << ": sensitivity of " << rankings.size() << " predictions to "
+            << s.parameters.size() << " parameters, " << n << " points (" << todo.size()
+            << " computed): " << count.ok << " ok, " << count.not_converged << " not_converged, "
+            << count.diverged << " diverged, " << count.failed << " failed\n  -> "
+            << out_dir.string() << "\n";
+  return 0;
+}
+
+}  // namespace orni::studies
