@@ -248,9 +248,14 @@ cycles = 4
 }
 
 TEST_F(CommandsSweep, PointsWithoutAResultHaveTheirStatusAndReasonAndEmptyCells) {
-  // The paper's ornithopter trims at 12 Hz (Table 3); at 10 kg it cannot, within 10 iterations.
-  const Study sweep =
-      loadStudyFile(write("trim.toml", "kind = \"sweep\"\n" + vehicle("efw_magpie.toml") + R"(
+  // A frozen rigid-wing magpie (tests/data/sensitivity/magpie_rigid_fixture.toml: a contract
+  // fixture that does not move with the paper vehicle) trims at 12 Hz; at 10 kg it cannot, within
+  // 10 iterations.
+  const Study sweep = loadStudyFile(
+      write("trim.toml", "kind = \"sweep\"\nvehicle = \"" +
+                             (repo() / "tests/data/sensitivity/magpie_rigid_fixture.toml")
+                                 .generic_string() +
+                             "\"\n" + R"(
 [sweep]
 run = "trim"
 axes = [{ key = "body.mass_kg", values = [0.118, 10.0] }]

@@ -1,7 +1,11 @@
 // The implicit-explicit integration of the flexible wing (core/dynamics/modal_implicit_split.*):
 // the split's stage solve inverts (I - gamma L) exactly; the IMEX runs agree with the explicit
 // Runge-Kutta runs (a second integrator of the same equations) and with a tight-tolerance
-// reference, tethered and in free flight, on the calibrated magpie (12 modes up to 332 Hz).
+// reference, tethered and in free flight. The efficiency claim (far fewer right-hand sides) is
+// checked where the split matters: a stiff wing whose explicit steps are stability-limited, the
+// magpie with every wing member 3.115 times thicker (the first wave's wing, 12 modes up to
+// 332 Hz). The honest Table 1 wing (12 modes up to 231 Hz) is accuracy-limited, and there
+// the two integrators take about the same number of steps.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -20,6 +24,14 @@ namespace {
 constexpr double kImexVsReferenceTol = 1e-4;
 // Stage solve: exact up to rounding of a 2M x 2M system.
 constexpr double kStageSolveTol = 1e-12;
+
+// The magpie with a stiff wing (members 3.115 times thicker), where the modal integration is
+// stability-limited for an explicit method.
+VehicleModel stiffWingMagpie() {
+  VehicleModel v = testing::magpieVehicle();
+  v.wing.member_diameter_scale = 3.11465;
+  return v;
+}
 
 TEST(ModalImex, StageSolveInvertsIMinusGammaL) {
   const VehicleModel v = testing::magpieVehicle();
@@ -66,7 +78,7 @@ SimulationSummary tethered(const FlightCoreModel& model, const OperatingPoint& p
 }
 
 TEST(ModalImex, TetheredCycleMeansMatchTheExplicitIntegratorAndAReference) {
-  const VehicleModel v = testing::magpieVehicle();
+  const VehicleModel v = stiffWingMagpie();
   const FlightCoreModel model(v);
   const OperatingPoint& p = v.operating_point;
   const SimulationSummary imex = tethered(model, p, ModalIntegration::kImplicit, 1e-4);
@@ -89,7 +101,7 @@ TEST(ModalImex, TetheredCycleMeansMatchTheExplicitIntegratorAndAReference) {
 }
 
 TEST(ModalImex, FreeFlightMatchesTheExplicitIntegrator) {
-  const VehicleModel v = testing::magpieVehicle();
+  const VehicleModel v = stiffWingMagpie();
   const FlightCoreModel model(v);
   SimulationOptions o;
   o.mode = FlightMode::kFree;

@@ -23,12 +23,14 @@ VehicleModel magpie() {
                                   "/studies/vehicles/efw_magpie.toml");
 }
 
-// The magpie with its rigid wing: the design-problem machinery at a fraction of the cost (the
-// calibrated flexible magpie's trims take seconds). At 12 Hz its Eq. (4) trim exists (theta 4.32
-// deg, U 13.63 m/s, tail 8.38 deg; no free-flight refinement here), at 6 Hz it does not.
+// The design-problem machinery on a frozen rigid-wing fixture (the magpie of commit 70ab58e, before
+// issue 13's honest vehicle; tests/data/sensitivity/magpie_rigid_fixture.toml): a contract test
+// that must not move with the paper vehicle's physics. At 12 Hz its Eq. (4) trim exists (theta
+// 4.32 deg, U 13.63 m/s, tail 8.38 deg; no free-flight refinement here), at 6 Hz it does not.
 VehicleModel rigidMagpie() {
-  VehicleModel v = magpie();
-  v.wing.structure = StructureLevel::kRigid;
+  VehicleModel v = studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                            "/tests/data/sensitivity/magpie_rigid_fixture.toml");
+  EXPECT_EQ(v.wing.structure, StructureLevel::kRigid);
   return v;
 }
 
