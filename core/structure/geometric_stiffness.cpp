@@ -98,6 +98,19 @@ Eigen::MatrixXd unitInertialAccelerations(const std::vector<Vec3>& nodes_W_m,
   return a;
 }
 
+bool isInPlaneLoad(InertialLoad load) {
+  switch (load) {
+    case kLoadAccelZ:
+    case kLoadAlphaX:
+    case kLoadAlphaY:
+    case kLoadSpinXZ:
+    case kLoadSpinYZ:
+      return false;
+    default:
+      return true;
+  }
+}
+
 UnitInertialLoadSolution solveUnitInertialLoads(const WingFeModel& fe, const DofPartition& part,
                                                 const std::vector<Vec3>& nodes_W_m,
                                                 const Vec3& origin_W_m) {
@@ -105,20 +118,41 @@ UnitInertialLoadSolution solveUnitInertialLoads(const WingFeModel& fe, const Dof
     throw std::invalid_argument("unit inertial loads: one position per FE node expected");
   UnitInertialLoadSolution s;
   s.loads = -(fe.mass * unitInertialAccelerations(nodes_W_m, origin_W_m));
-  std::vector<int> free = part.retained();
+  double extent = 0.0, height = 0.0;
+  for (const Vec3& x : nodes_W_m) {
+    extent = std::max(extent, (x - origin_W_m).norm());
+    height = std::max(height, std::abs(x.z() - origin_W_m.z()));
+  }
+  s.flat = height <= 1e-12 * extent;
+  std::vector<int> free;
+  for (int d : part.retained()) {
+    const int slot = d % kDofsPerNode;
+    if (!s.flat || slot == kU || slot == kV || slot == kThetaZ) free.push_back(d);
+  }
   std::sort(free.begin(), free.end());
+  std::vector<int> loads;
+  for (int i = 0; i < kInertialLoadCount; ++i) {
+    s.solved[static_cast<std::size_t>(i)] = !s.flat || isInPlaneLoad(static_cast<InertialLoad>(i));
+    if (s.solved[static_cast<std::size_t>(i)]) loads.push_back(i);
+  }
   if (free.empty()) throw std::invalid_argument("unit inertial loads: no free DOF");
   const SparseMatrix k_ff = extractBlock(fe.stiffness, free, free);
   Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(k_ff);
   if (ldlt.info() != Eigen::Success)
     throw std::runtime_error("unit inertial loads: the stiffness over the free DOFs is singular");
-  Eigen::MatrixXd f_free(static_cast<Eigen::Index>(free.size()), kInertialLoadCount);
+  Eigen::MatrixXd f_free(static_cast<Eigen::Index>(free.size()),
+                         static_cast<Eigen::Index>(loads.size()));
   for (std::size_t i = 0; i < free.size(); ++i)
-    f_free.row(static_cast<Eigen::Index>(i)) = s.loads.row(free[i]);
+    for (std::size_t j = 0; j < loads.size(); ++j)
+      f_free(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j)) =
+          s.loads(free[i], loads[j]);
   const Eigen::MatrixXd u_free = ldlt.solve(f_free);
   if (ldlt.info() != Eigen::Success || !u_free.allFinite())
     throw std::runtime_error("unit inertial loads: the static solve failed");
-  s.displacements = expandRows(u_free, free, fe.dofCount());
+  const Eigen::MatrixXd u = expandRows(u_free, free, fe.dofCount());
+  s.displacements.setZero(fe.dofCount(), kInertialLoadCount);
+  for (std::size_t j = 0; j < loads.size(); ++j)
+    s.displacements.col(loads[j]) = u.col(static_cast<Eigen::Index>(j));
   return s;
 }
 
@@ -269,6 +303,7 @@ std::vector<Eigen::MatrixXd> projectGeometricStiffness(const VehicleModel& vehic
       area(f) = fr.area_m2;
     }
     for (Eigen::Index i = 0; i < fields; ++i) {
+      if (stresses.skin_membrane_force_Npm.col(i).isZero(0.0)) continue;  // e.g. bending loads
       Eigen::VectorXd nxx(nf), nyy(nf), nxy(nf);
       for (Eigen::Index f = 0; f < nf; ++f) {
         nxx(f) = area(f) * stresses.skin_membrane_force_Npm(3 * f, i);

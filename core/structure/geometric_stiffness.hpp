@@ -61,11 +61,22 @@ Eigen::MatrixXd unitInertialAccelerations(const std::vector<Vec3>& nodes_W_m,
 struct UnitInertialLoadSolution {
   Eigen::MatrixXd loads;          ///< 6n x 12: F_i = -M a_i (N, N m per unit parameter)
   Eigen::MatrixXd displacements;  ///< 6n x 12: K u_i = F_i on the free DOFs (interior and b_f),
-                                  ///< zero on the clamped and inactive DOFs (m, rad)
+                                  ///< zero on the clamped and inactive DOFs (m, rad); zero for
+                                  ///< the loads not solved (see `solved`)
+  bool flat = false;              ///< every node in the plane z_W = z_W(P2)
+  std::array<bool, kInertialLoadCount> solved{};  ///< load i solved (all unless flat)
 };
 
-/// Solves K u_i = F_i for the 12 unit loads with the clamped DOFs of `part` held (one sparse
-/// L D L^T of K over the free DOFs). Throws std::runtime_error if K is singular there.
+/// True for the loads whose field lies in the plane of a flat wing: (a_O - g_W)_x, _y, alpha_z,
+/// w_x^2, w_y^2, w_z^2, w_x w_y.
+bool isInPlaneLoad(InertialLoad load);
+
+/// Solves K u_i = F_i for the unit loads with the clamped DOFs of `part` held (one sparse
+/// L D L^T over the free DOFs). For a flat wing (every node at z_W = z_W(P2)) K and M do not
+/// couple the in-plane DOFs (u, v, theta_z) with the others, and the out-of-plane loads bend the
+/// wing without membrane stress: only the in-plane block is factored, for the seven in-plane
+/// loads (about a third of the DOFs; the other loads' displacements stay zero). Throws
+/// std::runtime_error if K is singular there.
 UnitInertialLoadSolution solveUnitInertialLoads(const WingFeModel& fe, const DofPartition& part,
                                                 const std::vector<Vec3>& nodes_W_m,
                                                 const Vec3& origin_W_m);
