@@ -240,6 +240,7 @@ TEST(ConfigVehicleFile, WingFeSettingsRoundTrip) {
   const std::string text = vehicleToToml(v);
   EXPECT_NE(text.find("[wing.fe]\nelement_size_m = 0.0035\nmodes = 37\ncutoff_hz = 240.5\n"
                       "damping_ratio = 0.02\np3_cross_axis = \"span\"\n"
+                      "p3_joint = \"universal\"\nroot_edge = \"free\"\n"
                       "inertial_stiffness = \"softening_only\"\n"),
             std::string::npos)
       << text;
