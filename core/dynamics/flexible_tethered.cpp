@@ -184,8 +184,11 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   }
   M -= J_alpha;  // rigid rotary inertia of the nodes (w x J w vanishes about the hinge axis here)
   // Hinge power into one wing: motor moment about x times phi' = aero power + rate of kinetic
-  // energy + rate of strain energy + damping dissipation.
-  const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_));
+  // energy + rate of strain energy (elastic and, with w_x^2 K_G, geometric: the nodal sums above
+  // hold the spin softening but not the stiffening, structure.md 3.7) + damping dissipation.
+  rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
+  const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
+                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
   const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
   const double hinge = aero.power_aero_W + kinetic_rate + omega_W_.dot(J_alpha) + strain_rate +
                        damping_power;

@@ -49,9 +49,16 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   const structure::InertiaInvariants& inv = mw.invariants;
   M_qq = inv.generalized_mass;
   // structure.md 3.3: C_1 = P_32 - P_23 (1-based), K_w = sum w_k w_l P_kl - |w|^2 sum_k P_kk,
-  // h_w = sum w_k w_l S_kl - |w|^2 sum_k S_kk; here w = w_x e_x (the hinge axis).
+  // h_w = sum w_k w_l S_kl - |w|^2 sum_k S_kk; here w = w_x e_x (the hinge axis). K_w + K_G:
+  // structure/inertial_stiffness.hpp.
   C1 = inv.P(2, 1) - inv.P(1, 2);
-  P11_minus_trace = inv.P(0, 0) - (inv.P(0, 0) + inv.P(1, 1) + inv.P(2, 2));
+  inertial_stiffness = structure::modalInertialStiffness(inv, mw.geometric_stiffness,
+                                                        vehicle.wing.fe.inertial_stiffness);
+  spin_stiffness_x = inertial_stiffness.spinAbout(0, 0);
+  geometric_stiffness_x =
+      vehicle.wing.fe.inertial_stiffness == InertialStiffness::kBoth
+          ? Eigen::MatrixXd(mw.geometric_stiffness[structure::kLoadSpinXX])
+          : Eigen::MatrixXd::Zero(M, M);
   h_x = inv.S(0, 0) - (inv.S(0, 0) + inv.S(1, 1) + inv.S(2, 2));
   H_x = inv.rotational_participation.row(0).transpose();
   if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
@@ -119,7 +126,7 @@ void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
   const double wx = phi_dot_radps, ax = phi_ddot_radps2;
   Eigen::VectorXd& g = *out;
   g.noalias() = (2.0 * wx) * (flex.C1 * qd);
-  g.noalias() += (wx * wx) * (flex.P11_minus_trace * q);
+  g.noalias() += (wx * wx) * (flex.spin_stiffness_x * q);
   g.noalias() += ax * (flex.C1 * q);
   g += ax * flex.H_x + (wx * wx) * flex.h_x;
 }

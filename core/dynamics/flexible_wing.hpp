@@ -3,9 +3,12 @@
 // modes and strip loads projected back on the modes (structure.md 3.1-3.4, 4.1-4.4).
 //
 // Level L2 of structure.md 3.6: every term linear in q and q-dot of the modal equation
-//   (M_qq + A(f)) q'' + [D + 2 C(w)] q' + [K + K_w(w) + C(alpha)] q = Q_aero - H^T alpha - h_w(w)
+//   (M_qq + A(f)) q'' + [D + 2 C(w)] q' + [K + K_w(w) + K_G(w) + C(alpha)] q
+//     = Q_aero - H^T alpha - h_w(w)
 // (structure.md 3.4, tethered: the fuselage does not move, so a_O = 0 and w = phi' e_x), with
-// the apparent air mass A = sum_j b_j m_a,j psi_mid,j psi_mid,j^T on the left-hand side (4.4).
+// the apparent air mass A = sum_j b_j m_a,j psi_mid,j psi_mid,j^T on the left-hand side (4.4) and
+// the geometric stiffening K_G of the wing's own inertial loads (3.7; wing.fe.inertial_stiffness
+// selects softening and stiffening).
 #pragma once
 
 #include <memory>
@@ -16,6 +19,7 @@
 
 #include "core/model/frames.hpp"
 #include "core/model/vehicle_model.hpp"
+#include "core/structure/inertial_stiffness.hpp"
 #include "core/structure/modal_wing.hpp"
 
 namespace orni {
@@ -77,7 +81,11 @@ struct FlexibleWingModel {
   Eigen::VectorXd damping;          ///< 2 zeta_k omega_k
   Eigen::MatrixXd M_qq;             ///< generalised mass Phi^T M Phi
   Eigen::MatrixXd C1;               ///< gyroscopic matrix about x_W: P_zy - P_yz (skew)
-  Eigen::MatrixXd P11_minus_trace;  ///< P_xx - sum_k P_kk (spin softening about x_W per w^2)
+  /// K_w + K_G per w_x^2 (rotation about x_W): softening P_xx - sum_k P_kk plus the geometric
+  /// stiffness of the unit w_x^2 load, as wing.fe.inertial_stiffness selects (structure.md 3.7)
+  Eigen::MatrixXd spin_stiffness_x;
+  Eigen::MatrixXd geometric_stiffness_x;  ///< its K_G part alone (zero without stiffening)
+  structure::ModalInertialStiffness inertial_stiffness;  ///< every w_k w_l and acceleration load
   Eigen::VectorXd h_x;              ///< S_xx - sum_k S_kk (centrifugal load about x_W per w^2)
   Eigen::VectorXd H_x;              ///< row x of H (Euler load per unit alpha_x)
   Eigen::VectorXd apparent_mass_kg; ///< m_a,j = rho pi c_j^2/4 dy_j per strip
@@ -93,7 +101,8 @@ struct FlexibleWingModel {
 
 /// Generalised inertial force of the moving frame on the modes (structure.md 3.4, invariant form,
 /// level L2) for w = phi' e_x, alpha = phi'' e_x (the hinge axis; tethered fuselage):
-///   2 C(w) q' + [K_w(w) + C(alpha)] q + H^T alpha + h_w(w).
+///   2 C(w) q' + [K_w(w) + K_G(w) + C(alpha)] q + H^T alpha + h_w(w)
+/// (K_G of alpha_x vanishes: it bends the flat wing without membrane stress, structure.md 3.7).
 /// `out` must have mode_count entries; no allocation.
 void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
                        const Eigen::VectorXd& qd, double phi_dot_radps, double phi_ddot_radps2,

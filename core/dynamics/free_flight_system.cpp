@@ -57,10 +57,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
     J0_ = inv.inertia_P2_W_kgm2;
     L_ = inv.translational_participation;
     H_ = inv.rotational_participation;
-    for (int k = 0; k < 9; ++k) {
-      P_[static_cast<std::size_t>(k)] = &inv.p[static_cast<std::size_t>(k)];
-      S_[static_cast<std::size_t>(k)] = inv.s[static_cast<std::size_t>(k)];
-    }
+    for (int k = 0; k < 9; ++k) S_[static_cast<std::size_t>(k)] = inv.s[static_cast<std::size_t>(k)];
     M_qq_ = inv.generalized_mass;
     stiffness_ = flex->stiffness;
     damping_ = flex->damping;
@@ -116,17 +113,23 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   ud_.setZero(n_u_);
   f_.setZero(n_u_);
   scratch_M_.setZero(M_);
-  // Stacked invariants: one product per evaluation instead of one per matrix.
+  // Stacked invariants: one product per evaluation instead of one per matrix. Pstack_ holds the
+  // stiffness of the inertial loads per w_k w_l, softening and stiffening (structure.md 3.3, 3.7),
+  // Gstack_ the geometric stiffness of the acceleration loads that stress the wing.
   Pstack_.setZero(9 * M_, M_);
   Cstack_.setZero(3 * M_, M_);
   Smat_.setZero(9, M_);
   if (M_ > 0) {
     for (int k = 0; k < 9; ++k) {
-      Pstack_.middleRows(k * M_, M_) = *P_[static_cast<std::size_t>(k)];
+      Pstack_.middleRows(k * M_, M_) = flex->inertial_stiffness.spin[static_cast<std::size_t>(k)];
       Smat_.row(k) = S_[static_cast<std::size_t>(k)].transpose();
     }
     for (int k = 0; k < 3; ++k) Cstack_.middleRows(k * M_, M_) = C_[k];
+    linear_loads_ = flex->inertial_stiffness.linear_loads;
+    Gstack_ = flex->inertial_stiffness.linear_stack;
   }
+  Gq_all_.setZero(Gstack_.rows());
+  correction_.setZero(n_u_);
   Pq_all_.setZero(9 * M_);
   Cq_all_.setZero(3 * M_);
   Cqd_all_.setZero(3 * M_);
@@ -329,13 +332,16 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     A_.bottomRightCorner(M_, M_) += 2.0 * M_qq_;
 
     // Modal rows (structure.md 3.4): -L^T (a_O - g) - H^T alpha - h_w(w) - 2 C(w) q'
-    // - [K_w(w) + C(alpha)] q - D q' - K q, at u' = 0.
+    // - [K_w(w) + K_G(p) + C(alpha)] q - D q' - K q, at u' = 0. The geometric stiffness K_G
+    // (3.7) of the loads at u' = 0 here; its share of the body accelerations after the solve.
     const Vec3& w = omega_W_;
     const Vec3& al = alpha0_W_;
     Eigen::VectorXd& r = scratch_M_;
     r.noalias() = -(L_.transpose() * (a_O0_W_ - g_W_));
     r.noalias() -= H_.transpose() * al;
-    // K_w q = sum_kl w_k w_l P_kl q - |w|^2 M_qq q; h_w = sum_kl w_k w_l S_kl - |w|^2 sum S_kk.
+    // [K_w + K_G](w) q = sum_kl w_k w_l spin_kl q (spin_kl = P_kl - delta_kl sum_j P_jj +
+    // K^_G,kl, structure/inertial_stiffness.hpp);
+    // h_w = sum_kl w_k w_l S_kl - |w|^2 sum S_kk.
     Pq_all_.noalias() = Pstack_ * q_;
     Cq_all_.noalias() = Cstack_ * q_;
     Cqd_all_.noalias() = Cstack_ * qd_;
@@ -346,9 +352,14 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
         r -= wkl * Pq_all_.segment(idx * M_, M_);
         r -= wkl * S_[static_cast<std::size_t>(idx)];
       }
-    const double w2 = w.squaredNorm();
-    r.noalias() += w2 * (M_qq_ * q_);
-    r += w2 * S_trace_;
+    r += w.squaredNorm() * S_trace_;
+    if (Gstack_.rows() > 0) {
+      Gq_all_.noalias() = Gstack_ * q_;
+      const Vec3 a_minus_g = a_O0_W_ - g_W_;
+      for (std::size_t j = 0; j < linear_loads_.size(); ++j)
+        r -= structure::linearLoadValue(linear_loads_[j], a_minus_g, al) *
+             Gq_all_.segment(static_cast<Eigen::Index>(j) * M_, M_);
+    }
     for (int k = 0; k < 3; ++k) {
       r -= (2.0 * w[k]) * Cqd_all_.segment(k * M_, M_);
       r -= al[k] * Cq_all_.segment(k * M_, M_);
@@ -388,10 +399,26 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   }
 
   ud_ = f_;
-  if (chol_.factor(A_))  // SPD mass matrix; reads the lower triangle only
-    chol_.solveInPlace(ud_);
-  else  // not positive definite: a non-finite derivative makes the integrator retry smaller
+  if (!chol_.factor(A_)) {  // SPD mass matrix; reads the lower triangle only
+    // Not positive definite: a non-finite derivative makes the integrator retry smaller.
     ud_.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  chol_.solveInPlace(ud_);
+  if (Gstack_.rows() == 0) return;
+  // The body accelerations' share of the K_G loads, -K_G(dp(u')) q with dp linear in u', would
+  // make the system bilinear; one fixed-point step with the u' just solved leaves an error of
+  // order (A^-1 K_G q)^2: da = R^T (U' e_x + W' e_z + Q' e_y x r2), dalpha = Q' R^T e_y.
+  const Vec3 da = ud_[0] * exW + ud_[1] * ezW + ud_[2] * dQlin;
+  const Vec3 dal = ud_[2] * eyW;
+  correction_.head<3>().setZero();
+  auto modal = correction_.tail(M_);
+  modal.setZero();
+  for (std::size_t j = 0; j < linear_loads_.size(); ++j)
+    modal -= (2.0 * structure::linearLoadValue(linear_loads_[j], da, dal)) *
+             Gq_all_.segment(static_cast<Eigen::Index>(j) * M_, M_);
+  chol_.solveInPlace(correction_);
+  ud_ += correction_;
 }
 
 void FreeFlightSystem::apparentAccelerations() {

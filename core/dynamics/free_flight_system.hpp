@@ -105,7 +105,6 @@ class FreeFlightSystem {
   Vec3 c0_ = Vec3::Zero();
   Mat3 J0_ = Mat3::Zero();
   Eigen::Matrix3Xd L_, H_;
-  std::array<const Eigen::MatrixXd*, 9> P_{};
   std::array<Eigen::VectorXd, 9> S_;
   Eigen::MatrixXd C_[3];   // C_x, C_y, C_z (skew)
   Eigen::MatrixXd M_qq_;
@@ -119,6 +118,9 @@ class FreeFlightSystem {
   int n_u_ = 3;
   Eigen::VectorXd q_, qd_, ud_, f_, scratch_M_;
   Eigen::MatrixXd Pstack_, Cstack_, Smat_;  // stacked invariants (constructor)
+  std::vector<structure::InertialLoad> linear_loads_;  // acceleration loads with a K_G
+  Eigen::MatrixXd Gstack_;                              // their K^_G, stacked
+  Eigen::VectorXd Gq_all_, correction_;  // K^_G q per load; u' correction (n_u)
   Eigen::VectorXd Pq_all_, Cq_all_, Cqd_all_, Sq_{9}, Sqd_{9};
   Eigen::MatrixXd A_;
   SmallCholesky chol_;

@@ -4,8 +4,9 @@
 // stiffness and damping,
 //   L y:  q' = q-dot,   q-dot' = -A0^{-1} (K q + D q-dot),
 // integrated by the ESDIRK half of an additive Runge-Kutta pair; the explicit part is the full
-// right-hand side minus L y (aerodynamics, the separation-dependent apparent mass, frame inertia,
-// body coupling). Measured on the calibrated magpie (12 modes to 332 Hz): the full Jacobian has
+// right-hand side minus L y (aerodynamics, the separation-dependent apparent mass, frame inertia
+// with the time-varying spin softening and geometric stiffening of structure.md 3.7, body
+// coupling). Measured on the calibrated magpie (12 modes to 332 Hz): the full Jacobian has
 // eigenvalues up to |lambda| = 2025 rad/s on the imaginary axis; the explicit remainder's are
 // real, below 1000 1/s, and hardly depend on the reference separation fraction of A0.
 //

@@ -59,7 +59,14 @@ enum class P3Joint {
   kClamped,    ///< all three: the stiffener roots bonded to a root block that flaps with W
 };
 
-/// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6).
+/// Stiffness of the inertial loads on the flexible wing's modes (structure.md 3.7).
+enum class InertialStiffness {
+  kBoth,           ///< spin softening K_w and geometric (stress) stiffening K_G: the physics
+  kSofteningOnly,  ///< K_w only: a linear flexible body with the I9 invariant (earlier versions)
+  kNone,           ///< neither: a linear flexible body without I9 (sensitivity test of 3.7)
+};
+
+/// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6, 3.7).
 struct WingFeSettings {
   double element_size_m = 0.005;  ///< target element edge h, (0, semispan]
   int mode_count = 12;            ///< fixed-interface modes kept (at most), [1, 200]
@@ -71,6 +78,7 @@ struct WingFeSettings {
   /// translation, as a membrane taped to the fuselage along the hinge line; false = the wing is
   /// attached at P2 and P3 only (the paper).
   bool root_edge_pinned = false;
+  InertialStiffness inertial_stiffness = InertialStiffness::kBoth;  ///< structure.md 3.7
 };
 
 /// Geometry and structure of the right wing; the left wing is its mirror image.

@@ -22,7 +22,9 @@ const Material& requireMaterial(const VehicleModel& vehicle, const std::string& 
   return *m;
 }
 
-std::vector<BeamProperties> memberProperties(const VehicleModel& vehicle) {
+}  // namespace
+
+std::vector<BeamProperties> memberBeamProperties(const VehicleModel& vehicle) {
   std::vector<BeamProperties> props;
   props.reserve(vehicle.wing.members.size());
   for (const WingMember& member : vehicle.wing.members) {
@@ -33,7 +35,7 @@ std::vector<BeamProperties> memberProperties(const VehicleModel& vehicle) {
   return props;
 }
 
-ShellProperties skinProperties(const VehicleModel& vehicle) {
+ShellProperties skinShellProperties(const VehicleModel& vehicle) {
   const WingSkin& skin = vehicle.wing.skin;
   if (!(skin.thickness_m > 0.0))
     throw std::invalid_argument("wing FE model: expected skin thickness > 0, got " +
@@ -46,6 +48,8 @@ ShellProperties skinProperties(const VehicleModel& vehicle) {
   p.density_kgpm3 = mat.density_kgpm3;
   return p;
 }
+
+namespace {
 
 void checkNode(int node, int node_count) {
   if (node < 0 || node >= node_count)
@@ -160,7 +164,7 @@ WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
   model.node_count = n;
   model.active = dofActivityMask(mesh);  // also validates node indices
 
-  const std::vector<BeamProperties> members = memberProperties(vehicle);
+  const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
   const bool lumped = options.mass == MassLumping::kLumped;
 
   std::vector<Triplet> k_triplets, m_triplets;
@@ -180,7 +184,7 @@ WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
   }
 
   if (!mesh.triangles.empty()) {
-    const ShellProperties skin = skinProperties(vehicle);
+    const ShellProperties skin = skinShellProperties(vehicle);
     for (const auto& tri : mesh.triangles) {
       const std::array<Vec3, 3> x = facetNodes(mesh, tri);
       scatter(shellStiffness(x, skin), tri, k_triplets);
@@ -203,7 +207,7 @@ LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mes
   LumpedNodalMass out;
   out.mass_kg = Eigen::VectorXd::Zero(n);
   out.rotary_W_kgm2.assign(static_cast<std::size_t>(n), Mat3::Zero());
-  const std::vector<BeamProperties> members = memberProperties(vehicle);
+  const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
   for (const BeamElement& b : mesh.beams) {
     for (int node : b.nodes) checkNode(node, n);
     const Mat12 m = beamLumpedMass(mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[0])],
@@ -216,7 +220,7 @@ LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mes
     }
   }
   if (!mesh.triangles.empty()) {
-    const ShellProperties skin = skinProperties(vehicle);
+    const ShellProperties skin = skinShellProperties(vehicle);
     for (const auto& tri : mesh.triangles) {
       for (int node : tri) checkNode(node, n);
       const Mat18 m = shellLumpedMass(facetNodes(mesh, tri), skin);

@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "core/model/vehicle_model.hpp"
+#include "core/structure/beam_element.hpp"
 #include "core/structure/fe_types.hpp"
+#include "core/structure/shell_element.hpp"
 #include "core/structure/wing_mesh.hpp"
 
 namespace orni::structure {
@@ -30,6 +32,14 @@ struct WingFeModel {
   int dofCount() const { return kDofsPerNode * node_count; }
   double totalMass_kg() const { return member_mass_kg + skin_mass_kg; }
 };
+
+/// Section and material of every member (index = member), solid rods of wing.memberDiameter.
+/// Throws std::invalid_argument for a material not in [materials].
+std::vector<BeamProperties> memberBeamProperties(const VehicleModel& vehicle);
+
+/// The skin's shell properties. Throws std::invalid_argument for a missing material or a
+/// thickness <= 0.
+ShellProperties skinShellProperties(const VehicleModel& vehicle);
 
 /// Assembles K and M by triplets. Throws std::invalid_argument for a missing material, a bad
 /// member index, a node index out of range or a non-positive skin thickness when facets exist.

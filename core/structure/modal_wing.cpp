@@ -124,6 +124,9 @@ ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
   w.nodal_mass_kg = lumped.mass_kg;
   w.nodal_rotary_W_kgm2 = lumped.rotary_W_kgm2;
   w.invariants = invariantsOperatorForm(fe.mass, w.mode_shapes, mesh.nodes_W_m, p2);
+  if (options.geometric_stiffness)
+    w.geometric_stiffness =
+        modalGeometricStiffness(vehicle, mesh, fe, part, w.mode_shapes, fe_options);
   w.member_mass_kg = fe.member_mass_kg;
   w.skin_mass_kg = fe.skin_mass_kg;
   w.wing_mass_kg = fe.totalMass_kg();

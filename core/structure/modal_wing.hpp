@@ -8,6 +8,7 @@
 
 #include "core/model/vehicle_model.hpp"
 #include "core/structure/fe_assembly.hpp"
+#include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/inertia_invariants.hpp"
 #include "core/structure/modal_solver.hpp"
 #include "core/structure/mode_selection.hpp"
@@ -31,6 +32,8 @@ struct ModalWingOptions {
   double damping_ratio = 0.015;     ///< zeta of every elastic mode, [0, 1) (structure.md 2.6)
   ModalDampingSchedule damping_schedule = ModalDampingSchedule::kConstant;
   EigenSolveOptions eigen;
+  /// Compute the modal geometric stiffness of the unit inertial loads (structure.md 3.7).
+  bool geometric_stiffness = true;
 
   bool IsValid(std::string* why) const;
 };
@@ -45,6 +48,8 @@ struct ModalWing {
   Eigen::VectorXd nodal_mass_kg;          ///< lumped translational mass per node
   std::vector<Mat3> nodal_rotary_W_kgm2;  ///< lumped rotary block per node
   InertiaInvariants invariants;           ///< operator form with the chosen M, about P2
+  ModalGeometricStiffness geometric_stiffness;  ///< K^_G per unit inertial load (structure.md
+                                                ///< 3.7); empty if not asked for
   double wing_mass_kg = 0.0;              ///< members + skin
   double member_mass_kg = 0.0;
   double skin_mass_kg = 0.0;

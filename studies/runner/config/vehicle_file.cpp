@@ -36,6 +36,11 @@ const std::vector<std::pair<std::string, P3Joint>> kP3Joints = {
     {"clamped", P3Joint::kClamped}};
 /// The root chord's support: free (attached at P2 and P3 only) or pinned along y_W = 0.
 const std::vector<std::pair<std::string, bool>> kRootEdges = {{"free", false}, {"pinned", true}};
+/// Stiffness of the inertial loads on the modes (structure.md 3.7).
+const std::vector<std::pair<std::string, InertialStiffness>> kInertialStiffness = {
+    {"both", InertialStiffness::kBoth},
+    {"softening_only", InertialStiffness::kSofteningOnly},
+    {"none", InertialStiffness::kNone}};
 /// Largest number of fixed-interface modes a vehicle may ask for.
 constexpr int kMaxModes = 200;
 
@@ -172,7 +177,7 @@ void readWing(TableReader& top, VehicleModel& v) {
   // [wing.fe]: finite-element and modal settings, every key optional (structure.md 1.6, 2.5, 2.6).
   if (std::optional<TableReader> fe = w.optionalTable(
           "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis",
-                 "p3_joint", "root_edge"})) {
+                 "p3_joint", "root_edge", "inertial_stiffness"})) {
     WingFeSettings& f = wing.fe;
     f.element_size_m = fe->optionalDouble("element_size_m", f.element_size_m,
                                           Range::openClosed(0.0, wing.semispan_m));
@@ -184,6 +189,8 @@ void readWing(TableReader& top, VehicleModel& v) {
         fe->optionalEnum("p3_cross_axis", f.p3_cross_axis_normal, kCrossAxes);
     f.p3_joint = fe->optionalEnum("p3_joint", f.p3_joint, kP3Joints);
     f.root_edge_pinned = fe->optionalEnum("root_edge", f.root_edge_pinned, kRootEdges);
+    f.inertial_stiffness =
+        fe->optionalEnum("inertial_stiffness", f.inertial_stiffness, kInertialStiffness);
     fe->finish();
   } else if (!(wing.fe.element_size_m <= wing.semispan_m)) {
     // Default h = min(5 mm, s), so that a (tiny) wing without [wing.fe] still writes a resolved
@@ -363,6 +370,7 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
   out.string("p3_cross_axis", nameOf(kCrossAxes, w.fe.p3_cross_axis_normal));
   out.string("p3_joint", nameOf(kP3Joints, w.fe.p3_joint));
   out.string("root_edge", nameOf(kRootEdges, w.fe.root_edge_pinned));
+  out.string("inertial_stiffness", nameOf(kInertialStiffness, w.fe.inertial_stiffness));
 
   for (const Material& m : v.materials) {
     out.header(path({"materials", m.name}));

@@ -56,6 +56,7 @@ void expectSameVehicle(const VehicleModel& a, const VehicleModel& b) {
   EXPECT_EQ(a.wing.fe.cutoff_hz, b.wing.fe.cutoff_hz);
   EXPECT_EQ(a.wing.fe.damping_ratio, b.wing.fe.damping_ratio);
   EXPECT_EQ(a.wing.fe.p3_cross_axis_normal, b.wing.fe.p3_cross_axis_normal);
+  EXPECT_EQ(a.wing.fe.inertial_stiffness, b.wing.fe.inertial_stiffness);
   ASSERT_EQ(a.materials.size(), b.materials.size());
   for (std::size_t i = 0; i < a.materials.size(); ++i) {
     EXPECT_EQ(a.materials[i].name, b.materials[i].name);
@@ -235,9 +236,12 @@ TEST(ConfigVehicleFile, WingFeSettingsRoundTrip) {
   v.wing.fe.cutoff_hz = 240.5;
   v.wing.fe.damping_ratio = 0.02;
   v.wing.fe.p3_cross_axis_normal = false;
+  v.wing.fe.inertial_stiffness = InertialStiffness::kSofteningOnly;
   const std::string text = vehicleToToml(v);
   EXPECT_NE(text.find("[wing.fe]\nelement_size_m = 0.0035\nmodes = 37\ncutoff_hz = 240.5\n"
-                      "damping_ratio = 0.02\np3_cross_axis = \"span\"\n"),
+                      "damping_ratio = 0.02\np3_cross_axis = \"span\"\n"
+                      "p3_joint = \"universal\"\nroot_edge = \"free\"\n"
+                      "inertial_stiffness = \"softening_only\"\n"),
             std::string::npos)
       << text;
   const toml::table t = toml::parse(std::string_view(text), std::string("resolved.toml"));
@@ -275,6 +279,7 @@ theta_deg = 0.0
   EXPECT_EQ(v.wing.fe.cutoff_hz, d.cutoff_hz);
   EXPECT_EQ(v.wing.fe.damping_ratio, d.damping_ratio);
   EXPECT_EQ(v.wing.fe.p3_cross_axis_normal, d.p3_cross_axis_normal);
+  EXPECT_EQ(v.wing.fe.inertial_stiffness, InertialStiffness::kBoth);  // structure.md 3.7
 }
 
 TEST(ConfigTomlWriter, NumbersAreShortAndExact) {
@@ -386,6 +391,12 @@ TEST(ConfigVehicleMessages, WingFeFormats) {
   EXPECT_EQ(errorOf(withFe("element_size_m = 0.002\nmodes = 200\ncutoff_hz = 0\n"
                            "damping_ratio = 0\np3_cross_axis = \"span\"\n")),
             "accepted");
+  for (const char* model : {"both", "softening_only", "none"})
+    EXPECT_EQ(errorOf(withFe(std::string("inertial_stiffness = \"") + model + "\"\n")),
+              "accepted");
+  EXPECT_EQ(errorOf(withFe("inertial_stiffness = \"softening\"\n")),
+            "mem.toml:11: key 'wing.fe.inertial_stiffness': expected one of \"both\", "
+            "\"softening_only\" or \"none\", got a string \"softening\"");
   EXPECT_EQ(errorOf(withFe("element_size_m = 0.0\n")),
             "mem.toml:11: key 'wing.fe.element_size_m': expected a number in (0, 0.27], got 0");
   EXPECT_EQ(errorOf(withFe("element_size_m = 0.3\n")),

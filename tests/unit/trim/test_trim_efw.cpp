@@ -1,9 +1,12 @@
-// Trim of the paper's ornithopter (studies/vehicles/efw_magpie.toml, flexible wing, calibrated by
-// studies/paper/calibrate_magpie.toml) at the paper's 12 Hz: the residual is the core's cycle means
-// minus the weight; the Eq. (4) stage re-evaluated with an independent, tighter simulation is in
-// equilibrium to 1e-4 W; the free-flight refined trim is the published one (Table 3, the issue's
-// tolerances) and flies bounded; three initial guesses find the same trim; impossible requests end
-// not_converged with a reason.
+// Trim of the paper's ornithopter (studies/vehicles/efw_magpie.toml: the honest vehicle of issue
+// 13, Table 1's wing read literally, one fitted discrete choice) at the paper's 12 Hz: the residual
+// is the core's cycle means minus the weight; the Eq. (4) stage re-evaluated with an independent,
+// tighter simulation is in equilibrium to 1e-4 W; the free-flight refined trim is the vehicle's
+// committed prediction (results/paper/table3_trim) and flies bounded; three initial guesses find
+// the same trim; impossible requests end not_converged with a reason. The honest vehicle does not
+// trim at the paper's Table 3 point (theta 9.2 deg, U 10.8 m/s, tail 11.85 deg): its wing makes
+// more thrust than its small drag needs there (results/README.md, the literal-wing
+// investigation), so it trims faster and with more tail.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,9 +28,13 @@ constexpr double kEquilibriumFraction = 1e-4;
 constexpr double kSameTrimDeg = 0.05;
 constexpr double kSameTrimSpeed = 0.02;
 constexpr double kTrimFreqHz = 12.0;
-// Paper Table 3 and the issue's tolerances.
-constexpr double kPaperThetaDeg = 9.2, kPaperSpeed = 10.8, kPaperTailDeg = 11.85;
-constexpr double kThetaTolDeg = 0.5, kSpeedTol = 0.3, kTailTolDeg = 0.5;
+// The honest vehicle's committed 12 Hz trim (results/paper/table3_trim/summary.json) and how far a
+// change may move it before this regression fails: a few times the multi-start spread above, far
+// below any physical change (0.5 deg, 0.3 m/s, 0.5 deg are issue 13's bounds for Table 3).
+constexpr double kCommittedThetaDeg = 16.35, kCommittedSpeed = 16.32, kCommittedTailDeg = 19.98;
+constexpr double kThetaTolDeg = 0.1, kSpeedTol = 0.05, kTailTolDeg = 0.1;
+// Paper Table 3, which the honest vehicle does not reach (issue 13's tolerances).
+constexpr double kPaperThetaDeg = 9.2, kPaperSpeed = 10.8;
 
 VehicleModel efw() {
   return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
@@ -67,16 +74,19 @@ TEST(TrimEfw, ResidualIsTheCycleMeansMinusTheWeight) {
   EXPECT_TRUE(rec.result.steady);
 }
 
-TEST(TrimEfw, ReproducesThePublishedTrimPointAndFliesBounded) {
+TEST(TrimEfw, TrimsAtItsCommittedPointAndFliesBounded) {
   const VehicleModel v = efw();
   const FlightCoreModel model(v);
   const TrimSummary s = solveTrim(model, optionsAt(v, kTrimFreqHz));
   ASSERT_EQ(s.status, TrimStatus::kOk) << s.message;
   EXPECT_LE(s.scaled_residual_max, kEquilibriumFraction);
   EXPECT_TRUE(s.refined_in_free_flight);
-  EXPECT_NEAR(s.solution.theta_rad * kRadToDeg, kPaperThetaDeg, kThetaTolDeg);
-  EXPECT_NEAR(s.solution.speed_mps, kPaperSpeed, kSpeedTol);
-  EXPECT_NEAR(s.solution.tail_angle_rad * kRadToDeg, kPaperTailDeg, kTailTolDeg);
+  EXPECT_NEAR(s.solution.theta_rad * kRadToDeg, kCommittedThetaDeg, kThetaTolDeg);
+  EXPECT_NEAR(s.solution.speed_mps, kCommittedSpeed, kSpeedTol);
+  EXPECT_NEAR(s.solution.tail_angle_rad * kRadToDeg, kCommittedTailDeg, kTailTolDeg);
+  // The finding, pinned: not the paper's point (more than issue 13's 0.5 deg and 0.3 m/s away).
+  EXPECT_GT(std::abs(s.solution.theta_rad * kRadToDeg - kPaperThetaDeg), 0.5);
+  EXPECT_GT(std::abs(s.solution.speed_mps - kPaperSpeed), 0.3);
   EXPECT_EQ(s.free_flight.status, FreeFlightStatus::kBounded) << s.free_flight.message;
   EXPECT_TRUE(s.free_flight.bounded);
 
