@@ -1,7 +1,7 @@
 // The implicit-explicit integration of the flexible wing (core/dynamics/modal_implicit_split.*):
 // the split's stage solve inverts (I - gamma L) exactly; the IMEX runs agree with the explicit
 // Runge-Kutta runs (a second integrator of the same equations) and with a tight-tolerance
-// reference, tethered and in free flight, on the honest magpie (24 modes up to about 500 Hz, where
+// reference, tethered and in free flight, on the honest magpie (24 modes up to 460 Hz, where
 // an explicit method is stability-limited) at its 12 Hz trim.
 #include <gtest/gtest.h>
 
