@@ -2,7 +2,8 @@
 // reported with its real cause, exit status 1, no figure, no CSV of results, and no value as if
 // it were a result (summary.json "mean": null). The failure is provoked through the model struct
 // (an air density of 1e-300 zeroes the quadratures' tolerance scales and ARKODE stops at t = 0),
-// not through a vehicle file, so the test does not depend on the file readers' ranges.
+// not through a vehicle file, so the test does not depend on the file readers' ranges. In free
+// flight the failing part is the periodic start, the tethered run the wing is released from.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -60,6 +61,30 @@ TEST_F(CommandsSimulate, FailedRunReportsItsCauseAndNoResult) {
     EXPECT_FALSE(fs::exists(dir_ / f)) << f;
   for (const auto& e : fs::directory_iterator(dir_))
     EXPECT_EQ(e.path().filename().string().find("tmp"), std::string::npos) << e.path();
+}
+
+TEST_F(CommandsSimulate, FailedFreeFlightReportsItsCauseAndNoResult) {
+  Study study =
+      studyFromVehicle(fs::path(ORNI_SOURCE_DIR) / "studies" / "vehicles" / "efw_magpie.toml");
+  study.simulate.mode = FlightMode::kFree;
+  study.simulate.cycles = 2;
+  study.vehicle.air.density_kgpm3 = 1e-300;  // the periodic start (tethered) fails at t = 0
+  fs::create_directories(dir_);
+  for (const char* f : {"flight.png", "phase.gp", "histories.csv", "spectra.csv"})
+    std::ofstream(dir_ / f) << "from an earlier run\n";
+
+  EXPECT_EQ(runSimulateStudy(study, dir_), 1);
+
+  const std::string summary = readAll(dir_ / "summary.json");
+  EXPECT_NE(summary.find("\"status\": \"failed\""), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"message\": \"the periodic start"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("ARKODE"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"mean\": null"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("\"bounded\": null"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("norm_ratio_max"), std::string::npos) << summary;
+  for (const char* f : {"flight.png", "flight.gp", "cycle.png", "phase.gp", "phase.png",
+                        "histories.csv", "spectra.csv"})
+    EXPECT_FALSE(fs::exists(dir_ / f)) << f;
 }
 
 TEST_F(CommandsSimulate, FinishedRunKeepsItsMeans) {
