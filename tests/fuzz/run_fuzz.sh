@@ -33,8 +33,11 @@ ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:ha
   > "$log" 2>&1
 rc=$?
 set -e
-# The last status line ("#N DONE cov: C ft: F corp: ...") and the final statistics.
-grep -E '^#[0-9]+ +(DONE|INITED)' "$log" | tail -2 || true
+# Coverage: instrumented edges of the binary, then the first and last status lines
+# ("#N INITED|DONE cov: C ft: F corp: ...": C edges covered, F features) and the statistics.
+grep -m1 -E 'INFO: Seed:' "$log" || true
+grep -m1 -E 'INFO: Loaded [0-9]+ modules' "$log" || true
+grep -E '^#[0-9]+[[:space:]]+(INITED|DONE)' "$log" || true
 grep -E '^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb|new_units_added)' \
   "$log" || true
 if [[ $rc -ne 0 ]] || grep -qE 'ERROR: (libFuzzer|AddressSanitizer|UndefinedBehaviorSanitizer)|FINDING|runtime error:' "$log"; then
