@@ -181,7 +181,10 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
           .set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered")
           .set("trim_point", trim_point);
       writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-      writeFileAtomic(out_dir / "summary.json", summary.toString());
+      // Nothing was flown: the outputs of an earlier run must not pass for this one's.
+      removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv", "spectra.csv"},
+                       {"loads", "zmp", "flight", "cycle", "phase"});
+      writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
       std::cout << study.name << ": not_converged: no trim to fly at: " << t.message << "\n";
       return 0;
     }
