@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/dynamics/flapping.hpp"
+#include "core/model/invalid_model_error.hpp"
 
 namespace orni {
 
@@ -28,7 +29,7 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       twist_mid_qdd_(2 * static_cast<Eigen::Index>(model.strips.size())),
       split_(flex, 0, 2 * M_ + n_aero_ + kQuadratureChannels) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
-    throw std::invalid_argument(
+    throw InvalidModelError(
         "the flexible wing needs aero model mst-td with the Scherer lag and a smooth stall "
         "(stall_width_deg > 0)");
   // Friction coefficients for the tethered speed (M11 depends on U only).

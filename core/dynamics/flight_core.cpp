@@ -5,6 +5,7 @@
 
 #include "core/aero/tail.hpp"
 #include "core/dynamics/flexible_wing.hpp"
+#include "core/model/invalid_model_error.hpp"
 
 namespace orni {
 
@@ -34,7 +35,7 @@ FlightCoreModel::FlightCoreModel(const VehicleModel& v)
   n_W = Vec3(-std::sin(i), 0.0, -std::cos(i));   // rotY(i) (-e_z)
   if (v.wing.structure == StructureLevel::kFlexible) {
     if (v.wing.incidence_rad != 0.0)
-      throw std::invalid_argument("the flexible wing model is flat: wing.incidence_deg must be 0");
+      throw InvalidModelError("the flexible wing model is flat: wing.incidence_deg must be 0");
     std::vector<double> chords, widths;
     for (const aero::StripGeometry& g : strip_geometry) {
       chords.push_back(g.chord_m);

@@ -51,10 +51,11 @@ double scaledNorm(const BodyState& s, const BodyState& ref, const FreeFlightBoun
 // flap phase 0), and the body's periodic oscillation to first order: the zero-mean parts of the
 // tethered loads over that cycle integrated once (U, W, Q) and twice (theta), with the vehicle's
 // mass and pitch inertia. Without it the release at Q = 0 starts a pitch and phugoid transient
-// (a zero-mean moment integrated from one phase has a non-zero mean rate).
-void startFromPeriodicState(const FlightCoreModel& model, const OperatingPoint& point,
-                            const SimulationOptions& options, const FreeFlightSystem& sys,
-                            FreeFlightSummary* summary, double* y0) {
+// (a zero-mean moment integrated from one phase has a non-zero mean rate). Returns why the
+// tethered run could not give the periodic state (it failed or diverged), empty on success.
+std::string startFromPeriodicState(const FlightCoreModel& model, const OperatingPoint& point,
+                                   const SimulationOptions& options, const FreeFlightSystem& sys,
+                                   FreeFlightSummary* summary, double* y0) {
   SimulationOptions t = options;
   t.mode = FlightMode::kTethered;
   t.cycles = options.free.periodic_start_cycles;
@@ -65,7 +66,8 @@ void startFromPeriodicState(const FlightCoreModel& model, const OperatingPoint& 
   t.samples_per_cycle = 32;
   TimeHistory hist;
   const SimulationSummary ts = simulateTethered(model, point, t, &hist);
-  if (ts.status != SimulationStatus::kOk && ts.status != SimulationStatus::kNotConverged) return;
+  if (ts.status != SimulationStatus::kOk && ts.status != SimulationStatus::kNotConverged)
+    return std::string(toString(ts.status)) + ": " + ts.message;
   const int M = sys.modeCount();
   const std::vector<double>& w = ts.final_wing_state;
   if (ts.final_mode_count != M ||
@@ -75,7 +77,7 @@ void startFromPeriodicState(const FlightCoreModel& model, const OperatingPoint& 
 
   // Body oscillation over the last cycle (uniform samples, endpoint = the release point).
   const std::size_t spc = static_cast<std::size_t>(t.samples_per_cycle);
-  if (hist.loads.size() < spc + 1) return;
+  if (hist.loads.size() < spc + 1) return std::string();
   const std::size_t first = hist.loads.size() - 1 - spc;
   const double dt = 1.0 / (point.freq_hz * static_cast<double>(spc));
   const double m = model.vehicle.body.mass_kg, I = model.vehicle.body.pitch_inertia_kgm2;
@@ -112,6 +114,7 @@ void startFromPeriodicState(const FlightCoreModel& model, const OperatingPoint& 
   y0[3] = b.U_mps + U[spc];
   y0[4] = b.W_mps + W[spc];
   y0[5] = Q[spc];
+  return std::string();
 }
 
 }  // namespace
@@ -135,8 +138,16 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
   sys.initialState(0.0, summary.initial, y0.data());
-  if (fo.periodic_start_cycles > 0) startFromPeriodicState(model, point, options, sys, &summary,
-                                                          y0.data());
+  if (fo.periodic_start_cycles > 0) {
+    const std::string why_not =
+        startFromPeriodicState(model, point, options, sys, &summary, y0.data());
+    if (!why_not.empty()) {  // no periodic state to release from: the run has no result
+      summary.status = SimulationStatus::kFailed;
+      summary.message = "the periodic start (a tethered run at the release point) " + why_not;
+      if (history) *history = FreeFlightHistory{};
+      return summary;
+    }
+  }
   const double period_s = 1.0 / point.freq_hz;
   IntegratorOptions iopt;
   iopt.rel_tol = options.rel_tol;

@@ -23,7 +23,8 @@ struct FreeFlightHistory {
 };
 
 struct FreeFlightSummary {
-  SimulationStatus status = SimulationStatus::kFailed;  ///< ok or diverged (or failed)
+  SimulationStatus status = SimulationStatus::kFailed;  ///< ok, diverged, or failed (the
+                                                        ///< periodic start failed: no result)
   std::string message;
   int cycles_run = 0;          ///< whole cycles completed
   double end_time_s = 0.0;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "core/dynamics/flapping.hpp"
+#include "core/model/invalid_model_error.hpp"
 
 namespace orni {
 
@@ -45,7 +46,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
       kin_(flex ? flex->stacked : rigid_stacked_, M_),
       chol_(3 + M_) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
-    throw std::invalid_argument(
+    throw InvalidModelError(
         "free flight needs aero model mst-td with the Scherer lag and a smooth stall "
         "(stall_width_deg > 0)");
   const std::size_t ns = model.strips.size();
@@ -92,7 +93,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   m_f_ = model.vehicle.body.mass_kg - 2.0 * m_w_;
   I_f_ = model.vehicle.body.pitch_inertia_kgm2 - 2.0 * wing_pitch_inertia_P1;
   if (!(m_f_ > 0.0))
-    throw std::invalid_argument("free flight: body.mass_kg (" +
+    throw InvalidModelError("free flight: body.mass_kg (" +
                                 std::to_string(model.vehicle.body.mass_kg) +
                                 " kg) must exceed the mass of both wings (" +
                                 std::to_string(2.0 * m_w_) + " kg)");
@@ -101,7 +102,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   r_f_B_ = m_f_ > 0.0 ? Vec3(-2.0 * (m_w_ * r2_B_ + c0_) / m_f_) : Vec3::Zero();
   r_f_B_.y() = 0.0;
   if (!(I_f_ > 0.0))
-    throw std::invalid_argument(
+    throw InvalidModelError(
         "free flight: body.pitch_inertia_kgm2 (" +
         std::to_string(model.vehicle.body.pitch_inertia_kgm2) +
         " kg m^2) must exceed the pitch inertia of both wings about P1 (" +

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "core/model/invalid_model_error.hpp"
 #include "core/model/wing_geometry.hpp"
 
 namespace orni::structure {
@@ -106,18 +107,18 @@ std::string point(double x, double y) { return "(" + fmt(x) + ", " + fmt(y) + ")
 
 void validateWing(const WingModel& wing, double h) {
   if (!(h > 0.0) || !std::isfinite(h))
-    throw std::invalid_argument("buildWingMesh: expected element size h > 0, got " + fmt(h));
+    throw InvalidModelError("buildWingMesh: expected element size h > 0, got " + fmt(h));
   if (!(wing.semispan_m > 0.0) || !std::isfinite(wing.semispan_m))
-    throw std::invalid_argument("buildWingMesh: expected semispan > 0, got " +
+    throw InvalidModelError("buildWingMesh: expected semispan > 0, got " +
                                 fmt(wing.semispan_m));
   if (!(wing.root_chord_m > 0.0) || !std::isfinite(wing.root_chord_m))
-    throw std::invalid_argument("buildWingMesh: expected root chord > 0, got " +
+    throw InvalidModelError("buildWingMesh: expected root chord > 0, got " +
                                 fmt(wing.root_chord_m));
   if (wing.strip_count < 1)
-    throw std::invalid_argument("buildWingMesh: expected strip count >= 1, got " +
+    throw InvalidModelError("buildWingMesh: expected strip count >= 1, got " +
                                 std::to_string(wing.strip_count));
   if (!(wing.p3_aft_of_le_m >= 0.0 && wing.p3_aft_of_le_m <= wing.root_chord_m))
-    throw std::invalid_argument("buildWingMesh: expected P3 aft of the leading edge in [0, " +
+    throw InvalidModelError("buildWingMesh: expected P3 aft of the leading edge in [0, " +
                                 fmt(wing.root_chord_m) + "] m, got " +
                                 fmt(wing.p3_aft_of_le_m));
 }
@@ -140,13 +141,13 @@ std::vector<Member> collectMembers(const WingModel& wing, double snap) {
     m.xb = wm.end_x_W_m;
     m.yb = wm.end_y_W_m;
     if (!insidePlanform(wing, m.xa, m.ya, snap) || !insidePlanform(wing, m.xb, m.yb, snap))
-      throw std::invalid_argument("buildWingMesh: member '" + m.name + "' from " +
+      throw InvalidModelError("buildWingMesh: member '" + m.name + "' from " +
                                   point(m.xa, m.ya) + " to " + point(m.xb, m.yb) +
                                   " m lies outside the planform (expected 0 <= y_W <= " +
                                   fmt(wing.semispan_m) + " and -c(y) <= x_W <= 0)");
     m.length = std::hypot(m.xb - m.xa, m.yb - m.ya);
     if (!(m.length > snap))
-      throw std::invalid_argument("buildWingMesh: member '" + m.name + "' has zero length (" +
+      throw InvalidModelError("buildWingMesh: member '" + m.name + "' has zero length (" +
                                   point(m.xa, m.ya) + " to " + point(m.xb, m.yb) + ")");
     m.chordwise = std::abs(m.yb - m.ya) <= snap;
     members.push_back(m);
@@ -172,7 +173,7 @@ void checkNoCrossings(const std::vector<Member>& members, double snap) {
       const double u = cross2(qx, qy, rx, ry) / denom;
       const double ta = snap / a.length, tb = snap / b.length;
       if (t > ta && t < 1.0 - ta && u > tb && u < 1.0 - tb)
-        throw std::invalid_argument("buildWingMesh: members '" + a.name + "' and '" + b.name +
+        throw InvalidModelError("buildWingMesh: members '" + a.name + "' and '" + b.name +
                                     "' cross at " + point(a.xa + t * rx, a.ya + t * ry) +
                                     " m away from their end points");
     }
@@ -213,7 +214,7 @@ std::vector<StationCandidate> mandatoryStations(const WingModel& wing,
       if (cand[i].priority > best.priority) best = cand[i];
       if (cand[i].strip_mid >= 0) {
         if (strip_mid >= 0 && strip_mid != cand[i].strip_mid)
-          throw std::invalid_argument("buildWingMesh: strips too narrow for the element size");
+          throw InvalidModelError("buildWingMesh: strips too narrow for the element size");
         strip_mid = cand[i].strip_mid;
       }
     }
@@ -309,7 +310,7 @@ WingMesh buildWingMesh(const VehicleModel& vehicle, double element_size_m) {
     const double stations = s / h + 2.0 * wing.strip_count + 2.0 + member_length / h;
     const double per_station = c0 / h + 6.0 + 2.0 * static_cast<double>(members.size());
     if (stations * per_station > kMaxEstimatedNodes)
-      throw std::invalid_argument("buildWingMesh: element size " + fmt(h) +
+      throw InvalidModelError("buildWingMesh: element size " + fmt(h) +
                                   " m is too small for this wing (about " +
                                   fmt(stations * per_station) + " nodes)");
   }
@@ -384,7 +385,7 @@ WingMesh buildWingMesh(const VehicleModel& vehicle, double element_size_m) {
       return std::find(tags.begin(), tags.end(), tag) != tags.end();
     };
     if (!hasTag(key_tags.front(), kTagTrailingEdge) || !hasTag(key_tags.back(), kTagLeadingEdge))
-      throw std::invalid_argument("buildWingMesh: a member leaves the planform at station y_W = " +
+      throw InvalidModelError("buildWingMesh: a member leaves the planform at station y_W = " +
                                   fmt(st.y) + " m");
     // Fill the gaps with round(len / h) equal segments (at least one).
     for (std::size_t i = 0; i < key_x.size(); ++i) {
@@ -437,7 +438,7 @@ WingMesh buildWingMesh(const VehicleModel& vehicle, double element_size_m) {
       const Rail& a = rails[r];
       const Rail& b = rails[r + 1];
       if (b.upper < a.upper)
-        throw std::invalid_argument("buildWingMesh: members cross between y_W = " + fmt(lo.y) +
+        throw InvalidModelError("buildWingMesh: members cross between y_W = " + fmt(lo.y) +
                                     " and " + fmt(up.y) + " m");
       zipper(mesh.nodes_W_m, lo.nodes, a.lower, b.lower, up.nodes, a.upper, b.upper,
              mesh.triangles);

@@ -2,9 +2,11 @@
 // maps it to the exit code: 0 finished (whatever the physics verdict), 1 failed, 2 bad input.
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -12,6 +14,7 @@
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "core/model/invalid_model_error.hpp"
 #include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/commands/calibrate_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
@@ -23,7 +26,9 @@
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/study_file.hpp"
+#include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/folder_lock.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 #include "trim/grid_spec.hpp"
 
@@ -66,12 +71,39 @@ GridAxis axisOption(const char* flag, const std::string& text, double lo, double
   return axis;
 }
 
-fs::path outputFolder(const std::string& out_opt, const Study& study, bool several) {
-  if (out_opt.empty()) return fs::path("results") / study.name;
-  return several ? fs::path(out_opt) / study.name : fs::path(out_opt);
+/// -o, --export-ccx and RUN_DIR: a name, never "" (which would silently mean the default).
+const CLI::Validator kNonEmptyPath(
+    [](std::string& text) {
+      return text.empty() ? std::string("expected a path, got an empty string") : std::string();
+    },
+    "PATH", "NonEmptyPath");
+
+std::vector<std::string> subcommandNames(CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
+  return names;
 }
 
-int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
+/// The file a study came from, for messages: the study file, or the vehicle file it was made of.
+std::string inputFileOf(const Study& study) {
+  return displayPath(study.study_path.empty() ? study.vehicle_path : study.study_path);
+}
+
+fs::path outputFolder(const std::optional<std::string>& out_opt, const Study& study,
+                      bool several) {
+  if (!out_opt) return fs::path("results") / study.name;
+  return several ? fs::path(*out_opt) / study.name : fs::path(*out_opt);
+}
+
+/// A vehicle without [body] cannot fly free: bad input, before any work.
+void requireBodyForFreeFlight(const Study& study) {
+  if (study.simulate.mode == FlightMode::kFree && !study.vehicle.body.present)
+    throw InputError::missingKey(inputFileOf(study), 0, "body",
+                                 "a [body] table: free flight needs the vehicle's mass and pitch "
+                                 "inertia");
+}
+
+int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
   switch (study.kind) {
     case StudyKind::kSimulate:
       return runSimulateStudy(study, out_dir);
@@ -109,6 +141,23 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
   }
 }
 
+/// Runs `study` into `out_dir`, which the caller holds locked. A model check of core
+/// (InvalidModelError) is bad input: reported with the study's file, exit 2.
+int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
+  try {
+    return runStudyKind(study, out_dir, jobs);
+  } catch (const InvalidModelError& e) {
+    throw InputError(inputFileOf(study), 0, std::string(), std::string("invalid model: ") +
+                                                               e.what());
+  }
+}
+
+/// Locks `out_dir` (exit 2 at once when another run holds it) and runs `study` into it.
+int runStudyLocked(const Study& study, const fs::path& out_dir, int jobs) {
+  const OutputFolderLock lock(out_dir);
+  return runStudy(study, out_dir, jobs);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -124,7 +173,8 @@ int main(int argc, char** argv) {
 
   // simulate
   auto* sim = app.add_subcommand("simulate", "Simulate a vehicle file (tethered or free flight)");
-  std::string sim_vehicle, sim_mode, sim_out;
+  std::string sim_vehicle, sim_mode;
+  std::optional<std::string> sim_out;
   std::optional<double> sim_speed, sim_freq, sim_theta, sim_tail;
   std::optional<int> sim_cycles;
   sim->add_option("VEHICLE", sim_vehicle, "Vehicle file (TOML)")->required();
@@ -135,37 +185,43 @@ int main(int argc, char** argv) {
   sim->add_option("--theta", sim_theta, "Mean pitch attitude (deg)");
   sim->add_option("--tail", sim_tail, "Tail elevation angle delta_T (deg)");
   sim->add_option("--cycles", sim_cycles, "Flapping cycles to simulate");
-  sim->add_option("-o,--output", sim_out, "Output folder (default results/<vehicle name>)");
+  sim->add_option("-o,--output", sim_out, "Output folder (default results/<vehicle name>)")
+      ->check(kNonEmptyPath);
 
   // run
   auto* run = app.add_subcommand("run", "Run one or more study files (kind given inside)");
   std::vector<std::string> run_files;
-  std::string run_out;
+  std::optional<std::string> run_out;
   int run_jobs = 1;
   run->add_option("STUDY", run_files, "Study files (TOML)")->required();
   run->add_option("-o,--output", run_out,
                   "Output folder (default results/<study name>); with several studies each goes "
-                  "into DIR/<study name>");
+                  "into DIR/<study name>")
+      ->check(kNonEmptyPath);
   run->add_option("-j,--jobs", run_jobs, "Worker threads")->check(CLI::Range(1, 1024));
 
   // plot
   auto* plot = app.add_subcommand("plot", "(Re)draw the figures of a finished run");
   std::string plot_dir;
-  plot->add_option("RUN_DIR", plot_dir, "Run output folder")->required();
+  plot->add_option("RUN_DIR", plot_dir, "Run output folder")->required()->check(kNonEmptyPath);
 
   // modes
   auto* modes = app.add_subcommand("modes", "Wing FE model: natural frequencies, effective masses, "
                                             "mode shapes; optional CalculiX deck");
-  std::string modes_vehicle, modes_out, modes_ccx;
+  std::string modes_vehicle, modes_ccx;
+  std::optional<std::string> modes_out;
   modes->add_option("VEHICLE", modes_vehicle, "Vehicle file (TOML)")->required();
-  modes->add_option("-o,--output", modes_out, "Output folder (default results/<vehicle name>)");
-  modes->add_option("--export-ccx", modes_ccx, "Also write the FE model as a CalculiX deck (.inp)");
+  modes->add_option("-o,--output", modes_out, "Output folder (default results/<vehicle name>)")
+      ->check(kNonEmptyPath);
+  modes->add_option("--export-ccx", modes_ccx, "Also write the FE model as a CalculiX deck (.inp)")
+      ->check(kNonEmptyPath);
 
   // aeromap
   auto* am = app.add_subcommand(
       "aeromap", "Aero map: cycle-mean tethered loads over a grid of speed, frequency, pitch and "
                  "tail angle (paper Fig. 5); resumable");
-  std::string am_vehicle, am_speed, am_freq, am_theta, am_tail, am_out;
+  std::string am_vehicle, am_speed, am_freq, am_theta, am_tail;
+  std::optional<std::string> am_out;
   std::optional<int> am_cycles;
   int am_jobs = 1;
   am->add_option("VEHICLE", am_vehicle, "Vehicle file (TOML)")->required();
@@ -180,14 +236,15 @@ int main(int argc, char** argv) {
   am->add_option("-j,--jobs", am_jobs, "Worker threads")->check(CLI::Range(1, 1024));
   am->add_option("-o,--output", am_out,
                  "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
-                 "resumes from the journal there");
-
+                 "resumes from the journal there")
+      ->check(kNonEmptyPath);
 
   // trim
   auto* trim = app.add_subcommand(
       "trim", "Solve the trim of a vehicle (paper Eq. 4: mean FV = weight, mean FH = 0, mean M "
               "about the CG = 0) with Ceres; initial guess = the vehicle's operating point");
-  std::string trim_vehicle, trim_out, trim_unknowns;
+  std::string trim_vehicle, trim_unknowns;
+  std::optional<std::string> trim_out;
   std::optional<double> trim_freq, trim_theta, trim_speed, trim_tail;
   trim->add_option("VEHICLE", trim_vehicle, "Vehicle file (TOML) with a [body] section")
       ->required();
@@ -201,21 +258,35 @@ int main(int argc, char** argv) {
                    "Comma-separated unknowns from theta, speed, tail, freq (default "
                    "theta,speed,tail; fewer than 3 = least squares); the others are held");
   trim->add_option("-o,--output", trim_out,
-                   "Output folder (default results/<vehicle name>_trim)");
+                   "Output folder (default results/<vehicle name>_trim)")
+      ->check(kNonEmptyPath);
 
   // optimize
   auto* opt = app.add_subcommand(
       "optimize", "Design optimisation with NLopt (kind = \"optimize\" study): design variables "
                   "(member sections and layout, tail area, aspect ratio and arm) sized so that "
                   "the vehicle trims, flies bounded and needs the least flapping power; resumable");
-  std::string opt_study, opt_out;
+  std::string opt_study;
+  std::optional<std::string> opt_out;
   int opt_jobs = 1;
   opt->add_option("STUDY", opt_study, "Study file (TOML) of kind \"optimize\"")->required();
   opt->add_option("-o,--output", opt_out,
                   "Output folder (default results/<study name>); an interrupted run resumes from "
-                  "the journal there");
+                  "the journal there")
+      ->check(kNonEmptyPath);
   opt->add_option("-j,--jobs", opt_jobs, "Worker threads (over the starts of a multi-start run)")
       ->check(CLI::Range(1, 1024));
+
+  // A mistyped subcommand: name the nearest one, as a mistyped key does.
+  const std::vector<std::string> subcommands = subcommandNames(app);
+  if (argc >= 2 && argv[1][0] != '-' &&
+      std::find(subcommands.begin(), subcommands.end(), argv[1]) == subcommands.end()) {
+    const std::string near = closestMatch(argv[1], subcommands);
+    std::cerr << "ornithopter: error: unknown subcommand '" << argv[1] << "'"
+              << (near.empty() ? std::string() : " (did you mean '" + near + "'?)")
+              << "; run with --help for the list\n";
+    return kExitBadInput;
+  }
 
   try {
     app.parse(argc, argv);
@@ -250,15 +321,28 @@ int main(int argc, char** argv) {
                      "a whole number of cycles in [1, 100000]");
         study.simulate.cycles = *sim_cycles;
       }
-      return runStudy(study, outputFolder(sim_out, study, false), 1);
+      requireBodyForFreeFlight(study);
+      return runStudyLocked(study, outputFolder(sim_out, study, false), 1);
     }
     if (run->parsed()) {
       // Load (and validate) every study first, so a typo in the last one fails before any work.
       std::vector<Study> studies;
       for (const std::string& f : run_files) studies.push_back(loadStudyFile(f));
-      int rc = kExitOk;
+      // One writer per folder: every output folder locked before any work, none shared.
+      std::vector<fs::path> outs;
       for (const Study& s : studies) {
-        const int r = runStudy(s, outputFolder(run_out, s, studies.size() > 1), run_jobs);
+        outs.push_back(outputFolder(run_out, s, studies.size() > 1));
+        for (std::size_t i = 0; i + 1 < outs.size(); ++i)
+          if (outs[i].lexically_normal() == outs.back().lexically_normal())
+            throw CliError("command line: studies " + inputFileOf(studies[i]) + " and " +
+                           inputFileOf(s) + " both write into " + outs.back().string() +
+                           " (give them different names, `name = ...`)");
+      }
+      std::vector<std::unique_ptr<OutputFolderLock>> locks;
+      for (const fs::path& out : outs) locks.push_back(std::make_unique<OutputFolderLock>(out));
+      int rc = kExitOk;
+      for (std::size_t i = 0; i < studies.size(); ++i) {
+        const int r = runStudy(studies[i], outs[i], run_jobs);
         if (r != kExitOk) rc = r;
       }
       return rc;
@@ -270,6 +354,12 @@ int main(int argc, char** argv) {
       std::optional<GridAxis> tail;
       if (!am_tail.empty())
         tail = axisOption("--tail", am_tail, -90.0, 90.0, false, "in deg in (-90, 90)");
+      std::size_t points = speed.values.size() * freq.values.size() * theta.values.size();
+      if (tail) points *= tail->values.size();
+      if (points > trim::kMaxAeroMapPoints)
+        throw CliError("command line: options --speed, --freq, --theta, --tail: expected a grid of "
+                       "at most " + std::to_string(trim::kMaxAeroMapPoints) + " points, got " +
+                       std::to_string(points));
       Study study = aeromapStudyFromVehicle(am_vehicle, std::move(speed), std::move(freq),
                                             std::move(theta), std::move(tail));
       if (am_cycles) {
@@ -279,12 +369,14 @@ int main(int argc, char** argv) {
       }
       AeromapRunOptions opts;
       opts.threads = am_jobs;
-      return runAeromapStudy(study, outputFolder(am_out, study, false), opts);
+      const fs::path out = outputFolder(am_out, study, false);
+      const OutputFolderLock lock(out);
+      return runAeromapStudy(study, out, opts);
     }
     if (modes->parsed()) {
-      const fs::path out = modes_out.empty()
-                               ? fs::path("results") / fs::path(modes_vehicle).stem()
-                               : fs::path(modes_out);
+      const fs::path out =
+          modes_out ? fs::path(*modes_out) : fs::path("results") / fs::path(modes_vehicle).stem();
+      const OutputFolderLock lock(out);
       return runModesCommand(modes_vehicle, out, modes_ccx);
     }
     if (trim->parsed()) {
@@ -318,7 +410,7 @@ int main(int argc, char** argv) {
       }
       std::string why;
       if (!o.IsValid(&why)) throw CliError("command line: trim options: " + why);
-      return runStudy(study, outputFolder(trim_out, study, false), 1);
+      return runStudyLocked(study, outputFolder(trim_out, study, false), 1);
     }
     if (opt->parsed()) {
       const Study study = loadStudyFile(opt_study);
@@ -326,10 +418,23 @@ int main(int argc, char** argv) {
         throw CliError("command line: " + opt_study +
                        ": expected a study of kind \"optimize\", got kind \"" +
                        std::string(toString(study.kind)) + "\" (run it with `ornithopter run`)");
-      return runStudy(study, outputFolder(opt_out, study, false), opt_jobs);
+      return runStudyLocked(study, outputFolder(opt_out, study, false), opt_jobs);
     }
     if (plot->parsed()) {
-      const int n = redrawFigures(plot_dir);
+      const fs::path dir(plot_dir);
+      std::error_code ec;
+      if (!fs::is_directory(dir, ec))
+        throw CliError("command line: RUN_DIR " + plot_dir + ": " +
+                       (fs::exists(dir, ec) ? "not a folder" : "no such folder"));
+      if (!fs::is_regular_file(dir / "summary.json", ec))
+        throw CliError("command line: RUN_DIR " + plot_dir +
+                       ": not a run folder (no summary.json; expected the output folder of an "
+                       "ornithopter run)");
+      const OutputFolderLock lock(dir);
+      const int n = redrawFigures(dir);
+      if (n == 0)
+        throw CliError("command line: RUN_DIR " + plot_dir +
+                       ": no figure scripts (*.gp) to draw (this run drew no figures)");
       std::cout << "redrew " << n << " figure(s) in " << plot_dir << "\n";
       return kExitOk;
     }
@@ -341,6 +446,12 @@ int main(int argc, char** argv) {
     return kExitBadInput;
   } catch (const CliError& e) {
     std::cerr << "ornithopter: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const FolderBusyError& e) {
+    std::cerr << "ornithopter: error: " << e.what() << "\n";
+    return kExitBadInput;
+  } catch (const InvalidModelError& e) {
+    std::cerr << "ornithopter: error: invalid model: " << e.what() << "\n";
     return kExitBadInput;
   } catch (const std::exception& e) {
     std::cerr << "ornithopter: failed: " << e.what() << "\n";

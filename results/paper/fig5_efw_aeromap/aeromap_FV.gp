@@ -7,6 +7,7 @@ set output 'aeromap_FV.png.tmp'
 set multiplot layout 2,3 title "fig5_efw_aeromap: mean vertical force FV over pitch, speed and frequency (cf. paper Fig. 5)" noenhanced font ',13'
 stats 'aeromap.csv' skip 2 using 5 nooutput
 pad = 0.05 * (STATS_max - STATS_min)
+if (pad == 0) pad = (STATS_max == 0 ? 1 : 0.05 * abs(STATS_max))
 set yrange [STATS_min - pad : STATS_max + pad]
 set xlabel '{/Symbol q}_{mean} (deg)'
 set ylabel 'mean F_V (N)'
@@ -62,6 +63,7 @@ set output 'aeromap_FV.svg.tmp'
 set multiplot layout 2,3 title "fig5_efw_aeromap: mean vertical force FV over pitch, speed and frequency (cf. paper Fig. 5)" noenhanced font ',13'
 stats 'aeromap.csv' skip 2 using 5 nooutput
 pad = 0.05 * (STATS_max - STATS_min)
+if (pad == 0) pad = (STATS_max == 0 ? 1 : 0.05 * abs(STATS_max))
 set yrange [STATS_min - pad : STATS_max + pad]
 set xlabel '{/Symbol q}_{mean} (deg)'
 set ylabel 'mean F_V (N)'

@@ -172,11 +172,13 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
            study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td" : "delaurier1993")
       .set("structure", model.flexible ? "flexible" : "rigid");
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  journal.remove();  // every result is in aeromap.csv now
 
   if (run.figures && map.ok > 0) drawAeromapFigures(out_dir, study);
   if (run.figures && map.ok == 0)
     std::cerr << "aeromap: no point has a result: no figures drawn\n";
+  // Every output is in place now: a run stopped before this line (in the figures too) resumes
+  // from the journal and computes no point again.
+  journal.remove();
   std::cout << study.name << ": aeromap " << map.BriefReport() << "\n  -> " << out_dir.string()
             << "\n";
   return 0;

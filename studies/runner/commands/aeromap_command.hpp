@@ -3,7 +3,8 @@
 // trim/aero_map.hpp on `threads` threads. Writes aeromap.csv, summary.json, study.resolved.toml
 // and the figures aeromap_{FV,FH,M,power}.png/svg (architecture.md 4). Resumable: finished points
 // go to DIR/aeromap.journal (output/aeromap_journal.hpp) as they finish; a re-run of the same
-// study into the same folder takes them over and computes only the rest, then removes the journal.
+// study into the same folder takes them over and computes only the rest, then removes the journal
+// once every output, figures included, is in place.
 //
 // aeromap.csv: one row per point in point order (speed outermost, then frequency, theta, tail);
 // columns speed_mps, freq_hz, theta_deg, tail_angle_deg, FV_mean_N, FH_mean_N, M_mean_Nm, power_W

@@ -1,5 +1,6 @@
 #include "studies/runner/commands/aeromap_figures.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <sstream>
@@ -57,10 +58,18 @@ std::string aeromapFigureScript(const Study& study, int column, const std::strin
                                                                           panels, nf)
     << shownNote("speeds", speeds.size(), ns) << shownNote("tail angles", tails.size(), na)
     << "\" noenhanced font ',13'\n";
-  // One y range for every panel, so that the panels compare (the frequency effect of Fig. 5).
+  // One y range for every panel, so that the panels compare (the frequency effect of Fig. 5);
+  // a column of one value (one point, or equal values) gets a range around it, not an empty one.
   g << "stats 'aeromap.csv' skip 2 using " << column << " nooutput\n"
     << "pad = 0.05 * (STATS_max - STATS_min)\n"
+    << "if (pad == 0) pad = (STATS_max == 0 ? 1 : 0.05 * abs(STATS_max))\n"
     << "set yrange [STATS_min - pad : STATS_max + pad]\n";
+  // One pitch value: a range of +-1 deg around it (gnuplot would warn of an empty x range).
+  const double theta_lo = *std::min_element(a.theta_deg.values.begin(), a.theta_deg.values.end());
+  const double theta_hi = *std::max_element(a.theta_deg.values.begin(), a.theta_deg.values.end());
+  if (theta_hi == theta_lo)
+    g << "set xrange [" << formatShortest(theta_lo - 1.0) << ":" << formatShortest(theta_hi + 1.0)
+      << "]\n";
   g << "set xlabel '{/Symbol q}_{mean} (deg)'\n";
   g << "set ylabel '" << ylabel << "'\n";
   g << "set key top left font ',9' spacing 0.9\n";

@@ -7,6 +7,7 @@
 
 #include "core/dynamics/free_flight.hpp"
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -144,9 +145,16 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+  // A failed run (the integrator stopped) has no result: no CSV, no figure, no mean, no verdict;
+  // only the summary saying why (failed_run.hpp). A run that diverged is a verdict with its
+  // history; its cycle means exist only when it completed a cycle.
+  const bool failed = s.status == SimulationStatus::kFailed;
   writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-  writeFileAtomic(out_dir / "histories.csv",
-                  historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
+  if (failed)
+    removeRunOutputs(out_dir, {"histories.csv", "spectra.csv"}, {"flight", "cycle", "phase"});
+  else
+    writeFileAtomic(out_dir / "histories.csv",
+                    historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
 
   JsonObject summary;
   summary.set("kind", "simulate")
@@ -156,15 +164,21 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
       .set("version", versionString())
       .set("mode", "free")
       .set("cycles", s.cycles_run)
-      .set("end_time_s", s.end_time_s)
-      .set("mean", JsonObject()
-                       .set("FV_N", s.mean.FV_N)
-                       .set("FH_N", s.mean.FH_N)
-                       .set("M_Nm", s.mean.M_Nm)
-                       .set("power_W", s.mean.power_aero_W))
-      .set("bounded", s.analysed && s.verdict.bounded);
+      .set("end_time_s", s.end_time_s);
+  if (failed || s.cycles_run < 1)
+    summary.setNull("mean");
+  else
+    summary.set("mean", JsonObject()
+                            .set("FV_N", s.mean.FV_N)
+                            .set("FH_N", s.mean.FH_N)
+                            .set("M_Nm", s.mean.M_Nm)
+                            .set("power_W", s.mean.power_aero_W));
+  if (failed)
+    summary.setNull("bounded");
+  else
+    summary.set("bounded", s.analysed && s.verdict.bounded);
   if (trim_point) summary.set("trim_point", *trim_point);
-  if (s.analysed) {
+  if (s.analysed && !failed) {
     const LimitCycleMetrics& m = s.limit_cycle;
     summary.set("norm_ratio_max", s.verdict.norm_ratio_max)
         .set("theta_min_deg", m.theta_min_rad * kRadToDeg)
@@ -209,6 +223,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  if (failed) return reportFailedRun(study, s.message, out_dir);
   drawFigure(out_dir, "flight", flightFigure(study, s.analysed));
   if (s.cycles_run >= 1) drawFigure(out_dir, "cycle", cycleFigure(study, s.cycles_run));
   const double t_from = (s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0) /
@@ -216,7 +231,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
   drawFigure(out_dir, "phase", phaseFigure(study, t_from));
   std::cout << study.name << ": " << toString(s.status) << ": " << s.message << "\n  -> "
             << out_dir.string() << "\n";
-  return s.status == SimulationStatus::kFailed ? 1 : 0;
+  return 0;
 }
 
 }  // namespace orni::studies

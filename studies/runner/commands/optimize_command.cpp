@@ -326,20 +326,26 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
       .set("structure", study.vehicle.wing.structure == StructureLevel::kFlexible ? "flexible"
                                                                                   : "rigid");
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  journal.remove();  // every evaluation is in history.csv now
 
   bool any_result = false;
   for (const EvaluationRecord& r : s.history)
     any_result = any_result || r.result.status != EvaluationStatus::kFailed;
+  bool figure_missing = false;
   if (run.figures && any_result) {
     try {
       drawFigure(out_dir, "optimize_convergence", convergenceFigure(study, problem, s));
     } catch (const std::exception& e) {
-      std::cerr << "optimize: the convergence figure was not drawn: " << e.what() << "\n";
+      figure_missing = true;
+      std::cerr << "optimize: the convergence figure was not drawn (the journal is kept: the "
+                   "same command redraws it without evaluating again): "
+                << e.what() << "\n";
     }
   } else if (run.figures) {
     std::cerr << "optimize: every evaluation failed: no figure drawn\n";
   }
+  // Every output is in place now (a kill before this line resumes from the journal and
+  // evaluates nothing again).
+  if (!figure_missing) journal.remove();
   std::cout << study.name << ": optimize " << s.BriefReport() << "\n  " << message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

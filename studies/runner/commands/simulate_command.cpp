@@ -12,6 +12,7 @@
 #include "core/model/frames.hpp"
 #include "trim/trim_solver.hpp"
 #include "studies/runner/commands/constrained_flight_output.hpp"
+#include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/commands/free_flight_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
@@ -180,7 +181,10 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
           .set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered")
           .set("trim_point", trim_point);
       writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-      writeFileAtomic(out_dir / "summary.json", summary.toString());
+      // Nothing was flown: the outputs of an earlier run must not pass for this one's.
+      removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv", "spectra.csv"},
+                       {"loads", "zmp", "flight", "cycle", "phase"});
+      writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
       std::cout << study.name << ": not_converged: no trim to fly at: " << t.message << "\n";
       return 0;
     }
@@ -198,31 +202,42 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+  // A failed run (the integrator stopped) has no result: no CSV, no figure, no mean; only the
+  // summary saying why. Outputs of an earlier run into the folder would pass for this run's.
+  const bool failed = s.status == SimulationStatus::kFailed;
   writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
-  writeFileAtomic(out_dir / "histories.csv",
-                  historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
-  writeFileAtomic(out_dir / "cycles.csv", cycleTable(s).toString());
-
-  // The constrained flight test (paper Fig. 9) of the last whole cycle.
-  const std::optional<ConstrainedFlightTest> cft =
-      lastCycleConstrainedFlightTest(study, model, history, opts.samples_per_cycle);
-  if (cft) writeFileAtomic(out_dir / "zmp.csv", zmpTable(*cft).toString());
+  std::optional<ConstrainedFlightTest> cft;
+  if (failed) {
+    removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv"}, {"loads", "zmp"});
+  } else {
+    writeFileAtomic(out_dir / "histories.csv",
+                    historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
+    writeFileAtomic(out_dir / "cycles.csv", cycleTable(s).toString());
+    // The constrained flight test (paper Fig. 9) of the last whole cycle.
+    cft = lastCycleConstrainedFlightTest(study, model, history, opts.samples_per_cycle);
+    if (cft) writeFileAtomic(out_dir / "zmp.csv", zmpTable(*cft).toString());
+  }
 
   summary.set("status", toString(s.status))
       .set("message", s.message)
       .set("wall_time_s", wall_s)
       .set("version", versionString())
       .set("mode", "tethered")
-      .set("cycles", s.cycles_run)
-      .set("mean", JsonObject()
-                       .set("FV_N", s.mean.FV_N)
-                       .set("FH_N", s.mean.FH_N)
-                       .set("M_Nm", s.mean.M_Nm)
-                       .set("power_W", s.mean.power_aero_W)
-                       .set("hinge_power_W", s.mean.power_hinge_W))
-      .set("steady_state_cycle", s.steady_state_cycle)
-      .set("last_cycle_change", s.last_cycle_change)
-      .set("speed_mps", study.point.speed_mps)
+      .set("cycles", s.cycles_run);
+  if (failed) {
+    summary.setNull("mean");
+  } else {
+    summary
+        .set("mean", JsonObject()
+                         .set("FV_N", s.mean.FV_N)
+                         .set("FH_N", s.mean.FH_N)
+                         .set("M_Nm", s.mean.M_Nm)
+                         .set("power_W", s.mean.power_aero_W)
+                         .set("hinge_power_W", s.mean.power_hinge_W))
+        .set("steady_state_cycle", s.steady_state_cycle)
+        .set("last_cycle_change", s.last_cycle_change);
+  }
+  summary.set("speed_mps", study.point.speed_mps)
       .set("freq_hz", study.point.freq_hz)
       .set("theta_deg", study.point.theta_rad * kRadToDeg)
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
@@ -238,7 +253,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   // Harmonic content of the last cycle (samples_per_cycle points, endpoint excluded); only when
   // the history holds a whole cycle (a run that failed early may not).
   const std::size_t spc = static_cast<std::size_t>(opts.samples_per_cycle);
-  if (history.loads.size() >= spc + 1) {
+  if (!failed && history.loads.size() >= spc + 1) {
     const std::size_t start = history.loads.size() - 1 - spc;
     const std::size_t stride = sizeof(LoadSample) / sizeof(double);
     const double* fv = &history.loads[start].FV_N;
@@ -271,6 +286,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  if (failed) return reportFailedRun(study, s.message, out_dir);
   drawFigure(out_dir, "loads", loadsFigure(study, s));
   if (cft) drawFigure(out_dir, "zmp", zmpFigureScript(study, *cft, s.cycles_run));
   std::cout << study.name << ": " << s.BriefReport() << "\n  -> " << out_dir.string() << "\n";

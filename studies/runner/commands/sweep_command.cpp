@@ -268,7 +268,6 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
       .set("threads", run.threads)
       .set("axes", axes);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  journal.remove();  // every result is in sweep.csv now
 
   if (run.figures) {
     const std::string figure = sweepFigure(study, grid, columns, rows);
@@ -277,6 +276,9 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
     else
       drawFigure(out_dir, "sweep", figure);
   }
+  // Every output is in place now: a run stopped before this line (in the figure too) resumes
+  // from the journal and computes no point again.
+  journal.remove();
   std::cout << study.name << ": sweep of " << toString(s.run) << ", " << n << " points ("
             << todo.size() << " computed): " << count.ok << " ok, " << count.not_converged
             << " not_converged, " << count.diverged << " diverged, " << count.failed

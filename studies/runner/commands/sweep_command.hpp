@@ -3,7 +3,8 @@
 // `threads` threads (trim/point_pool.hpp), results are stored by point index, so the outputs do
 // not depend on the thread count. Resumable like an aero map: finished points go to
 // DIR/sweep.journal (output/point_journal.hpp) as they finish; a re-run of the same study into
-// the same folder takes them over and computes only the rest, then removes the journal.
+// the same folder takes them over and computes only the rest, then removes the journal once
+// every output, figures included, is in place.
 //
 // Outputs (architecture.md 4):
 //   sweep.csv           one row per point in point order (first axis outermost): the axis values

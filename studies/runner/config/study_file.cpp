@@ -282,13 +282,24 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
                                    "vehicle_source", "only allowed with an inline [vehicle] table");
     const fs::path given = s->get();
     const fs::path resolved = study_file.parent_path() / given;
+    const std::string expected =
+        "the path of an existing vehicle file, relative to the study's folder";
+    const std::string unreadable = given.empty() ? "no such file" : notARegularFile(resolved);
+    if (!unreadable.empty())
+      throw top.valueError("vehicle", expected,
+                           describeNode(*vehicle_node) + " (" +
+                               TomlWriter::stringText(displayPath(resolved)) + ": " +
+                               unreadable + ")");
     std::error_code ec;
-    if (given.empty() || !fs::is_regular_file(resolved, ec))
-      throw top.valueError("vehicle",
-                           "the path of an existing vehicle file, relative to the study's folder",
-                           describeNode(*vehicle_node) + " (no file " +
-                               TomlWriter::stringText(displayPath(resolved)) + ")");
+    if (fs::equivalent(resolved, study_file, ec))
+      throw top.valueError("vehicle", expected + ", not the study itself",
+                           describeNode(*vehicle_node) + " (this study file)");
     vehicle_table = parseTomlFile(resolved);
+    if (vehicle_table.contains("kind"))
+      throw top.valueError("vehicle", expected + ", not a study",
+                           describeNode(*vehicle_node) + " (" +
+                               TomlWriter::stringText(displayPath(resolved)) +
+                               " is a study file: it has a top-level 'kind' key)");
     vehicle_ctx.file = displayPath(resolved);
     vehicle_ctx.foreign_file = study_name;
     vehicle_ctx.foreign_prefix = "override.";
@@ -352,6 +363,11 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
                             "true");
     std::string why;
     if (!o.IsValid(&why)) throwInvalidOptions(*sim, why);
+    if (o.mode == FlightMode::kFree && !study.vehicle.body.present)
+      throw sim->valueError("mode",
+                            "\"tethered\" for a vehicle without a [body] table (free flight "
+                            "needs the vehicle's mass and pitch inertia)",
+                            "\"free\"");
     sim->finish();
   }
 

@@ -19,11 +19,26 @@ namespace fs = std::filesystem;
 
 std::string displayPath(const fs::path& file) { return file.lexically_normal().string(); }
 
+std::string notARegularFile(const fs::path& file) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(file, ec);
+  switch (st.type()) {
+    case fs::file_type::regular: return std::string();
+    case fs::file_type::not_found: return "no such file";
+    case fs::file_type::directory: return "is a directory, not a file";
+    case fs::file_type::fifo: return "not a regular file (a FIFO)";
+    case fs::file_type::character: return "not a regular file (a character device)";
+    case fs::file_type::block: return "not a regular file (a block device)";
+    case fs::file_type::socket: return "not a regular file (a socket)";
+    default:
+      return ec ? ec.message() : std::string("not a regular file");
+  }
+}
+
 std::string readTomlFileText(const fs::path& file) {
   std::string name = displayPath(file);
-  std::error_code ec;
-  if (!fs::is_regular_file(file, ec))
-    throw InputError(name, 0, std::string(), "cannot open file: no such file");
+  const std::string why = notARegularFile(file);
+  if (!why.empty()) throw InputError(name, 0, std::string(), "cannot open file: " + why);
   std::ifstream in(file, std::ios::binary);
   if (!in) throw InputError(name, 0, std::string(), "cannot open file for reading");
   in.seekg(0, std::ios::end);

@@ -33,8 +33,12 @@ namespace orni::studies {
 /// node's source().
 toml::table parseTomlFile(const std::filesystem::path& file);
 
-/// The bytes of a file; InputError when it is missing or unreadable.
+/// The bytes of a file; InputError when it is missing, not a regular file or unreadable.
 std::string readTomlFileText(const std::filesystem::path& file);
+
+/// Why `file` cannot be read as an input file ("no such file", "is a directory, not a file",
+/// "not a regular file (a FIFO)", ...); empty for a regular file.
+std::string notARegularFile(const std::filesystem::path& file);
 
 /// Parses TOML text as if read from `file` (displayPath(file) in messages and node sources).
 toml::table parseTomlText(std::string_view text, const std::filesystem::path& file);

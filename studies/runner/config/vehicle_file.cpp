@@ -322,6 +322,11 @@ VehicleModel parseVehicleTable(const toml::table& root,
 
 VehicleModel loadVehicleFile(const std::filesystem::path& file) {
   const toml::table root = parseTomlFile(file);
+  if (const toml::node* kind = root.get("kind"))
+    throw InputError::unknownKey(displayPath(file), static_cast<int>(kind->source().begin.line),
+                                 "kind",
+                                 "this is a study file, not a vehicle file: run it with "
+                                 "`ornithopter run " + displayPath(file) + "`");
   return parseVehicleTable(root, file);
 }
 

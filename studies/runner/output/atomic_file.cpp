@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <atomic>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -10,10 +11,15 @@
 
 namespace orni::studies {
 
+std::string uniqueTempTag() {
+  static std::atomic<unsigned long> counter{0};
+  return std::to_string(::getpid()) + "." + std::to_string(counter.fetch_add(1) + 1);
+}
+
 void writeFileAtomic(const std::filesystem::path& path, const std::string& content) {
   namespace fs = std::filesystem;
   if (path.has_parent_path()) fs::create_directories(path.parent_path());
-  const fs::path tmp = path.string() + ".tmp." + std::to_string(::getpid());
+  const fs::path tmp = path.string() + ".tmp." + uniqueTempTag();
   std::FILE* f = std::fopen(tmp.c_str(), "wb");
   if (!f) throw std::runtime_error("cannot open " + tmp.string() + " for writing");
   const bool ok = std::fwrite(content.data(), 1, content.size(), f) == content.size() &&

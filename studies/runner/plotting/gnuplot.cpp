@@ -1,10 +1,15 @@
 #include "studies/runner/plotting/gnuplot.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <array>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 #include <vector>
 
 #include "studies/runner/output/atomic_file.hpp"
@@ -15,6 +20,8 @@
 
 namespace orni::studies {
 
+namespace fs = std::filesystem;
+
 namespace {
 
 std::string shellQuote(const std::string& s) {
@@ -23,7 +30,16 @@ std::string shellQuote(const std::string& s) {
   return out + "'";
 }
 
-// The script draws the body twice: once for PNG, once for SVG.
+/// A gnuplot single-quoted string ('' stands for one quote inside).
+std::string gnuplotQuote(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) out += (c == '\'') ? std::string("''") : std::string(1, c);
+  return out + "'";
+}
+
+// The script draws the body twice: once for PNG, once for SVG. The output names are relative:
+// gnuplot runs in a private scratch folder (see drawInScratch), so the script stays the same
+// bytes for every run and redraw.
 std::string scriptFor(const std::string& stem, const std::string& body) {
   std::ostringstream s;
   s << "# Figure '" << stem << "' written by ornithopter; redraw with `ornithopter plot DIR`.\n"
@@ -41,36 +57,140 @@ std::string scriptFor(const std::string& stem, const std::string& body) {
   return s.str();
 }
 
-void runScript(const std::filesystem::path& dir, const std::string& stem) {
-  const std::string cmd = "cd " + shellQuote(dir.string()) + " && " ORNI_GNUPLOT " " +
-                          shellQuote(stem + ".gp") + " > " + shellQuote(stem + ".gnuplot.log") +
-                          " 2>&1";
+std::string gnuplotProgram() {
+  const char* override_path = std::getenv("ORNI_GNUPLOT");
+  return override_path && *override_path ? std::string(override_path) : std::string(ORNI_GNUPLOT);
+}
+
+std::string readFile(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+/// The last lines of gnuplot's log (at most ~600 characters), for the error message.
+std::string logTail(const fs::path& log) {
+  std::string text = readFile(log);
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  constexpr std::size_t kMax = 600;
+  if (text.size() > kMax) text = "..." + text.substr(text.size() - kMax);
+  return text.empty() ? std::string("nothing") : text;
+}
+
+/// Why `file` is not a complete PNG (empty when it is): the 8-byte signature first, the IEND
+/// chunk (length 0, type, CRC) last, as a truncated write would not leave it.
+std::string pngProblem(const std::string& bytes) {
+  static const std::string kSignature("\x89PNG\r\n\x1a\n", 8);
+  static const std::string kIend("\0\0\0\0IEND\xae\x42\x60\x82", 12);
+  if (bytes.empty()) return "empty";
+  if (bytes.compare(0, kSignature.size(), kSignature) != 0) return "not a PNG: no signature";
+  if (bytes.size() < kSignature.size() + kIend.size() ||
+      bytes.compare(bytes.size() - kIend.size(), kIend.size(), kIend) != 0)
+    return "truncated: no IEND chunk at its end";
+  return "";
+}
+
+/// Why `file` is not a complete SVG (empty when it is): it must end with the closing </svg>.
+std::string svgProblem(const std::string& bytes) {
+  if (bytes.empty()) return "empty";
+  const std::size_t end = bytes.find_last_not_of(" \t\r\n");
+  const std::string closing = "</svg>";
+  if (end == std::string::npos || end + 1 < closing.size() ||
+      bytes.compare(end + 1 - closing.size(), closing.size(), closing) != 0)
+    return "truncated: no closing </svg>";
+  return "";
+}
+
+/// Flushes `file` to disk (a renamed figure must not be a hole after a power loss).
+void syncFile(const fs::path& file) {
+  const int fd = ::open(file.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("cannot open " + file.string() + " to flush it");
+  const bool ok = ::fsync(fd) == 0;
+  ::close(fd);
+  if (!ok) throw std::runtime_error("cannot flush " + file.string() + " to disk");
+}
+
+/// A folder DIR/.plot-STEM-PID.N for one drawing, removed with everything in it at scope exit.
+class ScratchFolder {
+ public:
+  ScratchFolder(const fs::path& dir, const std::string& stem)
+      : path_(dir / (".plot-" + stem + "-" + uniqueTempTag())) {
+    std::error_code ec;
+    fs::create_directory(path_, ec);
+    if (ec)
+      throw std::runtime_error("cannot create the drawing folder " + path_.string() + ": " +
+                               ec.message());
+  }
+  ~ScratchFolder() {
+    std::error_code ec;
+    fs::remove_all(path_, ec);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+/// Runs DIR/STEM.gp and puts DIR/STEM.png and DIR/STEM.svg in place, or throws and leaves
+/// neither a temporary file nor a partial figure. gnuplot runs in a private scratch folder inside
+/// DIR (unique name: two drawings never share a file) and finds the run's data files through its
+/// loadpath; it exits 0 even when it could not write (a full disk), so each output is checked
+/// (PNG signature and end chunk, SVG closing tag) before it is renamed into place.
+void drawInScratch(const fs::path& dir, const std::string& stem) {
+  const fs::path run_dir = fs::absolute(dir);
+  const ScratchFolder scratch(run_dir, stem);
+  const fs::path log = scratch.path() / "gnuplot.log";
+  const std::string cmd = "cd " + shellQuote(scratch.path().string()) + " && " +
+                          shellQuote(gnuplotProgram()) + " -e " +
+                          shellQuote("set loadpath " + gnuplotQuote(run_dir.string())) + " " +
+                          shellQuote((run_dir / (stem + ".gp")).string()) + " > " +
+                          shellQuote(log.string()) + " 2>&1";
+  const fs::path script = dir / (stem + ".gp");
   const int rc = std::system(cmd.c_str());
   if (rc != 0)
-    throw std::runtime_error("gnuplot failed on " + (dir / (stem + ".gp")).string() + " (see " +
-                             (dir / (stem + ".gnuplot.log")).string() + ")");
-  for (const char* ext : {".png", ".svg"}) {
-    std::filesystem::rename(dir / (stem + ext + ".tmp"), dir / (stem + ext));
+    throw std::runtime_error("gnuplot failed on " + script.string() + "; gnuplot said: " +
+                             logTail(log));
+  const std::array<std::pair<const char*, std::string (*)(const std::string&)>, 2> outputs = {
+      {{".png", &pngProblem}, {".svg", &svgProblem}}};
+  for (const auto& [ext, problem] : outputs) {
+    const fs::path tmp = scratch.path() / (stem + ext + ".tmp");
+    std::error_code ec;
+    if (!fs::is_regular_file(tmp, ec))
+      throw std::runtime_error("gnuplot wrote no " + stem + ext + " from " + script.string() +
+                               "; gnuplot said: " + logTail(log));
+    const std::string why = problem(readFile(tmp));
+    if (!why.empty())
+      throw std::runtime_error("gnuplot left an incomplete " + stem + ext + " (" + why +
+                               "; is the disk full?) from " + script.string() +
+                               "; gnuplot said: " + logTail(log));
+    syncFile(tmp);
   }
-  std::filesystem::remove(dir / (stem + ".gnuplot.log"));
+  for (const auto& output : outputs) {
+    const std::string ext = output.first;
+    std::error_code ec;
+    fs::rename(scratch.path() / (stem + ext + ".tmp"), dir / (stem + ext), ec);
+    if (ec)
+      throw std::runtime_error("cannot rename the figure into " + (dir / (stem + ext)).string() +
+                               ": " + ec.message());
+  }
 }
 
 }  // namespace
 
-void drawFigure(const std::filesystem::path& dir, const std::string& stem,
-                const std::string& body) {
+void drawFigure(const fs::path& dir, const std::string& stem, const std::string& body) {
   writeFileAtomic(dir / (stem + ".gp"), scriptFor(stem, body));
-  runScript(dir, stem);
+  drawInScratch(dir, stem);
 }
 
-int redrawFigures(const std::filesystem::path& dir) {
-  if (!std::filesystem::is_directory(dir))
-    throw std::runtime_error("not a run folder: " + dir.string());
+int redrawFigures(const fs::path& dir) {
   std::vector<std::string> stems;
-  for (const auto& e : std::filesystem::directory_iterator(dir))
-    if (e.path().extension() == ".gp") stems.push_back(e.path().stem().string());
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.path().extension() == ".gp" && e.is_regular_file()) stems.push_back(e.path().stem().string());
   std::sort(stems.begin(), stems.end());
-  for (const std::string& s : stems) runScript(dir, s);
+  for (const std::string& s : stems) drawInScratch(dir, s);
   return static_cast<int>(stems.size());
 }
 

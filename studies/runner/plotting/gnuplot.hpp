@@ -1,5 +1,9 @@
 // Figures with gnuplot (PNG and SVG). Each figure is a script STEM.gp kept in the run folder, so
-// `ornithopter plot RUN_DIR` can redraw it; outputs are written to temporary names and renamed.
+// `ornithopter plot RUN_DIR` can redraw it. A figure is complete or absent: gnuplot draws into a
+// private folder DIR/.plot-STEM-PID.N, each output is checked (PNG signature and end chunk, SVG
+// closing tag: gnuplot exits 0 even when the disk is full) and renamed into place, and the folder
+// is removed whatever happens. The environment variable ORNI_GNUPLOT names another gnuplot
+// program (tests use a stand-in).
 #pragma once
 
 #include <filesystem>
@@ -9,10 +13,12 @@ namespace orni::studies {
 
 /// Write DIR/STEM.gp from `body` (plot commands; the script header sets the terminal, output and
 /// CSV conventions: comma separator, two header rows to skip) and draw STEM.png and STEM.svg.
+/// Throws std::runtime_error (with the end of gnuplot's log) when a figure cannot be drawn.
 void drawFigure(const std::filesystem::path& dir, const std::string& stem,
                 const std::string& body);
 
-/// Redraw every *.gp figure script in `dir`; returns how many were drawn.
+/// Redraw every *.gp figure script in `dir` (an existing folder); returns how many were drawn.
+/// Throws std::runtime_error when one cannot be drawn.
 int redrawFigures(const std::filesystem::path& dir);
 
 }  // namespace orni::studies

@@ -5,6 +5,7 @@
 // (summary keys, names and units rows, no NaN, a best vehicle that loads).
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -160,6 +161,33 @@ TEST_F(CommandsOptimize, ForeignJournalIsDiscarded) {
   };
   ASSERT_EQ(runOptimizeStudy(study, dir_ / "out", o), 0);
   EXPECT_EQ(replayed, 0);
+  EXPECT_FALSE(fs::exists(dir_ / "out" / kOptimizeJournalName));
+}
+
+// Issue 14, defect 9: the journal is deleted only when every output, the figure included, is in
+// place; a failed figure keeps it, and the same study into the same folder evaluates nothing
+// again and draws the figure.
+TEST_F(CommandsOptimize, JournalOutlivesAFailedFigure) {
+  const Study study = smallStudy(1);
+  OptimizeRunOptions with_figure = quiet(1);
+  with_figure.figures = true;
+  ::setenv("ORNI_GNUPLOT", "/bin/false", 1);
+  const int rc = runOptimizeStudy(study, dir_ / "out", with_figure);
+  ::unsetenv("ORNI_GNUPLOT");
+  ASSERT_EQ(rc, 0);  // the figure is optional: its failure is reported, the run finished
+  EXPECT_TRUE(fs::exists(dir_ / "out" / kOptimizeJournalName));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "optimize_convergence.png"));
+
+  OptimizeRunOptions again = with_figure;
+  int computed = 0;
+  again.on_evaluation = [&computed](const opt::EvaluationRecord& r) {
+    computed += r.source == opt::EvaluationSource::kComputed;
+  };
+  ASSERT_EQ(runOptimizeStudy(study, dir_ / "out", again), 0);
+  EXPECT_EQ(computed, 0);
+  EXPECT_NE(readAll(dir_ / "out" / "summary.json").find("\"evaluations_computed\": 0"),
+            std::string::npos);
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "optimize_convergence.png"));
   EXPECT_FALSE(fs::exists(dir_ / "out" / kOptimizeJournalName));
 }
 

@@ -6,6 +6,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
@@ -306,6 +307,36 @@ TEST(CommandsSweepPoint, JournalPayloadRoundTrips) {
   EXPECT_FALSE(decodeSweepPoint(encodeSweepPoint(r), 5, &back));  // another column count
   EXPECT_FALSE(decodeSweepPoint("exploded,1,2,3,4,msg", 4, &back));
   EXPECT_FALSE(decodeSweepPoint("ok,1,2", 4, &back));
+}
+
+}  // namespace
+}  // namespace orni::studies
+
+namespace orni::studies {
+namespace {
+
+// Issue 14, defect 9: a run stopped while its figure is drawn (here: gnuplot fails) keeps the
+// journal, and the same study into the same folder computes no point again.
+TEST_F(CommandsSweep, JournalOutlivesAFailedFigure) {
+  const Study sweep = rigSweep();
+  SweepRunOptions with_figure = quiet(2);
+  with_figure.figures = true;
+  ::setenv("ORNI_GNUPLOT", "/bin/false", 1);
+  EXPECT_THROW(runSweepStudy(sweep, dir_ / "out", with_figure), std::runtime_error);
+  ::unsetenv("ORNI_GNUPLOT");
+  EXPECT_TRUE(fs::exists(dir_ / "out" / kSweepJournalName));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / "sweep.png"));
+
+  SweepRunOptions again = with_figure;
+  std::size_t computed = 0;
+  again.on_point = [&computed](std::size_t, const SweepPointResult&) { ++computed; };
+  ASSERT_EQ(runSweepStudy(sweep, dir_ / "out", again), 0);
+  EXPECT_EQ(computed, 0u);
+  const std::string summary = readAll(dir_ / "out" / "summary.json");
+  EXPECT_EQ(jsonNumber(summary, "points_computed"), 0.0);
+  EXPECT_EQ(jsonNumber(summary, "points_resumed"), static_cast<double>(kRigPoints));
+  EXPECT_TRUE(fs::exists(dir_ / "out" / "sweep.png"));
+  EXPECT_FALSE(fs::exists(dir_ / "out" / kSweepJournalName));
 }
 
 }  // namespace

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# The runs of `bash .ci/setup.sh main` (after its build): the wind-tunnel rig of paper Fig. 2, the
+# published trim point (Table 3), its free flight (Figs. 6-8) and the constrained flight test
+# (Fig. 9), run into OUT_DIR (default results/main-run/, git-ignored: the committed results/paper/
+# is never rewritten, so `git status` stays clean). The five runs are compared with the committed
+# results/paper/ using the tolerances of tests/regression/paper_results.sh (orni_results compare,
+# rel 1e-2, abs 2e-3 x column range): a difference beyond them exits 1 (and cli.paper_results
+# fails in CI too). Ends with a paper-vs-ours table of the trim point from this run.
+#   usage: bash .ci/main_run.sh [BUILD_DIR=build] [OUT_DIR=results/main-run]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build_dir=${1:-build}
+out=${2:-results/main-run}
+bin="$build_dir/studies/runner/ornithopter"
+tool="$build_dir/studies/tools/orni_results"
+runs=(fig2_rfw_theta0 fig2_rfw_theta20 table3_trim fig6_8_free_flight fig9_constrained_flight_test)
+
+files=()
+for r in "${runs[@]}"; do files+=("studies/paper/$r.toml"); done
+rm -rf "$out"
+"$bin" run "${files[@]}" -o "$out"
+
+# The committed baselines of these five runs, side by side for one comparison.
+base="$(mktemp -d)"
+trap 'rm -rf "$base"' EXIT
+for r in "${runs[@]}"; do cp -r "results/paper/$r" "$base/"; done
+set +e
+"$tool" compare "$base" "$out" --rel 1e-2 --abs-scale 2e-3 --report 5 --quiet
+same=$?
+set -e
+
+tpl="$base/table.txt"
+cat > "$tpl" <<TABLE
+setup: the published trim point reproduced (paper Table 3 and section 4; ours: $out/table3_trim/summary.json)
+                                 paper      ours
+  flapping frequency (Hz)        12.0       {{ j:table3_trim/summary.json:freq_hz %.1f }}
+  mean pitch theta_MEAN (deg)    9.2        {{ j:table3_trim/summary.json:theta_mean_deg %.2f }}
+  flight speed U (m/s)           10.8       {{ j:table3_trim/summary.json:speed_mps %.2f }}
+  tail angle delta_T (deg)       11.85      {{ j:table3_trim/summary.json:tail_angle_deg %.2f }}
+  free-flight pitch range (deg)  0 to 20    {{ j:table3_trim/summary.json:free_flight.theta_min_deg %.1f }} to {{ j:table3_trim/summary.json:free_flight.theta_max_deg %.1f }} (bounded: {{ s:table3_trim/summary.json:free_flight.bounded }})
+  altitude p2p at 12 Hz (cm)     ~1         {{ j:table3_trim/summary.json:free_flight.altitude_p2p_m 100 * %.1f }}
+setup: figures: $out/table3_trim/trim_convergence.png (the trim solve) and
+setup:          $out/fig6_8_free_flight/flight.png (free flight at Table 3's point, paper Fig. 7)
+setup: every paper result against ours: results/README.md
+TABLE
+"$tool" fill "$tpl" "$out"
+if [[ $same -ne 0 ]]; then
+  echo "setup: this run differs from the committed results/paper/ beyond the paper_results" \
+       "tolerances (above): the code or results/paper/ changed; see tests/regression/paper_results.sh" >&2
+  exit 1
+fi
+echo "setup: this run matches the committed results/paper/ within the paper_results tolerances"

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# The README's first command (`bash .ci/setup.sh main`, issue 14 defect 12) leaves `git status`
+# clean: its runs (.ci/main_run.sh) go to a git-ignored folder, never into the committed
+# results/paper/, are compared with results/paper/ with the paper_results tolerances, and the
+# paper-vs-ours table comes from its own run.
+#   usage: bash setup_main.sh <ornithopter-binary> <repo-root> <scratch-dir>
+set -u
+bin=${1:?}; root=${2:?}; scratch=${3:?}
+rm -rf "$scratch"; mkdir -p "$scratch"
+scratch=$(cd "$scratch" && pwd)
+root=$(cd "$root" && pwd)
+build=$(cd "$(dirname "$bin")/../.." && pwd)
+# check, json, awk_true and fail=0
+source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_checks.sh"
+
+check "setup.sh has no git-restore step" bash -c "! grep -q 'git checkout' '$root/.ci/setup.sh'"
+check "setup.sh main runs .ci/main_run.sh into results/main-run" \
+  grep -q 'bash .ci/main_run.sh "$build_dir" results/main-run' "$root/.ci/setup.sh"
+if git -C "$root" rev-parse --is-inside-work-tree >/dev/null 2>&1; then
+  check "results/main-run/ is git-ignored" \
+    git -C "$root" check-ignore -q results/main-run/table3_trim/summary.json
+  before=$(git -C "$root" status --porcelain -- results)
+fi
+
+bash "$root/.ci/main_run.sh" "$build" "$scratch/main-run" > "$scratch/out.txt" 2>&1
+rc=$?
+check "main_run.sh exits 0 ($rc)" test $rc -eq 0
+check "... compares with results/paper/ and every value matches" \
+  grep -q 'orni_results compare: 5 runs, .*: 0 failed' "$scratch/out.txt"
+check "... says so" grep -q 'matches the committed results/paper/' "$scratch/out.txt"
+check "... prints the table from its own run" \
+  grep -q "ours: $scratch/main-run/table3_trim/summary.json" "$scratch/out.txt"
+ours=$(grep 'mean pitch theta_MEAN' "$scratch/out.txt" | awk '{ print $NF }')
+run=$(json "$scratch/main-run/table3_trim/summary.json" theta_mean_deg)
+check "... with its own trim pitch ($ours against $run)" awk_true "($ours - $run)^2 < 1e-4"
+for r in fig2_rfw_theta0 fig2_rfw_theta20 table3_trim fig6_8_free_flight fig9_constrained_flight_test; do
+  check "... wrote $r" test -s "$scratch/main-run/$r/summary.json"
+done
+if [[ -n "${before+set}" ]]; then
+  check "the committed results/ are untouched (git status)" \
+    test "$(git -C "$root" status --porcelain -- results)" = "$before"
+fi
+
+# A stale baseline fails the comparison (and so `setup.sh main` and cli.paper_results).
+stale="$scratch/stale_root"
+mkdir -p "$stale/.ci" "$stale/results" "$stale/studies"
+cp "$root/.ci/main_run.sh" "$stale/.ci/"
+cp -r "$root/studies/paper" "$root/studies/vehicles" "$stale/studies/"
+cp -r "$root/results/paper" "$stale/results/"
+sed -i -E 's/("theta_mean_deg": )([-0-9.e]+)/\1 12.5/' "$stale/results/paper/table3_trim/summary.json"
+bash "$stale/.ci/main_run.sh" "$build" "$scratch/stale-run" > "$scratch/stale.txt" 2>&1
+check "a stale results/paper/ makes main_run.sh exit 1" test $? -eq 1
+check "... naming the value" grep -q 'FAIL .*table3_trim/summary.json' "$scratch/stale.txt"
+
+exit $fail
