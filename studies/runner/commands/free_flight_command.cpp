@@ -137,7 +137,7 @@ std::string phaseFigure(const Study& study, double t_from) {
 }  // namespace
 
 int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
-                       const JsonObject* trim_point) {
+                       const JsonObject* trim_point, const Study* as_given) {
   const auto t0 = std::chrono::steady_clock::now();
   const FlightCoreModel model(study.vehicle);
   FreeFlightHistory history;
@@ -149,7 +149,8 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
   // only the summary saying why (failed_run.hpp). A run that diverged is a verdict with its
   // history; its cycle means exist only when it completed a cycle.
   const bool failed = s.status == SimulationStatus::kFailed;
-  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+  writeFileAtomic(out_dir / "study.resolved.toml",
+                  resolvedStudyToml(as_given != nullptr ? *as_given : study));
   if (failed)
     removeRunOutputs(out_dir, {"histories.csv", "spectra.csv"}, {"flight", "cycle", "phase"});
   else

@@ -14,8 +14,10 @@ namespace orni::studies {
 /// Exit code 0 whenever the run finished, bounded, not bounded or diverged (the verdict is in
 /// summary.json); 1 when the simulation itself failed.
 /// `trim_point` (may be null): the "trim_point" object of summary.json when the study flies at its
-/// trim ([simulate] at_trim).
+/// trim ([simulate] at_trim). `as_given` (may be null): the study as the user gave it, written as
+/// study.resolved.toml (with at_trim, `study` holds the solved trim point, `as_given` the initial
+/// guess, so that the resolved study solves the same trim again: a fixed point, the same bytes).
 int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
-                       const JsonObject* trim_point = nullptr);
+                       const JsonObject* trim_point = nullptr, const Study* as_given = nullptr);
 
 }  // namespace orni::studies

@@ -180,7 +180,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
           .set("version", versionString())
           .set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered")
           .set("trim_point", trim_point);
-      writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+      writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(given));
       // Nothing was flown: the outputs of an earlier run must not pass for this one's.
       removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv", "spectra.csv"},
                        {"loads", "zmp", "flight", "cycle", "phase"});
@@ -192,7 +192,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   }
 
   if (study.simulate.mode == FlightMode::kFree)
-    return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr);
+    return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr, &given);
 
   const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle);
   TimeHistory history;
@@ -205,7 +205,8 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   // A failed run (the integrator stopped) has no result: no CSV, no figure, no mean; only the
   // summary saying why. Outputs of an earlier run into the folder would pass for this run's.
   const bool failed = s.status == SimulationStatus::kFailed;
-  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+  // As given: with at_trim the resolved study keeps the initial guess and solves the same trim.
+  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(given));
   std::optional<ConstrainedFlightTest> cft;
   if (failed) {
     removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv"}, {"loads", "zmp"});
