@@ -9,27 +9,27 @@ set lmargin 12
 set rmargin 44
 set tmargin 4
 set key outside right top vertical Left reverse noenhanced
-set xrange [-0.2:3.2]
+set xrange [-0.2:6.2]
 set xlabel 'iteration'
 set xtics 1
 set logscale y
 set format y '10^{%L}'
 set ylabel 'scaled residual (-)'
-set yrange [1.54946e-06:*]
+set yrange [3.99263e-06:*]
 plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'accepted iterate', 'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', 0.0001 with lines dt 2 lc rgb '#333333' title 'tolerance'
 unset logscale y
 set format y '%g'
 set yrange [*:*]
 set ylabel 'unknowns (deg, m/s, Hz)'
-set xrange [-0.2:4.3]
-set xtics add ('stage 2' 4)
+set xrange [-0.2:7.3]
+set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 9.18', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.81', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.83'
-4,9.182225718878406
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.35', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.32', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.98'
+7,16.3495292532295
 e
-4,10.809794632397058
+7,16.323385671142354
 e
-4,11.82909503148502
+7,19.978984354257186
 e
 
 unset multiplot
@@ -42,27 +42,27 @@ set lmargin 12
 set rmargin 44
 set tmargin 4
 set key outside right top vertical Left reverse noenhanced
-set xrange [-0.2:3.2]
+set xrange [-0.2:6.2]
 set xlabel 'iteration'
 set xtics 1
 set logscale y
 set format y '10^{%L}'
 set ylabel 'scaled residual (-)'
-set yrange [1.54946e-06:*]
+set yrange [3.99263e-06:*]
 plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'accepted iterate', 'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', 0.0001 with lines dt 2 lc rgb '#333333' title 'tolerance'
 unset logscale y
 set format y '%g'
 set yrange [*:*]
 set ylabel 'unknowns (deg, m/s, Hz)'
-set xrange [-0.2:4.3]
-set xtics add ('stage 2' 4)
+set xrange [-0.2:7.3]
+set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 9.18', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.81', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.83'
-4,9.182225718878406
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.35', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.32', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.98'
+7,16.3495292532295
 e
-4,10.809794632397058
+7,16.323385671142354
 e
-4,11.82909503148502
+7,19.978984354257186
 e
 
 unset multiplot
