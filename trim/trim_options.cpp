@@ -88,6 +88,7 @@ bool TrimOptions::IsValid(std::string* why) const {
     return fail("refine_cycles must be in [6, 10000]");
   std::string sim_why;
   if (!simulation.IsValid(&sim_why)) return fail("simulation: " + sim_why);
+  if (!periodic.IsValid(&sim_why)) return fail(sim_why);
   return true;
 }
 

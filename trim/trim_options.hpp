@@ -10,6 +10,7 @@
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 #include "trim/free_flight_check.hpp"
+#include "trim/periodic_trim_options.hpp"
 #include "trim/trim_unknowns.hpp"
 
 namespace orni {
@@ -17,6 +18,11 @@ namespace orni {
 /// Options of one trim solve. Angles in SI (rad) like every model field; file and CLI units are
 /// converted by the runner.
 struct TrimOptions {
+  /// Two stages (solveTrim, trim_solver.hpp) or the periodic orbit (solvePeriodicTrim,
+  /// periodic_trim.hpp, which starts from the Eq. (4) stage of these options).
+  TrimMethod method = TrimMethod::kTwoStage;
+  PeriodicTrimOptions periodic;  ///< method periodic only
+
   /// The unknowns, 1 to 3 distinct (3: square solve; fewer: least squares). Default: theta_mean,
   /// U and delta_T at the given frequency.
   std::vector<TrimUnknown> unknowns = {TrimUnknown::kThetaMean, TrimUnknown::kSpeed,
