@@ -9,6 +9,7 @@
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/modal_implicit_split.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
+#include "core/analysis/monodromy.hpp"
 #include "core/integrate/ode_integrator.hpp"
 #include "core/model/frames.hpp"
 
@@ -75,11 +76,10 @@ std::string PeriodicTrimSummary::BriefReport() const {
 }
 
 std::vector<double> periodicStartState(const FlightCoreModel& model,
-                                       const FreeFlightPeriodMap& map,
-                                       const OperatingPoint& point) {
-  SimulationOptions t;
+                                       const FreeFlightPeriodMap& map, const OperatingPoint& point,
+                                       const SimulationOptions& tethered) {
+  SimulationOptions t = tethered;
   t.mode = FlightMode::kTethered;
-  t.cycles = 40;
   t.stop_when_steady = true;
   t.record_history = false;
   const SimulationSummary ts = simulateTethered(model, point, t, nullptr);
@@ -166,7 +166,7 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   s.states = map.stateInfo();
   s.state_units = map.stateUnits();
   for (int i = 0; i < map.stateCount(); ++i) s.state_scales.push_back(map.stateScale(i));
-  std::vector<double> x = periodicStartState(model, map, s.stage1.solution);
+  std::vector<double> x = periodicStartState(model, map, s.stage1.solution, options.simulation);
   std::vector<double> p = FreeFlightPeriodMap::parameters(s.stage1.solution);
   ShootingOptions so;
   so.free_parameters = {parameterIndex(options.periodic.control)};
@@ -176,17 +176,24 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   // The first Jacobian differences the body states only: the modal and aerodynamic states decay
   // within a period (multipliers below 0.4 on the magpie); Broyden supplies the rest.
   so.first_jacobian_states = {0, 1, 2, 3};
+  const bool full_floquet = options.periodic.floquet && options.periodic.multipliers == 0;
   long maps = 0;
   int iterations = 0, jacobians = 0, partial = 0, broyden = 0, refreshes = 0;
   std::string sample_why;
   for (int pass = 0; pass < 2; ++pass) {
-    so.jacobian_at_solution = pass == 1 && options.periodic.floquet;
+    // The full monodromy is the Jacobian at the solution of the last pass.
+    so.jacobian_at_solution = pass == 1 && full_floquet;
     try {
       s.shooting = solveShooting(map, x, p, so);
     } catch (const std::invalid_argument& e) {  // a parameter the vehicle cannot take (f <= 0)
       s.shooting = ShootingSummary{};
       s.shooting.status = ShootingStatus::kFailed;
       s.shooting.message = e.what();
+    }
+    for (const ShootingIteration& r : s.shooting.log) {
+      s.newton_log.push_back(r);
+      s.newton_log.back().period_maps += maps;
+      s.newton_pass.push_back(pass + 1);
     }
     maps += s.shooting.period_maps;
     iterations += s.shooting.iterations;
@@ -215,10 +222,10 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   s.friction_speed_mps = map.frictionSpeed_mps();
   s.grid_steps = map.gridSteps();
   s.integrator = map.methodName();
-  s.rhs_evaluations = map.rhsEvaluations();
   s.converged = s.shooting.status == ShootingStatus::kConverged;
   s.orbit_time_s = seconds(t1);
   if (!s.converged) {
+    s.rhs_evaluations = map.rhsEvaluations();
     s.message = "Eq. (4) " + s.stage1.message + "; periodic orbit not found: " + s.shooting.message;
     s.wall_time_s = seconds(t0);
     return s;
@@ -226,10 +233,41 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   const double T = 1.0 / p[kPeriodFrequency];
   s.orbit_start = x;
   s.cg_shift_m = p[kPeriodCgShift];
-  if (options.periodic.floquet && s.shooting.jacobian_valid) {
-    s.floquet = analyseFloquet(s.shooting.monodromy, T, map.stateInfo());
-    s.floquet_valid = true;
+
+  // Floquet multipliers: the full monodromy (the Jacobian at the solution) or the leading ones by
+  // Arnoldi, with the full matrix as the fallback when Arnoldi does not converge.
+  if (options.periodic.floquet) {
+    const auto t2 = std::chrono::steady_clock::now();
+    MonodromyEigen eigen;
+    std::string fallback;
+    if (full_floquet && s.shooting.jacobian_valid) {
+      eigen = eigenOfMonodromy(s.shooting.monodromy);
+    } else if (!full_floquet) {
+      ArnoldiOptions ao;
+      ao.count = options.periodic.multipliers;
+      eigen = leadingMultipliers(map, x, p, ao);
+      s.floquet_maps += eigen.period_maps;
+      if (!eigen.ok) fallback = eigen.message;
+    }
+    if (!eigen.ok) {
+      Eigen::MatrixXd M;
+      long used = 0;
+      std::string why_m;
+      const bool ok = monodromyByDifferences(map, x, p, so.fd_step, &M, &used, &why_m);
+      s.floquet_maps += used;
+      eigen = ok ? eigenOfMonodromy(M) : MonodromyEigen{};
+      if (!ok) eigen.message = "the monodromy matrix could not be formed: " + why_m;
+      if (!fallback.empty()) eigen.message += " (" + fallback + ")";
+    }
+    if (eigen.ok) {
+      s.floquet = analyseFloquet(eigen, T, map.stateInfo());
+      s.floquet_valid = true;
+    } else {
+      s.floquet_message = eigen.message;
+    }
+    s.floquet_time_s = seconds(t2);
   }
+  s.rhs_evaluations = map.rhsEvaluations();
   s.solution.theta_rad = s.mean.theta_rad;
   s.solution.speed_mps = s.mean.airspeed_mps;
   s.solution.tail_angle_rad = p[kPeriodTailAngle];

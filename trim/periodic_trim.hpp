@@ -54,9 +54,17 @@ struct PeriodicTrimSummary {
   std::vector<std::string> state_units;
   std::vector<double> state_scales;  ///< the scaled residual's units
   PeriodicCycleMeans mean;
-  ShootingSummary shooting;
+  ShootingSummary shooting;          ///< the last pass; counts summed over both passes
+  /// Newton iterations of both passes (pass 1: skin friction frozen at the Eq. (4) speed; pass
+  /// 2: at the first orbit's mean airspeed), newton_pass[i] = 1 or 2.
+  std::vector<ShootingIteration> newton_log;
+  std::vector<int> newton_pass;
   bool floquet_valid = false;
   FloquetAnalysis floquet;
+  std::string floquet_message;       ///< why there is no Floquet analysis (floquet_valid false)
+  long floquet_maps = 0;             ///< period maps of the Floquet analysis (Arnoldi or the
+                                     ///< fallback; the full matrix of multipliers = 0 is in
+                                     ///< shooting.period_maps)
   OrbitHistory history;              ///< one period from orbit_start
   /// One period from orbit_start with ARKODE (the free-flight integrator, adaptive, at
   /// periodic.rel_tol): max |x(T) - x(0)| in scales. The orbit's integration error, independent of
@@ -68,7 +76,7 @@ struct PeriodicTrimSummary {
   long rhs_evaluations = 0;          ///< right-hand sides of all period maps
   std::string integrator;
   FreeFlightVerification free_flight;
-  double stage1_time_s = 0.0, orbit_time_s = 0.0, wall_time_s = 0.0;
+  double stage1_time_s = 0.0, orbit_time_s = 0.0, floquet_time_s = 0.0, wall_time_s = 0.0;
 
   std::string BriefReport() const;
 };
@@ -79,9 +87,11 @@ struct PeriodicTrimSummary {
 PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOptions& options);
 
 /// Initial guess of the orbit at an operating point: the body on the level path at (theta, U)
-/// with Q = 0, the wing (modes and MST-TD states) in its tethered periodic state at phase 0.
+/// with Q = 0, the wing (modes and MST-TD states) in its tethered periodic state at phase 0 (a
+/// tethered run with the `tethered` settings, stopped when steady).
 std::vector<double> periodicStartState(const FlightCoreModel& model,
-                                       const FreeFlightPeriodMap& map, const OperatingPoint& point);
+                                       const FreeFlightPeriodMap& map, const OperatingPoint& point,
+                                       const SimulationOptions& tethered);
 
 /// Cycle means of a sampled period (samples + 1 rows, the last = the first period's end).
 PeriodicCycleMeans cycleMeans(const OrbitHistory& history, double period_s);

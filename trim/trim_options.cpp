@@ -98,4 +98,11 @@ TrimOptions defaultTrimOptions(const VehicleModel& vehicle) {
   return o;
 }
 
+void usePeriodicMethod(TrimOptions* o) {
+  o->method = TrimMethod::kPeriodic;
+  o->residual_tol = 1e-3;
+  o->simulation.rel_tol = 1e-4;
+  o->simulation.steady_tol = 1e-3;
+}
+
 }  // namespace orni

@@ -57,11 +57,18 @@ void describe(const std::vector<FloquetStateInfo>& states, FloquetMultiplier* m)
       mode_max = mode_share[k];
       best_mode = static_cast<int>(k) + 1;
     }
-  const double top = std::max({body, aero, mode_max});
-  if (top <= 0.0) {  // no grouped state carries the vector: name its largest state
-    m->label = m->dominant_states.empty() ? "" : m->dominant_states.front().first;
+  // The aerodynamic lag states follow the motion that drives them (a short-period pair moves
+  // every strip's lag state with the angle of attack: 65 % of |v|^2 in the steady glide), so they
+  // name a multiplier only when the body and the wing modes together carry less than 1 %.
+  double modal = 0.0;
+  for (double w : mode_share) modal += w;
+  constexpr double kSlavedShare = 0.01;
+  if (body + modal < kSlavedShare) {
+    m->label = aero > 0.0 ? "aero lag"
+                          : (m->dominant_states.empty() ? "" : m->dominant_states.front().first);
     return;
   }
+  const double top = std::max(body, mode_max);
   if (top == body) {
     // The two body states with the largest shares, in order.
     std::string names;
@@ -72,10 +79,8 @@ void describe(const std::vector<FloquetStateInfo>& states, FloquetMultiplier* m)
       if (++count == 2) break;
     }
     m->label = std::string(body_UT >= body_WQ ? "phugoid-like: " : "short-period-like: ") + names;
-  } else if (top == mode_max) {
-    m->label = "wing mode " + std::to_string(best_mode);
   } else {
-    m->label = "aero lag";
+    m->label = "wing mode " + std::to_string(best_mode);
   }
 }
 
@@ -86,9 +91,10 @@ std::string FloquetAnalysis::BriefReport() const {
   if (multipliers.empty()) return "no multipliers";
   const FloquetMultiplier& m = multipliers.front();
   std::snprintf(buf, sizeof buf,
-                "%s: max |mu| = %.6f (%s, arg %.2f deg), margin %.4f; %zu multipliers",
+                "%s: max |mu| = %.6f (%s, arg %.2f deg), margin %.4f; %s%zu of %d multipliers",
                 stable ? "stable" : "unstable", max_modulus, m.label.c_str(),
-                m.argument_rad * 180.0 / kPi, margin, multipliers.size());
+                m.argument_rad * 180.0 / kPi, margin, complete ? "" : "leading ",
+                multipliers.size(), state_count);
   return buf;
 }
 
@@ -99,16 +105,27 @@ FloquetAnalysis analyseFloquet(const Eigen::MatrixXd& monodromy, double period_s
     throw std::invalid_argument("analyseFloquet: a square monodromy matrix with one name per state");
   if (!monodromy.allFinite() || !(period_s > 0.0))
     throw std::invalid_argument("analyseFloquet: non-finite monodromy or period <= 0");
-  Eigen::EigenSolver<Eigen::MatrixXd> es(monodromy, true);
-  if (es.info() != Eigen::Success)
-    throw std::runtime_error("analyseFloquet: the eigenvalue iteration did not converge");
+  const MonodromyEigen eigen = eigenOfMonodromy(monodromy);
+  if (!eigen.ok) throw std::runtime_error("analyseFloquet: " + eigen.message);
+  return analyseFloquet(eigen, period_s, states);
+}
+
+FloquetAnalysis analyseFloquet(const MonodromyEigen& eigen, double period_s,
+                               const std::vector<FloquetStateInfo>& states) {
+  const Eigen::Index n = eigen.state_count;
+  const Eigen::Index count = eigen.multipliers.size();
+  if (!eigen.ok || count < 1 || count > n || eigen.vectors.rows() != n ||
+      eigen.vectors.cols() != count || static_cast<Eigen::Index>(states.size()) != n)
+    throw std::invalid_argument("analyseFloquet: valid eigenpairs with one name per state");
+  if (!(period_s > 0.0)) throw std::invalid_argument("analyseFloquet: period <= 0");
   FloquetAnalysis a;
   a.period_s = period_s;
-  const Eigen::VectorXcd mu = es.eigenvalues();
-  const Eigen::MatrixXcd V = es.eigenvectors();
-  for (Eigen::Index k = 0; k < n; ++k) {
+  a.state_count = static_cast<int>(n);
+  a.complete = eigen.complete || count == n;
+  a.method = eigen.message;
+  for (Eigen::Index k = 0; k < count; ++k) {
     FloquetMultiplier m;
-    m.mu = mu[k];
+    m.mu = eigen.multipliers[k];
     m.modulus = std::abs(m.mu);
     m.argument_rad = std::arg(m.mu);
     const double log_mod = std::log(std::max(m.modulus, 1e-300));
@@ -122,7 +139,7 @@ FloquetAnalysis analyseFloquet(const Eigen::MatrixXd& monodromy, double period_s
       m.damping_ratio = m.exponent_per_s.real() < 0.0 ? 1.0 : -1.0;
       m.period_s = 0.0;
     }
-    m.eigenvector = V.col(k);
+    m.eigenvector = eigen.vectors.col(k);
     const double norm = m.eigenvector.norm();
     if (norm > 0.0) m.eigenvector /= norm;
     describe(states, &m);

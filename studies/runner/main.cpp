@@ -19,6 +19,7 @@
 #include "studies/runner/commands/calibrate_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/optimize_command.hpp"
+#include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/commands/sensitivity_command.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
@@ -260,6 +261,26 @@ int main(int argc, char** argv) {
   trim->add_option("-o,--output", trim_out,
                    "Output folder (default results/<vehicle name>_trim)")
       ->check(kNonEmptyPath);
+  std::string trim_method = "two_stage";
+  trim->add_option("--method", trim_method,
+                   "two_stage (default: Eq. 4, then level settled free flight) or periodic (the "
+                   "periodic orbit of free flight by shooting, with its Floquet multipliers)")
+      ->check(CLI::IsMember({"two_stage", "periodic"}));
+
+  // stability
+  auto* stab = app.add_subcommand(
+      "stability", "Floquet stability of trimmed flight: the periodic-orbit trim, the monodromy "
+                   "matrix of the orbit and all its multipliers, sorted and labelled");
+  std::string stab_vehicle;
+  std::optional<std::string> stab_out;
+  std::optional<double> stab_freq;
+  stab->add_option("VEHICLE", stab_vehicle, "Vehicle file (TOML) with a [body] section")
+      ->required();
+  stab->add_option("--freq", stab_freq,
+                   "Flapping frequency f (Hz) (default: the vehicle's operating point)");
+  stab->add_option("-o,--output", stab_out,
+                   "Output folder (default results/<vehicle name>_stability)")
+      ->check(kNonEmptyPath);
 
   // optimize
   auto* opt = app.add_subcommand(
@@ -408,9 +429,32 @@ int main(int argc, char** argv) {
           o.unknowns.push_back(*u);
         }
       }
+      if (trim_method == "periodic") usePeriodicMethod(&o);
       std::string why;
       if (!o.IsValid(&why)) throw CliError("command line: trim options: " + why);
       return runStudyLocked(study, outputFolder(trim_out, study, false), 1);
+    }
+    if (stab->parsed()) {
+      Study study = studyFromVehicle(stab_vehicle, StudyKind::kTrim);
+      study.name += "_stability";
+      TrimOptions& o = study.trim;
+      usePeriodicMethod(&o);
+      o.periodic.multipliers = 0;      // all of them: the full monodromy matrix
+      o.verify_free_flight = false;    // the verdict is Floquet's; `trim` runs the Eq. (5) check
+      if (stab_freq) {
+        requireRange("--freq", *stab_freq, 0.0, 200.0, true, "a frequency in Hz in (0, 200]");
+        o.initial.freq_hz = *stab_freq;
+      }
+      std::string why;
+      if (!o.IsValid(&why)) throw CliError("command line: stability options: " + why);
+      const fs::path out = outputFolder(stab_out, study, false);
+      const OutputFolderLock lock(out);
+      try {
+        return runPeriodicTrimStudy(study, out, PeriodicRunKind::kStability);
+      } catch (const InvalidModelError& e) {
+        throw InputError(inputFileOf(study), 0, std::string(),
+                         std::string("invalid model: ") + e.what());
+      }
     }
     if (opt->parsed()) {
       const Study study = loadStudyFile(opt_study);

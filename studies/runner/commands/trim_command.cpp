@@ -10,6 +10,7 @@
 
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -164,21 +165,6 @@ std::string convergenceFigure(const Study& study, const TrimSummary& s, double t
   return g.str();
 }
 
-JsonObject freeFlightObject(const FreeFlightVerification& v) {
-  JsonObject o;
-  o.set("status", toString(v.status)).set("message", v.message);
-  if (v.status == FreeFlightStatus::kBounded || v.status == FreeFlightStatus::kUnbounded)
-    o.set("bounded", v.bounded);
-  else
-    o.setNull("bounded");
-  o.set("norm_ratio_max", v.norm_ratio_max)
-      .set("theta_min_deg", v.theta_min_rad * kRadToDeg)
-      .set("theta_max_deg", v.theta_max_rad * kRadToDeg)
-      .set("altitude_p2p_m", v.altitude_p2p_m)
-      .set("dominant_freq_hz", v.dominant_freq_hz);
-  return o;
-}
-
 // Stage 1 (paper Eq. 4, tethered means): its solution, residual and means, named as such.
 JsonObject stage1Object(const TrimSummary& s) {
   const OperatingPoint& p = s.refined_in_free_flight ? s.tethered_solution : s.solution;
@@ -215,7 +201,23 @@ JsonObject stage2Object(const TrimSummary& s) {
 
 }  // namespace
 
+JsonObject freeFlightObject(const FreeFlightVerification& v) {
+  JsonObject o;
+  o.set("status", toString(v.status)).set("message", v.message);
+  if (v.status == FreeFlightStatus::kBounded || v.status == FreeFlightStatus::kUnbounded)
+    o.set("bounded", v.bounded);
+  else
+    o.setNull("bounded");
+  o.set("norm_ratio_max", v.norm_ratio_max)
+      .set("theta_min_deg", v.theta_min_rad * kRadToDeg)
+      .set("theta_max_deg", v.theta_max_rad * kRadToDeg)
+      .set("altitude_p2p_m", v.altitude_p2p_m)
+      .set("dominant_freq_hz", v.dominant_freq_hz);
+  return o;
+}
+
 int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
+  if (study.trim.method == TrimMethod::kPeriodic) return runPeriodicTrimStudy(study, out_dir);
   const FlightCoreModel model(study.vehicle);
   const TrimSummary s = solveTrim(model, study.trim);
 

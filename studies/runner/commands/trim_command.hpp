@@ -6,6 +6,8 @@
 #include <filesystem>
 
 #include "studies/runner/config/study_file.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "trim/free_flight_check.hpp"
 
 namespace orni::studies {
 
@@ -13,5 +15,8 @@ namespace orni::studies {
 /// converged or not (the verdict and the reason are in summary.json). Bad input throws InputError
 /// (exit 2, mapped by main); other exceptions are failures (exit 1).
 int runTrimStudy(const Study& study, const std::filesystem::path& out_dir);
+
+/// summary.json's `free_flight` object of a trim (the free-mode keys of architecture.md 4).
+JsonObject freeFlightObject(const FreeFlightVerification& v);
 
 }  // namespace orni::studies

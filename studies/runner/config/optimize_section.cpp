@@ -222,6 +222,7 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
                                  trim->keyPath("freq_hz"),
                                  "the trim frequency of an optimisation is optimize.freq_hz");
   if (trim) {
+    rejectPeriodicMethod(*trim, "an optimisation");
     p.trim = readTrimSection(*trim, at_freq);
   } else {
     toml::table empty;

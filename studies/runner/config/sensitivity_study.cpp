@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "studies/runner/config/study_reader.hpp"
+#include "studies/runner/config/trim_section.hpp"
 
 namespace orni::studies {
 
@@ -178,6 +179,10 @@ Study loadSensitivityStudy(toml::table& root, const std::string& text, const fs:
         "[" + section +
             "] is not used by a sensitivity study: it trims every point with the "
             "settings of [trim] and flies the checks set in [sensitivity]");
+  }
+  if (top.has("trim")) {
+    TableReader t = top.requiredTable("trim", trimSectionKeys());
+    rejectPeriodicMethod(t, "a sensitivity study");
   }
   TableReader section =
       top.requiredTable("sensitivity", {"parameters", "free_flight_cycles", "free"});

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "studies/runner/config/study_reader.hpp"
+#include "studies/runner/config/trim_section.hpp"
 #include "trim/sweep_grid.hpp"
 
 namespace orni::studies {
@@ -342,6 +343,11 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
         top.fileOf(section), top.lineOf(section), section,
         "[" + std::string(section) + "] is not used by this sweep: it runs \"" + sectionOf(run) +
             "\" at every point, with the settings of [" + sectionOf(run) + "]");
+  }
+
+  if (run == StudyKind::kTrim && top.has("trim")) {
+    TableReader t = top.requiredTable("trim", trimSectionKeys());
+    rejectPeriodicMethod(t, "a sweep");
   }
 
   trim::SweepGrid grid;

@@ -75,17 +75,71 @@ std::vector<TrimUnknown> readUnknowns(TableReader& trim) {
   return unknowns;
 }
 
+std::vector<std::pair<std::string, orni::TrimMethod>> methodChoices() {
+  return {{"two_stage", orni::TrimMethod::kTwoStage}, {"periodic", orni::TrimMethod::kPeriodic}};
+}
+
+std::vector<std::pair<std::string, orni::PeriodicControl>> controlChoices() {
+  return {{"tail_angle_deg", orni::PeriodicControl::kTailAngle},
+          {"freq_hz", orni::PeriodicControl::kFrequency},
+          {"cg_shift_m", orni::PeriodicControl::kCgPosition}};
+}
+
+// [trim.periodic] into o.periodic.
+void readPeriodicTable(TableReader& t, orni::PeriodicTrimOptions* o) {
+  o->control = t.optionalEnum("control", o->control, controlChoices());
+  o->residual_tol = t.optionalDouble("residual_tol", o->residual_tol, Range::openClosed(0.0, 1e-4));
+  o->rel_tol = t.optionalDouble("rel_tol", o->rel_tol, Range::openClosed(0.0, 1e-3));
+  o->max_iterations = t.optionalInt("max_iterations", o->max_iterations, 1, 1000);
+  o->history_samples = t.optionalInt("history_samples", o->history_samples, 8, 100000);
+  o->floquet = t.optionalBool("floquet", o->floquet);
+  o->multipliers = t.optionalInt("multipliers", o->multipliers, 0, 100);
+  t.finish();
+}
+
+const std::vector<std::string> kPeriodicKeys = {"control",         "residual_tol", "rel_tol",
+                                                "max_iterations",  "history_samples",
+                                                "floquet",         "multipliers"};
+
 }  // namespace
 
 std::vector<std::string> trimSectionKeys() {
   return {"freq_hz",      "unknowns", "initial",    "bounds",     "max_iterations",
           "residual_tol", "function_tol", "rel_tol", "steady_tol", "max_cycles",
-          "derivative_cycles", "refine_in_free_flight", "refine_cycles"};
+          "derivative_cycles", "refine_in_free_flight", "refine_cycles", "method", "periodic"};
+}
+
+void rejectPeriodicMethod(TableReader& trim, const std::string& where) {
+  if (!trim.has("method")) return;
+  const orni::TrimMethod m = trim.requiredEnum("method", methodChoices());
+  if (m == orni::TrimMethod::kPeriodic)
+    throw trim.valueError("method", "\"two_stage\" (" + where +
+                                        " runs the two-stage trim; periodic trims in " + where +
+                                        " are not available yet)",
+                          "\"periodic\"");
 }
 
 orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle) {
   TrimOptions o = orni::defaultTrimOptions(vehicle);
   const std::vector<std::string> names = unknownNames();
+  if (trim.optionalEnum("method", orni::TrimMethod::kTwoStage, methodChoices()) ==
+      orni::TrimMethod::kPeriodic)
+    orni::usePeriodicMethod(&o);
+  const bool periodic = o.method == orni::TrimMethod::kPeriodic;
+  if (periodic) {
+    for (const char* key : {"refine_in_free_flight", "refine_cycles"})
+      if (trim.has(key))
+        throw InputError::unknownKey(trim.fileOf(key), trim.lineOf(key), trim.keyPath(key),
+                                     "it belongs to method = \"two_stage\"; this trim's method is "
+                                     "\"periodic\" (settings in [trim.periodic])");
+    if (std::optional<TableReader> t = trim.optionalTable("periodic", kPeriodicKeys))
+      readPeriodicTable(*t, &o.periodic);
+  } else if (trim.has("periodic")) {
+    throw InputError::unknownKey(trim.fileOf("periodic"), trim.lineOf("periodic"),
+                                 trim.keyPath("periodic"),
+                                 "[trim.periodic] applies to method = \"periodic\"; this trim's "
+                                 "method is \"two_stage\"");
+  }
 
   o.initial.freq_hz =
       trim.optionalDouble("freq_hz", o.initial.freq_hz, unknownRange(TrimUnknown::kFreq));
@@ -162,8 +216,10 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
       trim.optionalDouble("steady_tol", o.simulation.steady_tol, Range::openClosed(0.0, 0.1));
   o.simulation.cycles = trim.optionalInt("max_cycles", o.simulation.cycles, 1, 100000);
   o.derivative_cycles = trim.optionalInt("derivative_cycles", o.derivative_cycles, 1, 1000);
-  o.refine_in_free_flight = trim.optionalBool("refine_in_free_flight", o.refine_in_free_flight);
-  o.refine_cycles = trim.optionalInt("refine_cycles", o.refine_cycles, 6, 10000);
+  if (!periodic) {
+    o.refine_in_free_flight = trim.optionalBool("refine_in_free_flight", o.refine_in_free_flight);
+    o.refine_cycles = trim.optionalInt("refine_cycles", o.refine_cycles, 6, 10000);
+  }
   trim.finish();
 
   std::string why;
@@ -200,13 +256,30 @@ void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out,
   out.number("steady_tol", o.simulation.steady_tol);
   out.integer("max_cycles", o.simulation.cycles);
   out.integer("derivative_cycles", o.derivative_cycles);
-  out.boolean("refine_in_free_flight", o.refine_in_free_flight,
-              "level settled free flight (trim/free_flight_trim.hpp)");
-  out.integer("refine_cycles", o.refine_cycles);
+  const bool periodic = o.method == orni::TrimMethod::kPeriodic;
+  out.string("method", orni::toString(o.method),
+             periodic ? "the periodic orbit of free flight; the keys above set its Eq. (4) start"
+                      : "Eq. (4), then level settled free flight");
+  if (!periodic) {
+    out.boolean("refine_in_free_flight", o.refine_in_free_flight,
+                "level settled free flight (trim/free_flight_trim.hpp)");
+    out.integer("refine_cycles", o.refine_cycles);
+  }
   out.header(sub("initial"));
   for (TrimUnknown u : {TrimUnknown::kThetaMean, TrimUnknown::kSpeed, TrimUnknown::kTailAngle})
     out.scaled(orni::trimUnknownName(u), orni::unknownValue(o.initial, u),
                orni::trimUnknownScale(u));
+  if (periodic) {
+    const orni::PeriodicTrimOptions& p = o.periodic;
+    out.header(sub("periodic"));
+    out.string("control", orni::toString(p.control), "the control freed for level flight");
+    out.number("residual_tol", p.residual_tol, "max |scaled periodic residual|");
+    out.number("rel_tol", p.rel_tol, "step control of the period map's grid");
+    out.integer("max_iterations", p.max_iterations);
+    out.integer("history_samples", p.history_samples);
+    out.boolean("floquet", p.floquet);
+    out.integer("multipliers", p.multipliers, "leading multipliers by Arnoldi; 0 = all");
+  }
   out.header(sub("bounds"));
   for (TrimUnknown u : orni::kAllTrimUnknowns) {
     const TrimBounds& b = o.bounds[static_cast<std::size_t>(orni::trimIndex(u))];

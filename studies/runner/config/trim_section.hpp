@@ -25,6 +25,18 @@
 //   refine_in_free_flight  refine the Eq. (4) trim to level settled free flight (default true;
 //                     trim/free_flight_trim.hpp)
 //   refine_cycles     cycles of each settled free flight [6, 10000], default 120 (last third averaged)
+//   method            "two_stage" (default: Eq. 4, then the free-flight refinement) or "periodic"
+//                     (the periodic orbit of free flight and its Floquet multipliers,
+//                     trim/periodic_trim.hpp; kind = "trim" only). With "periodic" the keys above
+//                     set the Eq. (4) start of Newton's iteration and three defaults are looser
+//                     (residual_tol 1e-3, rel_tol 1e-4, steady_tol 1e-3: usePeriodicMethod);
+//                     refine_in_free_flight and refine_cycles belong to "two_stage" and are errors.
+//   [trim.periodic]   (method = "periodic" only) control ("tail_angle_deg" default, "freq_hz",
+//                     "cg_shift_m": the control made free for level flight), residual_tol (0, 1e-4]
+//                     default 1e-8, rel_tol (0, 1e-3] default 1e-5, max_iterations [1, 1000]
+//                     default 40, history_samples [8, 100000] default 200, floquet (bool, default
+//                     true), multipliers [0, 100] default 8 (leading multipliers by Arnoldi; 0 =
+//                     all, from the full monodromy matrix); see trim/periodic_trim_options.hpp.
 //
 // Every error is an InputError naming file, line and key ('trim.bounds.speed_mps', ...).
 #pragma once
@@ -40,6 +52,10 @@ namespace orni::studies {
 
 /// The keys a [trim] table may have.
 std::vector<std::string> trimSectionKeys();
+
+/// Throws InputError at 'trim.method' when `trim` asks for the periodic method, which `where`
+/// (e.g. "a sweep") cannot run yet.
+void rejectPeriodicMethod(TableReader& trim, const std::string& where);
 
 /// Reads a [trim] table; `vehicle` supplies the defaults of the initial guess and the frequency.
 /// Calls trim.finish(). Throws InputError.

@@ -66,6 +66,24 @@ JsonObject& JsonObject::set(const std::string& key, const std::vector<double>& v
   items_.emplace_back(key, s + "]");
   return *this;
 }
+JsonObject& JsonObject::setObjects(const std::string& key, const std::vector<JsonObject>& values) {
+  if (values.empty()) {
+    items_.emplace_back(key, "[]");
+    return *this;
+  }
+  std::string s = "[\n";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string o = values[i].toString(0);
+    std::string shifted = "  ";
+    for (std::size_t p = 0; p < o.size(); ++p) {
+      shifted += o[p];
+      if (o[p] == '\n') shifted += "  ";
+    }
+    s += shifted + (i + 1 < values.size() ? ",\n" : "\n");
+  }
+  items_.emplace_back(key, "\x01" + s + "]");  // marker: re-indented like a nested object
+  return *this;
+}
 JsonObject& JsonObject::setStrings(const std::string& key, const std::vector<std::string>& values) {
   std::string s = "[";
   for (std::size_t i = 0; i < values.size(); ++i) s += (i ? ", " : "") + jsonEscape(values[i]);

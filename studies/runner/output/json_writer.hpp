@@ -17,6 +17,8 @@ class JsonObject {
   JsonObject& set(const std::string& key, const char* value);
   JsonObject& set(const std::string& key, const JsonObject& value);
   JsonObject& set(const std::string& key, const std::vector<double>& values);
+  /// An array of objects.
+  JsonObject& setObjects(const std::string& key, const std::vector<JsonObject>& values);
   /// An array of strings.
   JsonObject& setStrings(const std::string& key, const std::vector<std::string>& values);
   /// null (a value that does not exist for this run).

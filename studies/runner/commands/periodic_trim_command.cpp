@@ -1,0 +1,372 @@
+#include "studies/runner/commands/periodic_trim_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/dynamics/flight_core.hpp"
+#include "core/model/frames.hpp"
+#include "studies/runner/commands/failed_run.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/commands/trim_command.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/periodic_trim.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+std::string fixed(double v, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
+  return buf;
+}
+
+// "U 0.61; theta 0.30; W 0.05": the states carrying most of the eigenvector (shares of |v|^2).
+std::string dominantText(const FloquetMultiplier& m) {
+  std::string s;
+  for (const auto& [name, share] : m.dominant_states)
+    s += (s.empty() ? "" : "; ") + name + " " + fixed(share, 3);
+  return s;
+}
+
+JsonObject multiplierObject(const FloquetMultiplier& m) {
+  std::vector<std::string> names;
+  std::vector<double> shares;
+  for (const auto& [name, share] : m.dominant_states) {
+    names.push_back(name);
+    shares.push_back(share);
+  }
+  return JsonObject()
+      .set("modulus", m.modulus)
+      .set("argument_deg", m.argument_rad * kRadToDeg)
+      .set("real", m.mu.real())
+      .set("imag", m.mu.imag())
+      .set("exponent_real_per_s", m.exponent_per_s.real())
+      .set("exponent_imag_radps", m.exponent_per_s.imag())
+      .set("oscillatory", m.oscillatory)
+      .set("damping_ratio", m.damping_ratio)
+      .set("period_s", m.oscillatory ? m.period_s : 0.0)
+      .set("label", m.label)
+      .setStrings("dominant_states", names)
+      .set("dominant_shares", shares);
+}
+
+JsonObject floquetObject(const PeriodicTrimSummary& s) {
+  JsonObject o;
+  if (!s.floquet_valid) {
+    o.set("valid", false).set("message", s.floquet_message.empty()
+                                             ? std::string("no Floquet analysis (floquet = false "
+                                                           "or no orbit)")
+                                             : s.floquet_message);
+    o.setObjects("multipliers", {}).setNull("stable").setNull("max_modulus").setNull("margin");
+    return o;
+  }
+  const FloquetAnalysis& f = s.floquet;
+  std::vector<JsonObject> list;
+  for (const FloquetMultiplier& m : f.multipliers) list.push_back(multiplierObject(m));
+  o.set("valid", true)
+      .setObjects("multipliers", list)
+      .set("stable", f.stable)
+      .set("max_modulus", f.max_modulus)
+      .set("margin", f.margin)
+      .set("leading_label", f.multipliers.front().label)
+      .set("count", static_cast<int>(f.multipliers.size()))
+      .set("state_count", f.state_count)
+      .set("complete", f.complete)
+      .set("method", f.method)
+      .set("period_maps", s.floquet_maps)
+      .set("note",
+           "multipliers of the monodromy matrix of the orbit's states (body theta, U, W, Q; wing "
+           "modes and rates; MST-TD states), altitude and horizontal position excluded (they are "
+           "ignorable: each would add a multiplier 1); stable = every multiplier inside the unit "
+           "circle, margin = 1 - max_modulus; eigenvectors in scaled states");
+  return o;
+}
+
+// One period of the orbit from flap phase 0.
+CsvTable orbitTable(const PeriodicTrimSummary& s) {
+  CsvTable t;
+  const OrbitHistory& h = s.history;
+  const double T = 1.0 / s.solution.freq_hz;
+  std::vector<double> time, phase, flap, theta, U, W, Q, V, x, alt, fv, fh, m, p;
+  for (std::size_t k = 0; k < h.t_s.size(); ++k) {
+    const BodyState& b = h.body[k];
+    time.push_back(h.t_s[k]);
+    phase.push_back(h.t_s[k] / T);
+    flap.push_back(h.delta_M_rad[k] * kRadToDeg);
+    theta.push_back(b.theta_rad * kRadToDeg);
+    U.push_back(b.U_mps);
+    W.push_back(b.W_mps);
+    Q.push_back(b.Q_radps * kRadToDeg);
+    V.push_back(std::hypot(b.U_mps, b.W_mps));
+    x.push_back(b.x_I_m);
+    alt.push_back(b.h_m);
+    fv.push_back(h.samples[k].loads.FV_N);
+    fh.push_back(h.samples[k].loads.FH_N);
+    m.push_back(h.samples[k].loads.M_Nm);
+    p.push_back(h.samples[k].loads.power_aero_W);
+  }
+  t.addColumn("t", "s", time);
+  t.addColumn("phase", "-", phase);
+  t.addColumn("delta_M", "deg", flap);
+  t.addColumn("theta", "deg", theta);
+  t.addColumn("U", "m/s", U);
+  t.addColumn("W", "m/s", W);
+  t.addColumn("Q", "deg/s", Q);
+  t.addColumn("airspeed", "m/s", V);
+  t.addColumn("x", "m", x);
+  t.addColumn("h", "m", alt);
+  t.addColumn("FV", "N", fv);
+  t.addColumn("FH", "N", fh);
+  t.addColumn("M", "N m", m);
+  t.addColumn("power_aero", "W", p);
+  return t;
+}
+
+CsvTable iterationTable(const PeriodicTrimSummary& s) {
+  CsvTable t;
+  std::vector<double> pass, it, rmax, rnorm, step, damping, fresh, refreshed, maps;
+  for (std::size_t i = 0; i < s.newton_log.size(); ++i) {
+    const ShootingIteration& r = s.newton_log[i];
+    pass.push_back(s.newton_pass[i]);
+    it.push_back(r.iteration);
+    rmax.push_back(r.residual_max);
+    rnorm.push_back(r.residual_norm);
+    step.push_back(r.step_norm);
+    damping.push_back(r.damping);
+    fresh.push_back(r.fresh_jacobian ? 1.0 : 0.0);
+    refreshed.push_back(r.refreshed ? 1.0 : 0.0);
+    maps.push_back(static_cast<double>(r.period_maps));
+  }
+  t.addColumn("pass", "1=friction at Eq.4 speed 2=at orbit airspeed", pass);
+  t.addColumn("iteration", "-", it);
+  t.addColumn("residual_max", "scaled", rmax);
+  t.addColumn("residual_norm", "scaled", rnorm);
+  t.addColumn("step_norm", "scaled", step);
+  t.addColumn("damping", "-", damping);
+  t.addColumn("fresh_jacobian", "-", fresh);
+  t.addColumn("grid_refreshed", "-", refreshed);
+  t.addColumn("period_maps", "-", maps);
+  return t;
+}
+
+CsvTable floquetTable(const PeriodicTrimSummary& s) {
+  CsvTable t;
+  std::vector<double> rank, re, im, mod, arg, er, ei, zeta, period, inside;
+  std::vector<std::string> label, dominant;
+  int k = 0;
+  if (s.floquet_valid)
+    for (const FloquetMultiplier& m : s.floquet.multipliers) {
+      rank.push_back(++k);
+      re.push_back(m.mu.real());
+      im.push_back(m.mu.imag());
+      mod.push_back(m.modulus);
+      arg.push_back(m.argument_rad * kRadToDeg);
+      er.push_back(m.exponent_per_s.real());
+      ei.push_back(m.exponent_per_s.imag());
+      zeta.push_back(m.damping_ratio);
+      period.push_back(m.oscillatory ? m.period_s : 0.0);
+      inside.push_back(m.modulus < 1.0 ? 1.0 : 0.0);
+      label.push_back(m.label);
+      dominant.push_back(dominantText(m));
+    }
+  t.addColumn("rank", "-", rank);
+  t.addColumn("mu_real", "-", re);
+  t.addColumn("mu_imag", "-", im);
+  t.addColumn("modulus", "-", mod);
+  t.addColumn("argument", "deg", arg);
+  t.addColumn("exponent_real", "1/s", er);
+  t.addColumn("exponent_imag", "rad/s", ei);
+  t.addColumn("damping_ratio", "-", zeta);
+  t.addColumn("period", "s (0 = not oscillatory)", period);
+  t.addColumn("inside_unit_circle", "-", inside);
+  t.addTextColumn("label", "-", label);
+  t.addTextColumn("dominant_states", "share of |v|^2", dominant);
+  return t;
+}
+
+// The multipliers in the complex plane with the unit circle: the whole disc, and a zoom on the
+// leading multiplier (near the circle on a weakly damped vehicle).
+std::string multiplierFigure(const Study& study, const PeriodicTrimSummary& s) {
+  const FloquetAnalysis& f = s.floquet;
+  const FloquetMultiplier& lead = f.multipliers.front();
+  std::ostringstream g;
+  g << "set multiplot layout 1,2 title \"" << study.name << ": Floquet multipliers of the periodic "
+    << "orbit at " << fixed(s.solution.freq_hz, 2) << " Hz, " << (f.stable ? "stable" : "UNSTABLE")
+    << ", max |mu| = " << fixed(f.max_modulus, 5) << " (" << lead.label << ")\\n"
+    << (f.complete ? "all " : "the leading ") << f.multipliers.size() << " of " << f.state_count
+    << " multipliers; altitude and position (ignorable) excluded\" noenhanced font ',12'\n";
+  g << "set size ratio -1\nset grid\nset key bottom left noenhanced\n";
+  g << "set xlabel 'Re {/Symbol m}'\nset ylabel 'Im {/Symbol m}'\n";
+  g << "set parametric\nset trange [0:2*pi]\nset samples 400\n";
+  g << "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\n";
+  g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
+       "'floquet.csv' skip 2 using 2:3 with points pt 7 ps 1.3 lc rgb '#c0392b' "
+       "title 'multipliers'\n";
+  // Zoom: a square on the real axis holding the leading multiplier (and its conjugate) and the
+  // circle's nearest point.
+  const double half = std::max(0.02, 1.5 * std::max(std::abs(lead.mu.imag()),
+                                                     std::abs(1.0 - lead.modulus)));
+  const double cx = lead.mu.real() >= 0.0 ? std::max(lead.mu.real(), 1.0 - half)
+                                          : std::min(lead.mu.real(), -1.0 + half);
+  const double cy = 0.0;
+  g << "set xrange [" << cx - half << ":" << cx + half << "]\nset yrange [" << cy - half << ":"
+    << cy + half << "]\n";
+  g << "set title 'zoom on the leading multiplier' noenhanced\n";
+  g << "set label 1 '" << lead.label << "' at first " << lead.mu.real() << ", first "
+    << std::abs(lead.mu.imag()) << " offset 1,1 noenhanced\n";
+  g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
+       "'floquet.csv' skip 2 using 2:3 with points pt 7 ps 1.5 lc rgb '#c0392b' "
+       "title 'multipliers'\n";
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+// theta, airspeed, W and altitude over one period of the orbit.
+std::string orbitFigure(const Study& study, const PeriodicTrimSummary& s) {
+  std::ostringstream g;
+  g << "set multiplot layout 2,2 title \"" << study.name << ": periodic orbit at "
+    << fixed(s.solution.freq_hz, 2) << " Hz (tail " << fixed(s.solution.tail_angle_rad * kRadToDeg, 3)
+    << " deg), one flapping period from phase 0\" noenhanced font ',12'\n";
+  g << "set grid\nset key off\nset xlabel 'phase t/T (-)'\nset xrange [0:1]\n";
+  g << "set ylabel 'theta (deg)'\nplot 'periodic_orbit.csv' skip 2 using 2:4 with lines lw 2\n";
+  g << "set ylabel 'airspeed (m/s)'\nplot 'periodic_orbit.csv' skip 2 using 2:8 with lines lw 2\n";
+  g << "set ylabel 'W (m/s)'\nplot 'periodic_orbit.csv' skip 2 using 2:6 with lines lw 2\n";
+  g << "set ylabel 'altitude gain h (m)'\nplot 'periodic_orbit.csv' skip 2 using 2:10 with lines "
+       "lw 2\n";
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+}  // namespace
+
+int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_dir,
+                         PeriodicRunKind kind) {
+  const FlightCoreModel model(study.vehicle);
+  const PeriodicTrimSummary s = solvePeriodicTrim(model, study.trim);
+  const double W = study.vehicle.body.mass_kg * study.vehicle.air.gravity_mps2;
+  const bool have_orbit = s.converged;
+
+  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+  writeFileAtomic(out_dir / "periodic_iterations.csv", iterationTable(s).toString());
+  writeFileAtomic(out_dir / "floquet.csv", floquetTable(s).toString());
+  if (have_orbit) writeFileAtomic(out_dir / "periodic_orbit.csv", orbitTable(s).toString());
+  // What this run does not produce must not be left from an earlier run into the folder.
+  if (!have_orbit) removeRunOutputs(out_dir, {"periodic_orbit.csv"}, {"periodic_orbit"});
+  if (!s.floquet_valid) removeRunOutputs(out_dir, {}, {"floquet_multipliers"});
+
+  const PeriodicCycleMeans& m = s.mean;
+  JsonObject start;
+  if (have_orbit)
+    start.set("theta_deg", s.orbit_start[0] * kRadToDeg)
+        .set("U_mps", s.orbit_start[1])
+        .set("W_mps", s.orbit_start[2])
+        .set("Q_degps", s.orbit_start[3] * kRadToDeg)
+        .set("wing_and_aero_states", static_cast<int>(s.orbit_start.size()) - 4);
+  const TrimSummary& e4 = s.stage1;
+  JsonObject stage1;
+  stage1.set("converged", e4.converged)
+      .set("message", e4.message)
+      .set("freq_hz", e4.solution.freq_hz)
+      .set("theta_mean_deg", e4.solution.theta_rad * kRadToDeg)
+      .set("speed_mps", e4.solution.speed_mps)
+      .set("tail_angle_deg", e4.solution.tail_angle_rad * kRadToDeg)
+      .set("residual_scaled_max", e4.scaled_residual_max)
+      .set("residual_tolerance", study.trim.residual_tol)
+      .set("evaluations", e4.evaluations);
+  const ShootingSummary& sh = s.shooting;
+  JsonObject solver;
+  solver.set("method",
+             "single shooting over one flapping period: Newton on the scaled periodic residual "
+             "(x(T) - x(0) per state scale, altitude gain / 0.1 m), Jacobian by forward "
+             "differences on a fixed step grid (body columns first, then Broyden updates), "
+             "backtracking line search")
+      .set("control", toString(study.trim.periodic.control))
+      .set("message", sh.message)
+      .set("residual_tolerance", study.trim.periodic.residual_tol)
+      .set("iterations", sh.iterations)
+      .set("period_maps", sh.period_maps)
+      .set("jacobians", sh.jacobians)
+      .set("partial_jacobians", sh.partial_jacobians)
+      .set("broyden_updates", sh.broyden_updates)
+      .set("grid_refreshes", sh.refreshes)
+      .set("grid_steps", s.grid_steps)
+      .set("rhs_evaluations", s.rhs_evaluations)
+      .set("integrator", s.integrator)
+      .set("rel_tol", study.trim.periodic.rel_tol)
+      .set("friction_speed_mps", s.friction_speed_mps)
+      .set("orbit_check_scaled", s.orbit_check)
+      .set("orbit_check_note",
+           "max |x(T) - x(0)| in state scales when the orbit start is flown one period by the "
+           "free-flight integrator (ARKODE, adaptive, the same rel_tol): the integration error of "
+           "the orbit, independent of the shooting's fixed grid")
+      .set("cg_shift_m", s.cg_shift_m);
+
+  JsonObject summary;
+  summary.set("kind", kind == PeriodicRunKind::kStability ? "stability" : "trim")
+      .set("status", toString(s.status))
+      .set("message", s.message)
+      .set("wall_time_s", s.wall_time_s)
+      .set("version", versionString())
+      .set("converged", s.converged)
+      .set("method", toString(TrimMethod::kPeriodic))
+      .set("freq_hz", s.solution.freq_hz)
+      .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
+      .set("speed_mps", s.solution.speed_mps)
+      .set("tail_angle_deg", s.solution.tail_angle_rad * kRadToDeg);
+  if (have_orbit) {
+    summary.set("periodic_residual", sh.residual_max)
+        .set("residual", JsonObject()
+                             .set("FV_N", m.FV_N - W)
+                             .set("FH_N", m.FH_N)
+                             .set("M_Nm", m.M_Nm));
+  } else {
+    summary.setNull("periodic_residual")
+        .set("residual", JsonObject().setNull("FV_N").setNull("FH_N").setNull("M_Nm"));
+  }
+  summary
+      .set("residual_source",
+           "periodic_residual: max |x(T) - x(0)| of the orbit in state scales (and the altitude "
+           "gain in 0.1 m); residual: the orbit's cycle means of the fuselage loads (wings' "
+           "aerodynamic and inertial loads, tail, fuselage drag) in the flight-path frame minus "
+           "the weight, not driven to zero: they balance the mean of the fuselage's own "
+           "inertial load in that rotating frame")
+      .set("floquet", floquetObject(s))
+      .set("free_flight", freeFlightObject(s.free_flight))
+      .set("orbit_start", start)
+      .set("mean", JsonObject()
+                       .set("theta_deg", m.theta_rad * kRadToDeg)
+                       .set("airspeed_mps", m.airspeed_mps)
+                       .set("U_mps", m.U_mps)
+                       .set("W_mps", m.W_mps)
+                       .set("FV_N", m.FV_N)
+                       .set("FH_N", m.FH_N)
+                       .set("M_Nm", m.M_Nm)
+                       .set("power_W", m.power_aero_W)
+                       .set("theta_min_deg", m.theta_min_rad * kRadToDeg)
+                       .set("theta_max_deg", m.theta_max_rad * kRadToDeg)
+                       .set("altitude_p2p_m", m.altitude_p2p_m))
+      .set("weight_N", W)
+      .set("stage1_equation4", stage1)
+      .set("periodic", solver)
+      .set("time_s", JsonObject()
+                         .set("equation4_start", s.stage1_time_s)
+                         .set("orbit", s.orbit_time_s)
+                         .set("floquet", s.floquet_time_s));
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  if (have_orbit) drawFigure(out_dir, "periodic_orbit", orbitFigure(study, s));
+  if (s.floquet_valid) drawFigure(out_dir, "floquet_multipliers", multiplierFigure(study, s));
+  std::cout << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
+            << out_dir.string() << "\n";
+  return 0;
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,331 @@
+// Periodic-orbit trim and Floquet stability of the free-flying vehicle (trim/periodic_trim.hpp,
+// issue 16) against independent truths:
+//   - the glide limit (flapping amplitude 0, rigid wing): the periodic orbit is the steady glide,
+//     a root of the free-flight right-hand side, and its multipliers are exp(lambda T) of the
+//     eigenvalues lambda of the right-hand side's Jacobian (the linearised longitudinal equations,
+//     paper Eq. 1, with the strips' MST-TD states), phugoid and short period among them;
+//   - the flexible magpie at 12 Hz: a perturbation along the leading Floquet eigenvector, flown
+//     by the production free-flight integrator (ARKODE, not the shooting's recorded grid), decays
+//     per flapping cycle by the leading multiplier's modulus;
+//   - Arnoldi's leading multipliers equal those of the full monodromy matrix;
+//   - the periodic trim against the committed two-stage trim (16.35 deg, 16.32 m/s, 19.98 deg):
+//     the difference is the two-stage's unsettled phugoid (see the test's comment).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
+
+#include "core/analysis/monodromy.hpp"
+#include "core/analysis/periodic_shooting.hpp"
+#include "core/dynamics/free_flight.hpp"
+#include "core/dynamics/free_flight_system.hpp"
+#include "core/dynamics/modal_implicit_split.hpp"
+#include "core/integrate/ode_integrator.hpp"
+#include "core/model/frames.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+#include "trim/free_flight_period_map.hpp"
+#include "trim/periodic_trim.hpp"
+
+namespace orni {
+namespace {
+
+constexpr double kFreqHz = 12.0;
+
+VehicleModel magpie() {
+  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                  "/studies/vehicles/efw_magpie.toml");
+}
+
+TrimOptions periodicOptions(const VehicleModel& v) {
+  TrimOptions o = defaultTrimOptions(v);
+  o.initial.freq_hz = kFreqHz;
+  usePeriodicMethod(&o);
+  o.verify_free_flight = false;  // the bounded-norm check is the two-stage trim's; not tested here
+  return o;
+}
+
+// The states at the ends of `cycles` flapping periods of a free flight from the reduced state x
+// (FreeFlightPeriodMap layout, SI) flown by the production integrator (ARKODE: IMEX
+// ARK4(3)7L[2]SA for the flexible wing), skin friction frozen at `friction_mps`.
+std::vector<std::vector<double>> flyPeriods(const FlightCoreModel& model,
+                                            const std::vector<double>& x, double tail_rad,
+                                            double friction_mps, int cycles, double rel_tol) {
+  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{kFreqHz, tail_rad});
+  sys.setFrictionSpeed(friction_mps);
+  const int n = sys.stateCount();
+  std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
+  std::copy(x.begin(), x.end(), y0.begin() + 2);
+  IntegratorOptions io;
+  io.rel_tol = rel_tol;
+  sys.absoluteTolerances(rel_tol, 0.1 * rel_tol, 0.1 * rel_tol, &io.abs_tol);
+  const double T = 1.0 / kFreqHz;
+  io.max_step = T / 8.0;
+  io.method = ErkMethod::kArk436;
+  using Imex = ModalImex<FreeFlightSystem>;
+  OdeIntegrator integ = sys.hasModes()
+                            ? OdeIntegrator(n, &Imex::explicitRhs, Imex::part(), &sys, io)
+                            : OdeIntegrator(n, &FreeFlightSystem::rhsCallback, &sys, io);
+  integ.reset(0.0, y0.data());
+  std::vector<std::vector<double>> ends;
+  for (int k = 1; k <= cycles; ++k) {
+    EXPECT_EQ(integ.advanceTo(k * T), IntegratorStatus::kOk) << integ.lastError();
+    ends.emplace_back(integ.state() + 2, integ.state() + 2 + x.size());
+  }
+  return ends;
+}
+
+// One periodic trim of the flexible magpie at 12 Hz shared by the tests of this suite.
+class PeriodicTrimEfw : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    vehicle_ = new VehicleModel(magpie());
+    model_ = new FlightCoreModel(*vehicle_);
+    trim_ = new PeriodicTrimSummary(solvePeriodicTrim(*model_, periodicOptions(*vehicle_)));
+  }
+  static void TearDownTestSuite() {
+    delete trim_;
+    delete model_;
+    delete vehicle_;
+  }
+  static VehicleModel* vehicle_;
+  static FlightCoreModel* model_;
+  static PeriodicTrimSummary* trim_;
+};
+VehicleModel* PeriodicTrimEfw::vehicle_ = nullptr;
+FlightCoreModel* PeriodicTrimEfw::model_ = nullptr;
+PeriodicTrimSummary* PeriodicTrimEfw::trim_ = nullptr;
+
+// The issue's tolerance on the periodic residual (scaled states).
+constexpr double kPeriodicResidualTol = 1e-8;
+
+TEST_F(PeriodicTrimEfw, ConvergesToALevelPeriodicOrbitThatIsStable) {
+  const PeriodicTrimSummary& s = *trim_;
+  ASSERT_EQ(s.status, TrimStatus::kOk) << s.message;
+  EXPECT_TRUE(s.converged);
+  EXPECT_LE(s.shooting.residual_max, kPeriodicResidualTol);
+  ASSERT_EQ(s.shooting.g.size(), 1u);
+  EXPECT_LE(std::abs(s.shooting.g[0]), 0.1 * kPeriodicResidualTol);  // altitude gain, m
+  EXPECT_DOUBLE_EQ(s.solution.freq_hz, kFreqHz);
+  // The orbit flown one period by ARKODE (adaptive, independent of the recorded grid) returns
+  // within the integration tolerance: 2.8e-4 scaled at rel_tol 1e-5 (1e-3 leaves margin).
+  EXPECT_LT(s.orbit_check, 1e-3);
+  ASSERT_TRUE(s.floquet_valid) << s.floquet_message;
+  EXPECT_TRUE(s.floquet.stable);
+  EXPECT_FALSE(s.floquet.complete);
+  EXPECT_EQ(s.floquet.state_count, static_cast<int>(s.orbit_start.size()));
+  EXPECT_EQ(s.floquet.multipliers.size(), 8u);
+  // The weak motion is the phugoid: a slowly decaying pair (|mu| 0.986 per cycle, 11 s period),
+  // then the short period.
+  const FloquetMultiplier& lead = s.floquet.multipliers[0];
+  EXPECT_EQ(lead.label.rfind("phugoid-like", 0), 0u) << lead.label;
+  EXPECT_NEAR(lead.modulus, 0.98605, 1e-3);
+  EXPECT_TRUE(lead.oscillatory);
+  EXPECT_EQ(s.floquet.multipliers[2].label.rfind("short-period-like", 0), 0u)
+      << s.floquet.multipliers[2].label;
+  EXPECT_LT(s.floquet.multipliers[2].modulus, 0.5);
+  EXPECT_NEAR(s.floquet.margin, 1.0 - lead.modulus, 0.0);
+  // The histories hold one period; their altitude returns to its start (to the integration error:
+  // the sample phases join the step grid there, 5e-7 m measured).
+  ASSERT_EQ(s.history.t_s.size(), 201u);
+  EXPECT_NEAR(s.history.body.back().h_m, s.history.body.front().h_m, 1e-5);
+}
+
+// The leading 8 multipliers by Arnoldi against the full monodromy matrix (107 period maps) on the
+// same grid: the same numbers to the finite-difference noise (1e-6 is the Ritz tolerance).
+TEST_F(PeriodicTrimEfw, ArnoldiLeadingMultipliersEqualThoseOfTheFullMonodromy) {
+  const PeriodicTrimSummary& s = *trim_;
+  ASSERT_TRUE(s.floquet_valid);
+  FreeFlightPeriodMapOptions mo;
+  mo.rel_tol = periodicOptions(*vehicle_).periodic.rel_tol;
+  mo.friction_speed_mps = s.friction_speed_mps;
+  FreeFlightPeriodMap map(*model_, mo);
+  std::vector<double> p = FreeFlightPeriodMap::parameters(s.solution);
+  std::string why;
+  ASSERT_TRUE(map.refreshDiscretisation(s.orbit_start.data(), p.data(), &why)) << why;
+  Eigen::MatrixXd M;
+  long maps = 0;
+  ASSERT_TRUE(monodromyByDifferences(map, s.orbit_start, p, 1e-7, &M, &maps, &why)) << why;
+  EXPECT_EQ(maps, static_cast<long>(s.orbit_start.size()) + 1);
+  const MonodromyEigen full = eigenOfMonodromy(M);
+  ASSERT_TRUE(full.ok);
+  ArnoldiOptions ao;
+  ao.count = 8;
+  const MonodromyEigen lead = leadingMultipliers(map, s.orbit_start, p, ao);
+  ASSERT_TRUE(lead.ok) << lead.message;
+  ASSERT_EQ(lead.multipliers.size(), 8);
+  EXPECT_LT(lead.period_maps, 40);  // the point of Arnoldi: far fewer maps than 107
+  for (Eigen::Index k = 0; k < 8; ++k)
+    EXPECT_LT(std::abs(lead.multipliers[k] - full.multipliers[k]), 1e-6)
+        << k << ": " << lead.multipliers[k] << " vs " << full.multipliers[k];
+}
+
+// A deviation along the leading (phugoid) eigenvector, flown by ARKODE: its component in the
+// pair's eigenplane shrinks by |mu| per flapping cycle. Two flights (on the orbit and perturbed)
+// at rel_tol 1e-8, the difference projected on (Re v, Im v) by least squares: c_k = a_k + i b_k
+// with |c_k| = |c_0| |mu|^k for the linearised flow.
+TEST_F(PeriodicTrimEfw, PerturbationAlongTheLeadingEigenvectorDecaysByItsModulusPerCycle) {
+  const PeriodicTrimSummary& s = *trim_;
+  ASSERT_TRUE(s.floquet_valid);
+  const FloquetMultiplier& lead = s.floquet.multipliers[0];
+  const std::size_t n = s.orbit_start.size();
+  const double eps = 1e-3;  // scaled: 1e-3 m/s in U, 1e-4 rad in theta; linear to 1e-6
+  std::vector<double> perturbed = s.orbit_start;
+  for (std::size_t i = 0; i < n; ++i)
+    perturbed[i] += eps * s.state_scales[i] * lead.eigenvector[static_cast<Eigen::Index>(i)].real();
+  constexpr int kCycles = 24;
+  constexpr double kFlightRelTol = 1e-8;
+  const auto ref = flyPeriods(*model_, s.orbit_start, s.solution.tail_angle_rad,
+                              s.friction_speed_mps, kCycles, kFlightRelTol);
+  const auto pert = flyPeriods(*model_, perturbed, s.solution.tail_angle_rad,
+                               s.friction_speed_mps, kCycles, kFlightRelTol);
+  Eigen::MatrixXd B(static_cast<Eigen::Index>(n), 2);
+  B.col(0) = lead.eigenvector.real();
+  B.col(1) = -lead.eigenvector.imag();
+  std::vector<double> amplitude;
+  for (int k = 0; k < kCycles; ++k) {
+    Eigen::VectorXd d(static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i)
+      d[static_cast<Eigen::Index>(i)] =
+          (pert[static_cast<std::size_t>(k)][i] - ref[static_cast<std::size_t>(k)][i]) /
+          s.state_scales[i];
+    const Eigen::Vector2d ab = B.colPivHouseholderQr().solve(d);
+    amplitude.push_back(ab.norm());
+  }
+  // From cycle 4 (the other components, |mu| <= 0.38, are below 1 % of the start by then) to the
+  // last.
+  const double rate = std::pow(amplitude.back() / amplitude[3], 1.0 / (kCycles - 4));
+  EXPECT_NEAR(rate, lead.modulus, 0.02 * lead.modulus);  // the issue's 2 %
+  // Stricter: the decay per cycle, 1 - |mu| = 0.014, to 5 % (measured 0.3 %).
+  EXPECT_NEAR(1.0 - rate, 1.0 - lead.modulus, 0.05 * (1.0 - lead.modulus));
+}
+
+// The committed two-stage trim (16.35 deg, 16.32 m/s, 19.98 deg; test_trim_efw.cpp) and the
+// periodic orbit (16.21 deg, 16.50 m/s, 19.74 deg) differ by more than the issue's 0.1 deg,
+// 0.05 m/s and 0.1 deg. Measured reason: the two-stage's free-flight stage averages the last 40
+// of 120 cycles after a release at the Eq. (4) point, but the phugoid decays by only 0.986 per
+// cycle (a 132-cycle period): 32 % of the release disturbance is left in the window, which is a
+// third of a phugoid period, so its mean climb angle (what the secant on the tail angle zeroes) is
+// off by 0.15 deg at the periodic orbit's tail angle. Released at the orbit's mean point with its
+// tail angle, 600 cycles (last 200 averaged) settle to theta 16.205 deg, airspeed 16.499 m/s and a
+// climb angle of -0.001 deg: the periodic orbit; the stage-2 window of the same flight reads
+// 16.223 deg, 16.476 m/s, +0.021 deg. (A 600-cycle flight takes 6 s: measured once, not here.)
+// Pinned: the periodic trim itself (to 0.01 deg, 0.01 m/s, 0.01 deg: its rel_tol and Newton
+// tolerance move it by < 0.001) and its distance to the two-stage trim (the phugoid bias,
+// below 0.3 deg, 0.3 m/s and 0.4 deg).
+TEST_F(PeriodicTrimEfw, AgreesWithTheTwoStageTrimUpToTheTwoStagesUnsettledPhugoid) {
+  const PeriodicTrimSummary& s = *trim_;
+  ASSERT_EQ(s.status, TrimStatus::kOk);
+  const double theta_deg = s.solution.theta_rad * kRadToDeg;
+  const double tail_deg = s.solution.tail_angle_rad * kRadToDeg;
+  EXPECT_NEAR(theta_deg, 16.206, 0.01);
+  EXPECT_NEAR(s.solution.speed_mps, 16.499, 0.01);
+  EXPECT_NEAR(tail_deg, 19.742, 0.01);
+  constexpr double kTwoStageThetaDeg = 16.35, kTwoStageSpeed = 16.32, kTwoStageTailDeg = 19.98;
+  EXPECT_LT(std::abs(theta_deg - kTwoStageThetaDeg), 0.3);
+  EXPECT_LT(std::abs(s.solution.speed_mps - kTwoStageSpeed), 0.3);
+  EXPECT_LT(std::abs(tail_deg - kTwoStageTailDeg), 0.4);
+}
+
+// ------------------------------------------------------------------------------------------------
+// Glide limit: flapping amplitude 0, rigid wing. The orbit is an equilibrium (the steady glide at
+// the given tail angle, descending: no level condition, no free control) and the monodromy is
+// exp(A T) with A the Jacobian of the right-hand side there.
+TEST(PeriodicTrimGlide, MultipliersAreExpLambdaTOfTheLinearisedLongitudinalEquations) {
+  VehicleModel v = magpie();
+  v.wing.structure = StructureLevel::kRigid;
+  v.flapping.amplitude_rad = 0.0;
+  const OperatingPoint guess{12.0, kFreqHz, 5.0 * kDegToRad, 10.0 * kDegToRad};
+  v.operating_point = guess;
+  const FlightCoreModel model(v);
+  constexpr double kFriction = 12.0;
+  FreeFlightPeriodMapOptions mo;
+  mo.rel_tol = 1e-8;             // the map's own integration error well below the 1e-4 asked
+  mo.max_step_fraction = 0.0625;
+  mo.friction_speed_mps = kFriction;
+  FreeFlightPeriodMap map(model, mo);
+  FreeFlightSystem sys(model, nullptr, ControlInput{kFreqHz, guess.tail_angle_rad});
+  std::vector<double> y(static_cast<std::size_t>(sys.stateCount()), 0.0);
+  sys.initialState(0.0, trimmedBodyState(guess, 0.0), y.data());
+  sys.setFrictionSpeed(kFriction);
+  const int n = map.stateCount();
+  ASSERT_EQ(sys.powerOffset() - 2, n);
+  const std::vector<double> x0(y.begin() + 2, y.begin() + 2 + n);
+  ShootingOptions so;
+  so.first_jacobian_states = {0, 1, 2, 3};
+  const ShootingSummary s = solveShooting(map, x0, FreeFlightPeriodMap::parameters(guess), so);
+  ASSERT_EQ(s.status, ShootingStatus::kConverged) << s.message;
+  ASSERT_TRUE(s.jacobian_valid);
+
+  // The steady glide: the right-hand side vanishes (to rounding, in state scales per second).
+  std::copy(s.x.begin(), s.x.end(), y.begin() + 2);
+  std::vector<double> f(y.size()), fp(y.size()), fm(y.size());
+  sys.rhs(0.0, y.data(), f.data());
+  for (int i = 0; i < n; ++i)
+    EXPECT_LT(std::abs(f[static_cast<std::size_t>(i + 2)]) / map.stateScale(i), 1e-9) << i;
+  EXPECT_GT(s.x[1], 5.0);  // a real glide, not a stall
+  EXPECT_NEAR(s.x[3], 0.0, 1e-12);
+
+  // A = df/dx by central differences (scaled states), its eigenvalues lambda.
+  Eigen::MatrixXd A(n, n);
+  for (int j = 0; j < n; ++j) {
+    const double h = 1e-6 * map.stateScale(j);
+    std::vector<double> yp = y, ym = y;
+    yp[static_cast<std::size_t>(j + 2)] += h;
+    ym[static_cast<std::size_t>(j + 2)] -= h;
+    sys.rhs(0.0, yp.data(), fp.data());
+    sys.rhs(0.0, ym.data(), fm.data());
+    for (int i = 0; i < n; ++i)
+      A(i, j) = (fp[static_cast<std::size_t>(i + 2)] - fm[static_cast<std::size_t>(i + 2)]) /
+                (2.0 * h) * map.stateScale(j) / map.stateScale(i);
+  }
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+  ASSERT_EQ(es.info(), Eigen::Success);
+  const double T = 1.0 / kFreqHz;
+  std::vector<std::complex<double>> expected;
+  for (int k = 0; k < n; ++k) expected.push_back(std::exp(es.eigenvalues()[k] * T));
+
+  std::vector<FloquetStateInfo> names = map.stateInfo();
+  const FloquetAnalysis fa = analyseFloquet(s.monodromy, T, names);
+  ASSERT_EQ(static_cast<int>(fa.multipliers.size()), n);
+  constexpr double kGlideTol = 1e-4;  // the issue's tolerance (measured 1.2e-7)
+  for (const FloquetMultiplier& m : fa.multipliers) {
+    double best = 1e300;
+    for (const std::complex<double>& e : expected) best = std::min(best, std::abs(m.mu - e));
+    EXPECT_LT(best, kGlideTol) << "multiplier " << m.mu;
+  }
+  // The rigid-body longitudinal modes lead: phugoid (lambda -0.13 +- 1.39i 1/s here), then the
+  // short period (-15.5 +- 36i 1/s); then the strips' lag states.
+  ASSERT_GE(fa.multipliers.size(), 4u);
+  EXPECT_EQ(fa.multipliers[0].label.rfind("phugoid-like", 0), 0u) << fa.multipliers[0].label;
+  EXPECT_EQ(fa.multipliers[2].label.rfind("short-period-like", 0), 0u) << fa.multipliers[2].label;
+  EXPECT_NEAR(fa.multipliers[0].exponent_per_s.real(), std::log(fa.multipliers[0].modulus) / T,
+              1e-12);
+  EXPECT_TRUE(fa.multipliers[0].oscillatory);
+  EXPECT_GT(fa.multipliers[0].period_s, 1.0);  // the phugoid is slow
+  EXPECT_LT(fa.multipliers[2].period_s, 0.5);  // the short period is fast
+}
+
+// A vehicle far too heavy for its wings: no Eq. (4) start, reported (no exception, no NaN in the
+// reported trim point: it is the start's last iterate).
+TEST(PeriodicTrimFailure, ImpossibleRequestIsNotConvergedWithAReason) {
+  VehicleModel v = magpie();
+  v.body.mass_kg = 10.0;
+  v.body.pitch_inertia_kgm2 = 0.03;
+  const FlightCoreModel model(v);
+  const PeriodicTrimSummary s = solvePeriodicTrim(model, periodicOptions(v));
+  EXPECT_EQ(s.status, TrimStatus::kNotConverged);
+  EXPECT_FALSE(s.converged);
+  EXPECT_FALSE(s.floquet_valid);
+  EXPECT_NE(s.message.find("Eq. (4)"), std::string::npos) << s.message;
+  EXPECT_TRUE(std::isfinite(s.solution.theta_rad) && std::isfinite(s.solution.speed_mps) &&
+              std::isfinite(s.solution.tail_angle_rad));
+  EXPECT_EQ(s.free_flight.status, FreeFlightStatus::kSkipped);
+}
+
+}  // namespace
+}  // namespace orni
