@@ -204,11 +204,18 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
     if (s.shooting.status != ShootingStatus::kConverged) break;
     x = s.shooting.x;
     p = s.shooting.p;
-    // Histories and cycle means of this orbit.
+    // Histories and cycle means of this orbit; the first pass only needs the mean airspeed (the
+    // friction speed of the second), for which 16 uniform samples of the smooth periodic airspeed
+    // are plenty (the rectangle rule is spectrally accurate on a periodic function).
     sample_why.clear();
-    if (map.sampleOrbit(x.data(), p.data(), options.periodic.history_samples, &s.history,
-                        &sample_why))
-      s.mean = cycleMeans(s.history, 1.0 / p[kPeriodFrequency]);
+    const int samples = pass == 1 ? options.periodic.history_samples
+                                  : std::min(16, options.periodic.history_samples);
+    if (!map.sampleOrbit(x.data(), p.data(), samples, &s.history, &sample_why)) {
+      s.shooting.status = ShootingStatus::kFailed;
+      s.shooting.message = "the orbit's histories could not be integrated: " + sample_why;
+      break;
+    }
+    s.mean = cycleMeans(s.history, 1.0 / p[kPeriodFrequency]);
     if (pass == 1 || !(s.mean.airspeed_mps > 0.0)) break;
     map.setFrictionSpeed(s.mean.airspeed_mps);
     so.initial_jacobian = s.shooting.jacobian;
@@ -283,7 +290,6 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
                 s.stage1.solution.theta_rad * kRadToDeg, s.stage1.solution.speed_mps,
                 s.stage1.solution.tail_angle_rad * kRadToDeg, s.shooting.message.c_str());
   s.message = buf;
-  if (!sample_why.empty()) s.message += "; orbit histories failed: " + sample_why;
   if (!options.verify_free_flight) {
     s.free_flight.message = "free-flight check not requested";
   } else {

@@ -199,9 +199,12 @@ TEST_F(PeriodicTrimEfw, PerturbationAlongTheLeadingEigenvectorDecaysByItsModulus
   // From cycle 4 (the other components, |mu| <= 0.38, are below 1 % of the start by then) to the
   // last.
   const double rate = std::pow(amplitude.back() / amplitude[3], 1.0 / (kCycles - 4));
+  RecordProperty("measured_rate", std::to_string(rate));
+  RecordProperty("leading_modulus", std::to_string(lead.modulus));
   EXPECT_NEAR(rate, lead.modulus, 0.02 * lead.modulus);  // the 2 %
-  // Stricter: the decay per cycle, 1 - |mu| = 0.014, to 5 % (measured 0.3 %).
-  EXPECT_NEAR(1.0 - rate, 1.0 - lead.modulus, 0.05 * (1.0 - lead.modulus));
+  // Stricter: the decay per cycle, 1 - |mu| = 0.014, to 1 % (measured 0.02 %: rate 0.986054
+  // against |mu| 0.986051; the grid map at rel_tol 1e-5 against ARKODE at 1e-8).
+  EXPECT_NEAR(1.0 - rate, 1.0 - lead.modulus, 0.01 * (1.0 - lead.modulus));
 }
 
 // The committed two-stage trim (16.35 deg, 16.32 m/s, 19.98 deg; test_trim_efw.cpp) and the
