@@ -80,6 +80,25 @@ mu_all=$(json "$scratch/stability/summary.json" max_modulus)
 check "stability max_modulus $mu_all equals the trim's $mu (1e-6)" awk_true "($mu_all - $mu) ^ 2 < 1e-12"
 check "stability draws the multipliers" test -s "$scratch/stability/floquet_multipliers.png"
 
+# A vehicle far too heavy (10 kg): not_converged with the reason, exit 0, no orbit outputs, no NaN.
+cat > "$scratch/heavy.toml" <<EOF
+kind = "trim"
+name = "heavy"
+vehicle = "$efw"
+[override]
+body.mass_kg = 10.0
+[trim]
+freq_hz = 12.0
+method = "periodic"
+EOF
+"$bin" run "$scratch/heavy.toml" -o "$scratch/heavy" > /dev/null 2>&1
+check "impossible periodic trim exits 0" test $? -eq 0
+check "impossible periodic trim is not_converged" test "$(json "$scratch/heavy/summary.json" status)" = not_converged
+check "impossible periodic trim says why" grep -q '"message": "no Eq. (4) start' "$scratch/heavy/summary.json"
+check "... periodic_residual null" test "$(json "$scratch/heavy/summary.json" periodic_residual)" = null
+check "... no orbit table, no multiplier figure" bash -c "! ls '$scratch/heavy' | grep -q 'periodic_orbit.csv\\|floquet_multipliers.png'"
+check "... no NaN in summary.json" bash -c "! grep -qiw nan '$scratch/heavy/summary.json'"
+
 # Bad input: exit 2 with file, line and key.
 bad() {  # name, expected text, study body lines...
   local name=$1 text=$2; shift 2
