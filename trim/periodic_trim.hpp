@@ -6,10 +6,14 @@
 // period T = 1/f later every state is back and the altitude gained is zero (level flight), by
 // Newton on the single-shooting residual (core/analysis/periodic_shooting.hpp) of the free-flight
 // period map (free_flight_period_map.hpp), from the Eq. (4) trim of the tethered means (stage 1 of
-// solveTrim, trim_solver.hpp) with the wing in its tethered periodic state. At the orbit: the
-// monodromy matrix and its Floquet multipliers (core/analysis/floquet.hpp), the cycle means, the
-// histories of one period, an independent check of the orbit with the production integrator
-// (ARKODE, adaptive), and the bounded-norm free-flight check (paper Eq. 5) like every trim.
+// solveTrim, trim_solver.hpp, with the tolerances of `options`: usePeriodicMethod makes them
+// loose, the orbit does not depend on them) with the wing in its tethered periodic state. The skin
+// friction is frozen (it must not depend on the unknowns): pass 1 at the Eq. (4) speed, pass 2 at
+// pass 1's mean airspeed, from pass 1's orbit and Jacobian. At the orbit: the Floquet multipliers
+// (core/analysis/floquet.hpp; the leading periodic.multipliers by Arnoldi, or all from the full
+// monodromy, core/analysis/monodromy.hpp), the cycle means, the histories of one period, an
+// independent check of the orbit with the production integrator (ARKODE, adaptive), and the
+// bounded-norm free-flight check (paper Eq. 5) like every trim.
 //
 // The trim point reported is the orbit's cycle means: theta_mean, the mean airspeed |v_P1| (the
 // two-stage trim's settled means), the control found and the frequency. No I/O; thread-compatible

@@ -45,7 +45,9 @@
 //            "tail_angle_deg"] (any 1-3 of these and "freq_hz"), initial = { theta_mean_deg,
 //            speed_mps, tail_angle_deg } (default: the vehicle's operating point), bounds =
 //            { <unknown> = [lower, upper] }, max_iterations, residual_tol, function_tol, rel_tol,
-//            steady_tol, max_cycles, derivative_cycles; see config/trim_section.hpp for ranges and
+//            steady_tol, max_cycles, derivative_cycles, refine_in_free_flight, refine_cycles,
+//            method ("two_stage" | "periodic": the periodic orbit and its Floquet multipliers,
+//            kind = "trim" only) and [trim.periodic]; see config/trim_section.hpp for ranges and
 //            defaults. A trim study needs a vehicle with a [body] (its mass sets the weight).
 //   [sweep]  (required for kind = "sweep", rejected otherwise) a parameter study: another kind run
 //            at every point of a grid of vehicle or analysis values, one table row per point

@@ -136,6 +136,14 @@ TEST_F(ConfigTrimMethod, BadValuesNameFileLineAndKey) {
   }
 }
 
+TEST_F(ConfigTrimMethod, ExampleStudyLoads) {
+  const Study s =
+      loadStudyFile(fs::path(ORNI_SOURCE_DIR) / "studies" / "examples" / "efw_periodic_trim.toml");
+  EXPECT_EQ(s.trim.method, TrimMethod::kPeriodic);
+  EXPECT_EQ(s.trim.periodic.multipliers, PeriodicTrimOptions{}.multipliers);
+  EXPECT_DOUBLE_EQ(s.trim.periodic.rel_tol, PeriodicTrimOptions{}.rel_tol);
+}
+
 TEST_F(ConfigTrimMethod, StudiesThatRunTheTwoStageTrimRejectPeriodic) {
   const InputError sweep = errorOf(
       "[trim]\nmethod = \"periodic\"\n[sweep]\nrun = \"trim\"\n"
