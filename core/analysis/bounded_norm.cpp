@@ -16,7 +16,8 @@ BoundedNormMonitor::BoundedNormMonitor(std::vector<StateBound> states, std::size
       worst_values_(states_.size(), 0.0),
       cycle_sums_(states_.size(), 0.0),
       cycle_means_(states_.size()) {
-  if (samples_per_cycle < 1) throw std::invalid_argument("bounded-norm check: samples_per_cycle < 1");
+  if (samples_per_cycle < 1)
+    throw std::invalid_argument("bounded-norm check: samples_per_cycle < 1");
 }
 
 void BoundedNormMonitor::add(std::size_t index, double t_s, const double* values) {

@@ -334,6 +334,11 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
   if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
   if (history && history->keep_cycles < 1)
     throw std::invalid_argument("tethered simulation: history keep_cycles must be >= 1");
+  if (history) {  // empty without options.record_history
+    history->t_s.clear();
+    history->delta_M_rad.clear();
+    history->loads.clear();
+  }
   if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
     throw std::invalid_argument("tethered simulation needs speed > 0 and frequency > 0");
   const BodyMotion body = tetheredBodyMotion(point.speed_mps, point.theta_rad);

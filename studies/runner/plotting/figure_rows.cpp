@@ -1,15 +1,13 @@
 #include "studies/runner/plotting/figure_rows.hpp"
 
-#include <numeric>
-
 namespace orni::studies {
 
 std::string figureEvery(std::size_t rows, std::size_t first_row, std::size_t rows_per_cycle) {
   if (rows <= kFigureRows) return "";
   const std::size_t shown = rows > first_row ? rows - first_row : 0;
   std::size_t k = shown > kFigureRows ? (shown + kFigureRows - 1) / kFigureRows : 1;
-  if (k > 1 && rows_per_cycle > 1)
-    while (std::gcd(k, rows_per_cycle) != 1) ++k;
+  if (rows_per_cycle > 0 && 4 * k > rows_per_cycle)
+    k = ((k + rows_per_cycle - 2) / rows_per_cycle) * rows_per_cycle + 1;
   return " every " + std::to_string(k) + "::" + std::to_string(first_row);
 }
 

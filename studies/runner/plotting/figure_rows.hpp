@@ -9,15 +9,17 @@
 
 namespace orni::studies {
 
-/// Most rows of a data file one curve of a figure reads.
-constexpr std::size_t kFigureRows = 100000;
+/// Most rows of a data file one curve of a figure reads (8 per pixel column of a 1200-pixel
+/// figure; gnuplot's memory and drawing time then stay those of a short run).
+constexpr std::size_t kFigureRows = 10000;
 
 /// A gnuplot `every` clause (with a leading space; after the `skip` of the header rows) that
-/// reads rows [first_row, rows) of a file of `rows` data rows, every k-th with the smallest k that
+/// reads rows [first_row, rows) of a file of `rows` data rows, every k-th, k the smallest that
 /// keeps at most kFigureRows of them; empty when the file has at most kFigureRows rows (the whole
-/// file is read). When rows_per_cycle > 1, k is made coprime with it, so the rows read walk
-/// through every phase of the flapping cycle and a curve keeps its envelope (a k that is a
-/// multiple of the cycle would show one phase only).
+/// file is read). With rows_per_cycle > 0 a k above a quarter of it becomes the next multiple of it
+/// plus one: the rows read then walk through the flapping cycle one row at a time, so a curve
+/// traces the whole cycle (its envelope) in slow motion; any other k above a quarter would draw
+/// an aliased zigzag, a multiple of the cycle one phase only.
 std::string figureEvery(std::size_t rows, std::size_t first_row, std::size_t rows_per_cycle);
 
 /// The first row of histories.csv at or after sample `sample` when it keeps every

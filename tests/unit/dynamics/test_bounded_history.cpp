@@ -94,8 +94,8 @@ struct FreeRecord : FreeFlightObserver {
 
 TEST(DynamicsBoundedHistory, FreeFlightAnalysesOnTheWayWhatTheWholeHistoryGives) {
   // The frozen rigid-wing magpie (it flies bounded at the paper's trim point).
-  const VehicleModel v = studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                                  "/tests/data/sensitivity/magpie_rigid_fixture.toml");
+  const VehicleModel v = studies::loadVehicleFile(
+      std::string(ORNI_SOURCE_DIR) + "/tests/data/sensitivity/magpie_rigid_fixture.toml");
   const FlightCoreModel model(v);
   SimulationOptions o;
   o.mode = FlightMode::kFree;
