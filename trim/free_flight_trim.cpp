@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <stdexcept>
 
 #include "core/dynamics/free_flight.hpp"
 
@@ -23,13 +24,15 @@ SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoi
   if (o.free.periodic_start_cycles == 0) o.free.periodic_start_cycles = 40;
   try {
     FreeFlightHistory h;
+    h.keep_cycles = options.window_cycles;  // the averaged window: the last cycles
     const FreeFlightSummary s = simulateFree(model, point, o, &h);
     r.message = s.message;
     if (s.status != SimulationStatus::kOk || s.cycles_run != options.cycles) return r;
     const std::size_t spc = static_cast<std::size_t>(o.samples_per_cycle);
-    const std::size_t end = spc * static_cast<std::size_t>(options.cycles);
     const std::size_t n = spc * static_cast<std::size_t>(options.window_cycles);
-    const std::size_t first = end - n;
+    if (h.body.size() != n + 1) throw std::logic_error("settled free flight: history window");
+    const std::size_t end = n;  // h holds the last window_cycles cycles and their end sample
+    const std::size_t first = 0;
     double th = 0, th1 = 0, th2 = 0, V = 0;
     for (std::size_t i = first; i < end; ++i) {
       const BodyState& b = h.body[i];

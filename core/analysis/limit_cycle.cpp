@@ -9,24 +9,12 @@ namespace orni {
 
 namespace {
 constexpr double kTwoPi = 6.283185307179586;
-
-// Least-squares slope of y against its index.
-double slopePerSample(const std::vector<double>& y) {
-  const std::size_t n = y.size();
-  if (n < 2) return 0.0;
-  const double xm = 0.5 * static_cast<double>(n - 1);
-  double ym = 0.0;
-  for (double v : y) ym += v;
-  ym /= static_cast<double>(n);
-  double sxy = 0.0, sxx = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double dx = static_cast<double>(i) - xm;
-    sxy += dx * (y[i] - ym);
-    sxx += dx * dx;
-  }
-  return sxy / sxx;
-}
 }  // namespace
+
+int limitCycleWindowCycles(int analysed_cycles, int samples_per_cycle, int window_samples) {
+  const int fit = std::max(1, window_samples / std::max(1, samples_per_cycle));
+  return std::min(analysed_cycles, fit);
+}
 
 Spectrum amplitudeSpectrum(const double* x, std::size_t n, double dt_s, double max_freq_hz,
                            std::size_t period_samples) {
@@ -137,7 +125,7 @@ LimitCycleMetrics analyseLimitCycle(const std::vector<double>& t_s,
   }
   std::nth_element(p2p.begin(), p2p.begin() + static_cast<long>(p2p.size() / 2), p2p.end());
   m.altitude_p2p_fast_m = p2p[p2p.size() / 2];
-  const double slope = slopePerSample(h_avg);
+  const double slope = leastSquaresSlope(h_avg);
   double lo = 1e300, hi = -1e300;
   for (std::size_t i = 0; i < h_avg.size(); ++i) {
     const double v = h_avg[i] - slope * static_cast<double>(i);
@@ -156,74 +144,6 @@ LimitCycleMetrics analyseLimitCycle(const std::vector<double>& t_s,
   m.dominant_freq_theta_hz = dominantFrequency(m.spectrum_theta);
   m.dominant_freq_h_hz = dominantFrequency(m.spectrum_h);
   return m;
-}
-
-BoundedNormResult boundedNorm(const std::vector<double>& t_s,
-                              const std::vector<StateSeries>& states, std::size_t first,
-                              int samples_per_cycle, double drift_limit) {
-  BoundedNormResult r;
-  const std::size_t n = t_s.size();
-  if (first >= n) throw std::invalid_argument("bounded-norm check: empty window");
-  std::size_t worst_i = first;
-  for (std::size_t i = first; i < n; ++i) {
-    double sq = 0.0;
-    for (const StateSeries& s : states) {
-      const double d = ((*s.values)[i] - s.reference) / s.bound;
-      sq += d * d;
-    }
-    const double norm = std::sqrt(sq);
-    if (norm > r.norm_ratio_max) {
-      r.norm_ratio_max = norm;
-      worst_i = i;
-    }
-  }
-  r.time_of_max_s = t_s[worst_i];
-  double worst = -1.0;
-  for (const StateSeries& s : states) {
-    const double d = std::abs(((*s.values)[worst_i] - s.reference) / s.bound);
-    if (d > worst) {
-      worst = d;
-      r.worst_state = s.name;
-    }
-  }
-  // Secular drift: trend of the per-cycle means of each scaled deviation.
-  const std::size_t spc = static_cast<std::size_t>(samples_per_cycle);
-  const std::size_t cycles = (n - 1 - first) / spc;
-  if (cycles >= 3) {
-    for (const StateSeries& s : states) {
-      std::vector<double> means;
-      for (std::size_t c = 0; c < cycles; ++c) {
-        double sum = 0.0;
-        for (std::size_t i = first + c * spc; i < first + (c + 1) * spc; ++i)
-          sum += ((*s.values)[i] - s.reference) / s.bound;
-        means.push_back(sum / static_cast<double>(spc));
-      }
-      const double change = std::abs(slopePerSample(means)) * static_cast<double>(cycles);
-      if (change > r.drift_per_window) {
-        r.drift_per_window = change;
-        r.drift_state = s.name;
-      }
-    }
-    r.drift = r.drift_per_window > drift_limit;
-  }
-  r.bounded = r.norm_ratio_max <= 1.0 && !r.drift;
-  char buf[256];
-  if (r.norm_ratio_max > 1.0)
-    std::snprintf(buf, sizeof buf,
-                  "not bounded: scaled state norm %.3g > 1 at t = %.3f s (largest: %s)",
-                  r.norm_ratio_max, r.time_of_max_s, r.worst_state.c_str());
-  else if (r.drift)
-    std::snprintf(buf, sizeof buf,
-                  "not bounded: secular drift of %s (%.3g of its bound over the window > %.3g)",
-                  r.drift_state.c_str(), r.drift_per_window, drift_limit);
-  else
-    std::snprintf(buf, sizeof buf,
-                  "bounded: scaled state norm <= %.3g (largest %s at t = %.3f s), drift %.3g of "
-                  "a bound (%s)",
-                  r.norm_ratio_max, r.worst_state.c_str(), r.time_of_max_s, r.drift_per_window,
-                  r.drift_state.c_str());
-  r.reason = buf;
-  return r;
 }
 
 }  // namespace orni

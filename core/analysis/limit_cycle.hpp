@@ -1,9 +1,13 @@
-// Limit-cycle analysis of a free flight (paper section 4, Figs. 6-8) and the bounded-norm trim
-// criterion (paper Eq. 5), on uniformly sampled histories (samples_per_cycle per flapping cycle).
+// Limit-cycle analysis of a free flight (paper section 4, Figs. 6-8) on uniformly sampled
+// histories (samples_per_cycle per flapping cycle); the bounded-norm trim criterion (paper Eq. 5)
+// is in bounded_norm.hpp.
 #pragma once
 
+#include <cstddef>
 #include <string>
 #include <vector>
+
+#include "core/analysis/bounded_norm.hpp"
 
 namespace orni {
 
@@ -36,40 +40,16 @@ struct LimitCycleMetrics {
   Spectrum spectrum_delta, spectrum_theta, spectrum_h;  ///< same bins
 };
 
+/// Whole cycles of the limit-cycle window of a run with `analysed_cycles` cycles after the
+/// transient: the last ones that fit in `window_samples` samples, at least one
+/// (FreeFlightOptions::limit_cycle_window_samples).
+int limitCycleWindowCycles(int analysed_cycles, int samples_per_cycle, int window_samples);
+
 /// Metrics over samples [first, n) of the histories (first at a cycle boundary).
 LimitCycleMetrics analyseLimitCycle(const std::vector<double>& t_s,
                                     const std::vector<double>& delta_M_rad,
                                     const std::vector<double>& theta_rad,
                                     const std::vector<double>& h_m, std::size_t first,
                                     int samples_per_cycle, double freq_hz);
-
-/// Bounded-norm criterion (paper Eq. 5): x = [U W theta Q h] deviations from reference values,
-/// each divided by its bound; the verdict is bounded when the 2-norm stays <= 1 over the window
-/// and no secular drift is found (the linear trend of the cycle means of a scaled deviation,
-/// extrapolated over the window length, exceeds `drift_limit`).
-struct BoundedNormResult {
-  bool bounded = false;
-  double norm_ratio_max = 0;    ///< max over the window of ||x_scaled||_2
-  double time_of_max_s = 0;
-  std::string worst_state;      ///< the state with the largest scaled deviation at that time
-  bool drift = false;
-  std::string drift_state;
-  double drift_per_window = 0;  ///< scaled trend change over the window of the worst drift
-  std::string reason;           ///< one line: why bounded or not
-};
-
-struct StateSeries {
-  const std::vector<double>* values;  ///< samples
-  double reference;                   ///< trimmed value
-  double bound;                       ///< R_i
-  const char* name;
-};
-
-/// Default drift limit of boundedNorm (scaled trend change over the window).
-constexpr double kDefaultDriftLimit = 0.5;
-
-BoundedNormResult boundedNorm(const std::vector<double>& t_s,
-                              const std::vector<StateSeries>& states, std::size_t first,
-                              int samples_per_cycle, double drift_limit = kDefaultDriftLimit);
 
 }  // namespace orni

@@ -7,6 +7,7 @@
 
 #include "core/analysis/harmonics.hpp"
 #include "core/dynamics/flapping.hpp"
+#include "core/dynamics/history_window.hpp"
 #include "core/integrate/ode_integrator.hpp"
 
 namespace orni {
@@ -120,11 +121,14 @@ std::string startFromPeriodicState(const FlightCoreModel& model, const Operating
 }  // namespace
 
 FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
-                               const SimulationOptions& options, FreeFlightHistory* history) {
+                               const SimulationOptions& options, FreeFlightHistory* history,
+                               FreeFlightObserver* observer) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
   if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
     throw std::invalid_argument("free flight needs speed > 0 and frequency > 0");
+  if (history && history->keep_cycles < 1)
+    throw std::invalid_argument("free flight: history keep_cycles must be >= 1");
   const FreeFlightOptions& fo = options.free;
   const ControlInput control{point.freq_hz, point.tail_angle_rad};
   FreeFlightSystem sys(model, model.flexible.get(), control);
@@ -144,7 +148,11 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
     if (!why_not.empty()) {  // no periodic state to release from: the run has no result
       summary.status = SimulationStatus::kFailed;
       summary.message = "the periodic start (a tethered run at the release point) " + why_not;
-      if (history) *history = FreeFlightHistory{};
+      if (history) {
+        const int keep = history->keep_cycles;
+        *history = FreeFlightHistory{};
+        history->keep_cycles = keep;
+      }
       return summary;
     }
   }
@@ -165,28 +173,83 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
           : OdeIntegrator(n, &FreeFlightSystem::rhsCallback, &sys, iopt);
   integrator.reset(0.0, y0.data());
 
-  // The analysis needs the sampled histories whether or not the caller keeps them.
+  // What the run keeps (history_window.hpp): the caller's last cycles (at least the last one, for
+  // the mean loads) and the limit-cycle window (the last cycles after the transient,
+  // limit_cycle.hpp); the bounded-norm verdict and the theta extremes run on every sample after
+  // the transient. The windows are known in advance: the analysis runs only on a flight that
+  // completed every cycle.
   FreeFlightHistory local;
   FreeFlightHistory& h = history ? *history : local;
+  const int keep = history ? history->keep_cycles : 1;
   h = FreeFlightHistory{};
+  h.keep_cycles = keep;
   const int spc = options.samples_per_cycle;
-  const std::size_t total = static_cast<std::size_t>(options.cycles) *
-                                static_cast<std::size_t>(spc) + 1;
-  h.t_s.reserve(total);
-  h.delta_M_rad.reserve(total);
-  h.body.reserve(total);
-  h.samples.reserve(total);
+  const std::size_t spc_n = static_cast<std::size_t>(spc);
+  {
+    const std::size_t most = 2 * static_cast<std::size_t>(keep) * spc_n + 1;
+    h.t_s.reserve(most);
+    h.delta_M_rad.reserve(most);
+    h.body.reserve(most);
+    if (options.record_history) h.samples.reserve(most);
+  }
+  std::size_t h_first = 0;  // index of h's first sample in the run
+  auto dropOld = [&](bool amortised) {
+    const std::size_t d =
+        oldSamplesToDrop(h.t_s.size(), spc_n, static_cast<std::size_t>(keep), amortised);
+    if (d == 0) return;
+    dropFront(&h.t_s, d);
+    dropFront(&h.delta_M_rad, d);
+    dropFront(&h.body, d);
+    if (!h.samples.empty()) dropFront(&h.samples, d);
+    h_first += d;
+  };
+
+  const int skip = std::min(options.cycles - 1,
+                            static_cast<int>(std::floor(fo.transient_fraction * options.cycles)));
+  const std::size_t first = static_cast<std::size_t>(skip) * spc_n;
+  const int window_cycles =
+      limitCycleWindowCycles(options.cycles - skip, spc, fo.limit_cycle_window_samples);
+  const std::size_t window_first =
+      static_cast<std::size_t>(options.cycles - window_cycles) * spc_n;
+  const std::size_t analysed_end = static_cast<std::size_t>(options.cycles) * spc_n;
+  std::vector<double> win_t, win_delta, win_theta, win_h;
+  for (std::vector<double>* v : {&win_t, &win_delta, &win_theta, &win_h})
+    v->reserve(static_cast<std::size_t>(window_cycles) * spc_n + 1);
+  BoundedNormMonitor monitor({{summary.initial.U_mps, fo.bounds.U_mps, "U"},
+                              {summary.initial.W_mps, fo.bounds.W_mps, "W"},
+                              {summary.initial.theta_rad, fo.bounds.theta_rad, "theta"},
+                              {summary.initial.Q_radps, R_Q, "Q"},
+                              {summary.initial.h_m, fo.bounds.h_m, "h"}},
+                             first, spc);
+  double theta_min = 0.0, theta_max = 0.0;  // over [first, analysed_end)
+
   const bool loads = options.record_history;  // the loads need one more RHS evaluation
+  std::size_t index = 0;                      // of the next sample in the run
   auto record = [&](double t, const double* y) {
+    const double delta =
+        flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad;
+    const BodyState b = bodyOf(y);
+    FreeFlightSample s;
+    if (loads) sys.sample(t, y, &s, false);
+    if (observer) observer->onSample(t, delta, b, loads ? &s : nullptr);
     h.t_s.push_back(t);
-    h.delta_M_rad.push_back(
-        flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad);
-    h.body.push_back(bodyOf(y));
-    if (loads) {
-      FreeFlightSample s;
-      sys.sample(t, y, &s, false);
-      h.samples.push_back(s);
+    h.delta_M_rad.push_back(delta);
+    h.body.push_back(b);
+    if (loads) h.samples.push_back(s);
+    const double judged[5] = {b.U_mps, b.W_mps, b.theta_rad, b.Q_radps, b.h_m};
+    monitor.add(index, t, judged);
+    if (index >= first && index < analysed_end) {
+      if (index == first || b.theta_rad < theta_min) theta_min = b.theta_rad;
+      if (index == first || b.theta_rad > theta_max) theta_max = b.theta_rad;
     }
+    if (index >= window_first) {
+      win_t.push_back(t);
+      win_delta.push_back(delta);
+      win_theta.push_back(b.theta_rad);
+      win_h.push_back(b.h_m);
+    }
+    summary.end_time_s = t;
+    ++index;
   };
   record(0.0, integrator.state());
 
@@ -235,50 +298,35 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
     }
     if (summary.status != SimulationStatus::kOk) break;
     summary.cycles_run = k;
+    dropOld(true);
     const double power = integrator.state()[sys.powerOffset()];
     summary.mean.power_aero_W = (power - power_prev) / period_s;
     power_prev = power;
   }
-  summary.end_time_s = h.t_s.back();
+  dropOld(false);
   summary.steps = integrator.steps();
   summary.rhs_evaluations = integrator.rhsEvaluations();
   summary.integrator_method = integrator.methodName();
 
   // Last whole cycle means of the aerodynamic loads (trapezoid on the periodic samples).
   if (summary.cycles_run >= 1 && loads) {
-    const std::size_t start = static_cast<std::size_t>(summary.cycles_run - 1) *
-                              static_cast<std::size_t>(spc);
+    const std::size_t start =
+        static_cast<std::size_t>(summary.cycles_run - 1) * spc_n - h_first;
     const std::size_t stride = sizeof(FreeFlightSample) / sizeof(double);
-    const std::size_t ns = static_cast<std::size_t>(spc);
-    summary.mean.FV_N = periodMean(&h.samples[start].loads.FV_N, ns, stride);
-    summary.mean.FH_N = periodMean(&h.samples[start].loads.FH_N, ns, stride);
-    summary.mean.M_Nm = periodMean(&h.samples[start].loads.M_Nm, ns, stride);
+    summary.mean.FV_N = periodMean(&h.samples[start].loads.FV_N, spc_n, stride);
+    summary.mean.FH_N = periodMean(&h.samples[start].loads.FH_N, spc_n, stride);
+    summary.mean.M_Nm = periodMean(&h.samples[start].loads.M_Nm, spc_n, stride);
   }
   if (summary.status != SimulationStatus::kOk) return summary;
 
-  // Verdict and limit cycle over the cycles after the transient.
-  const int skip = std::min(summary.cycles_run - 1,
-                            static_cast<int>(std::floor(fo.transient_fraction * summary.cycles_run)));
+  // Verdict over the cycles after the transient; limit cycle over its window.
   summary.first_analysed_cycle = skip + 1;
-  const std::size_t first = static_cast<std::size_t>(skip) * static_cast<std::size_t>(spc);
-  std::vector<double> U, W, th, Q, alt;
-  for (const BodyState& b : h.body) {
-    U.push_back(b.U_mps);
-    W.push_back(b.W_mps);
-    th.push_back(b.theta_rad);
-    Q.push_back(b.Q_radps);
-    alt.push_back(b.h_m);
-  }
-  const BodyState& r = summary.initial;
-  summary.verdict = boundedNorm(h.t_s,
-                                {{&U, r.U_mps, fo.bounds.U_mps, "U"},
-                                 {&W, r.W_mps, fo.bounds.W_mps, "W"},
-                                 {&th, r.theta_rad, fo.bounds.theta_rad, "theta"},
-                                 {&Q, r.Q_radps, R_Q, "Q"},
-                                 {&alt, r.h_m, fo.bounds.h_m, "h"}},
-                                first, spc);
+  summary.limit_cycle_first_cycle = options.cycles - window_cycles + 1;
+  summary.verdict = monitor.result();
   summary.limit_cycle =
-      analyseLimitCycle(h.t_s, h.delta_M_rad, th, alt, first, spc, point.freq_hz);
+      analyseLimitCycle(win_t, win_delta, win_theta, win_h, 0, spc, point.freq_hz);
+  summary.limit_cycle.theta_min_rad = theta_min;
+  summary.limit_cycle.theta_max_rad = theta_max;
   summary.analysed = true;
   std::snprintf(buf, sizeof buf, "%d cycles of free flight; %s", summary.cycles_run,
                 summary.verdict.reason.c_str());

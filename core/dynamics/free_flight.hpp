@@ -16,10 +16,26 @@
 
 namespace orni {
 
+/// The last cycles of a free flight's sampled histories (uniform, samples_per_cycle per cycle):
+/// the last `keep_cycles` whole cycles and the samples after them (as TimeHistory,
+/// tethered_simulation.hpp); `samples` stays empty without SimulationOptions::record_history.
+/// Bounded whatever the cycle count: the whole run streams to a FreeFlightObserver.
 struct FreeFlightHistory {
+  int keep_cycles = 1;  ///< in: whole cycles to keep, >= 1
   std::vector<double> t_s, delta_M_rad;
   std::vector<BodyState> body;
   std::vector<FreeFlightSample> samples;
+};
+
+/// Receives every sample of a free flight as it is made (the runner's histories.csv), in time
+/// order, from the simulating thread; an exception thrown here ends the run and propagates out of
+/// simulateFree.
+class FreeFlightObserver {
+ public:
+  virtual ~FreeFlightObserver() = default;
+  /// `sample` (the loads) is null without SimulationOptions::record_history.
+  virtual void onSample(double t_s, double delta_M_rad, const BodyState& body,
+                        const FreeFlightSample* sample) = 0;
 };
 
 struct FreeFlightSummary {
@@ -30,8 +46,11 @@ struct FreeFlightSummary {
   double end_time_s = 0.0;
   BodyState initial;           ///< the trimmed (reference) state
   BoundedNormResult verdict;   ///< bounded-norm criterion over the window after the transient
-  LimitCycleMetrics limit_cycle;
+  LimitCycleMetrics limit_cycle;  ///< theta extremes over the window after the transient, the
+                                  ///< rest over the limit-cycle window (limit_cycle.hpp)
   int first_analysed_cycle = 0;  ///< 1-based
+  int limit_cycle_first_cycle = 0;  ///< 1-based first cycle of the limit-cycle window
+                                    ///< (first_analysed_cycle unless the run is long)
   CycleMeans mean;             ///< last cycle: aerodynamic FV, FH, M (wings + tail; with
                                ///< record_history) and aerodynamic power
   long steps = 0, rhs_evaluations = 0;
@@ -43,10 +62,14 @@ struct FreeFlightSummary {
 /// body pitched by theta (U_B = U cos theta, W_B = U sin theta), Q = 0, at the initial altitude.
 BodyState trimmedBodyState(const OperatingPoint& point, double altitude_m);
 
-/// Run `options.cycles` flapping cycles of free flight. `history` may be null. With
-/// options.record_history false the loads are not sampled (history->samples stays empty and the
-/// mean loads are zero): the body states, verdict and limit cycle are unaffected.
+/// Run `options.cycles` flapping cycles of free flight. `history` may be null; when given it
+/// receives the last history->keep_cycles cycles. `observer` may be null; when given it receives
+/// every sample. With options.record_history false the loads are not sampled (history->samples
+/// stays empty and the mean loads are zero): the body states, verdict and limit cycle are
+/// unaffected. Memory does not depend on options.cycles. Throws std::invalid_argument for invalid
+/// options or history->keep_cycles < 1.
 FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
-                               const SimulationOptions& options, FreeFlightHistory* history);
+                               const SimulationOptions& options, FreeFlightHistory* history,
+                               FreeFlightObserver* observer = nullptr);
 
 }  // namespace orni

@@ -37,6 +37,12 @@ struct FreeFlightOptions {
   /// without the start-up transient of the flapping wing. [1, 1000] tethered cycles at most; 0 =
   /// start from rest.
   int periodic_start_cycles = 40;
+  /// Samples kept for the limit-cycle metrics (spectra, altitude oscillations, climb rate): the
+  /// last whole cycles after the transient that fit in this many, at least one (1000 cycles at
+  /// 100 samples per cycle; the paper's Figs. 6-8 analyse 48), so that a run of any length is
+  /// analysed in bounded memory and time (a spectrum costs samples x bins). The verdict and the
+  /// theta extremes cover every cycle after the transient. [1, 10^7]; not a study key.
+  int limit_cycle_window_samples = 100000;
 };
 
 struct SimulationOptions {
@@ -85,6 +91,8 @@ struct SimulationOptions {
     if (!(free.initial_altitude_m > 0)) return fail("initial_altitude_m must be > 0");
     if (free.periodic_start_cycles < 0 || free.periodic_start_cycles > 1000)
       return fail("periodic_start_cycles must be in [0, 1000]");
+    if (free.limit_cycle_window_samples < 1 || free.limit_cycle_window_samples > 10000000)
+      return fail("limit_cycle_window_samples must be in [1, 10^7]");
     return true;
   }
 };

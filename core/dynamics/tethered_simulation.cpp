@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/dynamics/flexible_tethered.hpp"
+#include "core/dynamics/history_window.hpp"
 #include "core/integrate/ode_integrator.hpp"
 
 namespace orni {
@@ -95,10 +96,51 @@ IntegratorOptions integratorOptions(const System& sys, const OperatingPoint& poi
   return iopt;
 }
 
+/// Keeps the last history->keep_cycles cycles of the samples (history_window.hpp) and streams
+/// every sample to the observer.
+class HistoryRecorder {
+ public:
+  HistoryRecorder(TimeHistory* history, TetheredRunObserver* observer, int samples_per_cycle)
+      : history_(history), observer_(observer), spc_(static_cast<std::size_t>(samples_per_cycle)) {
+    if (!history_) return;
+    history_->t_s.clear();
+    history_->delta_M_rad.clear();
+    history_->loads.clear();
+    const std::size_t most = 2 * static_cast<std::size_t>(history_->keep_cycles) * spc_ + 1;
+    history_->t_s.reserve(most);
+    history_->delta_M_rad.reserve(most);
+    history_->loads.reserve(most);
+  }
+  bool active() const { return history_ != nullptr || observer_ != nullptr; }
+  void add(double t_s, double delta_M_rad, const LoadSample& s) {
+    if (observer_) observer_->onSample(t_s, delta_M_rad, s);
+    if (!history_) return;
+    history_->t_s.push_back(t_s);
+    history_->delta_M_rad.push_back(delta_M_rad);
+    history_->loads.push_back(s);
+  }
+  /// At a cycle boundary (amortised) and at the end of the run.
+  void dropOld(bool amortised) {
+    if (!history_) return;
+    const std::size_t n =
+        oldSamplesToDrop(history_->t_s.size(), spc_,
+                         static_cast<std::size_t>(history_->keep_cycles), amortised);
+    if (n == 0) return;
+    dropFront(&history_->t_s, n);
+    dropFront(&history_->delta_M_rad, n);
+    dropFront(&history_->loads, n);
+  }
+
+ private:
+  TimeHistory* history_;
+  TetheredRunObserver* observer_;
+  std::size_t spc_;
+};
+
 template <class System>
 SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const FlightCoreModel& model,
                             const OperatingPoint& point, const SimulationOptions& options,
-                            TimeHistory* history) {
+                            TimeHistory* history, TetheredRunObserver* observer) {
   SimulationSummary summary;
   const int n = sys.stateCount();
   const int n_aero0 = sys.aeroOffset();
@@ -113,36 +155,27 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
   sys.initialState(0.0, y0.data());
   integrator.reset(0.0, y0.data());
 
-  const bool record = history != nullptr && options.record_history;
+  const bool record = (history != nullptr || observer != nullptr) && options.record_history;
   const int spc = record ? options.samples_per_cycle : 1;
-  if (history) {
-    history->t_s.clear();
-    history->delta_M_rad.clear();
-    history->loads.clear();
-    const std::size_t total = static_cast<std::size_t>(options.cycles) *
-                                  static_cast<std::size_t>(spc) + 1;
-    history->t_s.reserve(total);
-    history->delta_M_rad.reserve(total);
-    history->loads.reserve(total);
-  }
+  HistoryRecorder recorder(record ? history : nullptr, record ? observer : nullptr, spc);
   auto recordSample = [&](double t, const double* y) {
     if (!record) return;
     LoadSample s;
     sys.sample(t, y, &s);
-    history->t_s.push_back(t);
-    history->delta_M_rad.push_back(
-        flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad);
-    history->loads.push_back(s);
+    recorder.add(t, flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad,
+                 s);
   };
   recordSample(0.0, integrator.state());
 
   std::vector<double> prev_quad(kQuadratureChannels, 0.0);
+  CycleMeans prev_cm;
   std::vector<double> prev_states(integrator.state() + n_aero0, integrator.state() + n_aero1);
   summary.status = SimulationStatus::kNotConverged;
   for (int k = 1; k <= options.cycles; ++k) {
     for (int i = 1; i <= spc; ++i) {
       const double t = ((k - 1) * spc + i) * period_s / spc;
       if (integrator.advanceTo(t) != IntegratorStatus::kOk) {
+        recorder.dropOld(false);
         summary.status = SimulationStatus::kFailed;
         summary.message = integrator.lastError();
         summary.steps = integrator.steps();
@@ -151,6 +184,7 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
       }
       recordSample(t, integrator.state());
     }
+    recorder.dropOld(true);
     const double* y = integrator.state();
     CycleMeans cm;
     double* fields[kQuadratureChannels] = {&cm.FV_N, &cm.FH_N, &cm.M_Nm, &cm.power_aero_W,
@@ -163,7 +197,7 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
       prev_quad[static_cast<std::size_t>(c)] = q;
       finite = finite && std::isfinite(*fields[c]);
       if (k > 1) {
-        const double prev = *(&summary.per_cycle.back().FV_N + c);
+        const double prev = *(&prev_cm.FV_N + c);
         change = std::max(change, std::abs(*fields[c] - prev) / scales[c]);
       }
     }
@@ -178,8 +212,9 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
       prev_states[s] = y[i];
     }
     summary.last_state_change = state_change;
-    summary.per_cycle.push_back(cm);
+    prev_cm = cm;
     summary.cycles_run = k;
+    if (observer) observer->onCycle(k, cm);
     if (!finite) {
       summary.status = SimulationStatus::kDiverged;
       char buf[160];
@@ -196,7 +231,8 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
       if (options.stop_when_steady && summary.steady_state_cycle > 0) break;
     }
   }
-  summary.mean = summary.per_cycle.back();
+  recorder.dropOld(false);
+  summary.mean = prev_cm;
   summary.final_wing_state.assign(integrator.state(), integrator.state() + n_quad);
   summary.steps = integrator.steps();
   summary.rhs_evaluations = integrator.rhsEvaluations();
@@ -230,7 +266,8 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
 constexpr int kStatelessMeanSamples = 4096;
 
 SimulationSummary sampleStatelessCycles(const FlightCoreModel& model, const OperatingPoint& point,
-                                        const SimulationOptions& options, TimeHistory* history) {
+                                        const SimulationOptions& options, TimeHistory* history,
+                                        TetheredRunObserver* observer) {
   RigidTetheredSystem sys(model, tetheredBodyMotion(point.speed_mps, point.theta_rad),
                           ControlInput{point.freq_hz, point.tail_angle_rad});
   const double period_s = 1.0 / point.freq_hz;
@@ -250,27 +287,28 @@ SimulationSummary sampleStatelessCycles(const FlightCoreModel& model, const Oper
   }
   for (double* v : {&cm.FV_N, &cm.FH_N, &cm.M_Nm, &cm.power_aero_W, &cm.power_hinge_W})
     *v /= kStatelessMeanSamples;
-  if (history && options.record_history) {
-    const int spc = options.samples_per_cycle;
-    const std::size_t total =
-        static_cast<std::size_t>(options.cycles) * static_cast<std::size_t>(spc) + 1;
-    history->t_s.assign(total, 0.0);
-    history->delta_M_rad.assign(total, 0.0);
-    history->loads.assign(total, LoadSample{});
-    for (std::size_t i = 0; i < total; ++i) {
-      // The same phase gives the same sample in every cycle: evaluate the first cycle only.
-      const std::size_t phase = i % static_cast<std::size_t>(spc);
-      const double t = static_cast<double>(i) * period_s / spc;
-      history->t_s[i] = t;
-      history->delta_M_rad[i] =
-          flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad;
-      if (i == phase)
-        sys.sample(t, nullptr, &history->loads[i]);
-      else
-        history->loads[i] = history->loads[phase];
-    }
+  const bool record = (history != nullptr || observer != nullptr) && options.record_history;
+  const int spc = record ? options.samples_per_cycle : 1;
+  HistoryRecorder recorder(record ? history : nullptr, record ? observer : nullptr, spc);
+  // The same phase gives the same sample in every cycle: evaluate the first cycle only.
+  std::vector<LoadSample> cycle(record ? static_cast<std::size_t>(spc) : 0);
+  for (std::size_t i = 0; i < cycle.size(); ++i)
+    sys.sample(static_cast<double>(i) * period_s / spc, nullptr, &cycle[i]);
+  auto recordSample = [&](std::size_t i) {
+    if (!record) return;
+    const double t = static_cast<double>(i) * period_s / spc;
+    recorder.add(t, flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad,
+                 cycle[i % static_cast<std::size_t>(spc)]);
+  };
+  recordSample(0);
+  for (int k = 1; k <= options.cycles; ++k) {
+    for (int i = 1; i <= spc; ++i)
+      recordSample(static_cast<std::size_t>(k - 1) * static_cast<std::size_t>(spc) +
+                   static_cast<std::size_t>(i));
+    recorder.dropOld(true);
+    if (observer) observer->onCycle(k, cm);
   }
-  summary.per_cycle.assign(static_cast<std::size_t>(options.cycles), cm);
+  recorder.dropOld(false);
   summary.cycles_run = options.cycles;
   summary.mean = cm;
   if (!finite) {
@@ -290,9 +328,17 @@ SimulationSummary sampleStatelessCycles(const FlightCoreModel& model, const Oper
 }  // namespace
 
 SimulationSummary simulateTethered(const FlightCoreModel& model, const OperatingPoint& point,
-                                   const SimulationOptions& options, TimeHistory* history) {
+                                   const SimulationOptions& options, TimeHistory* history,
+                                   TetheredRunObserver* observer) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
+  if (history && history->keep_cycles < 1)
+    throw std::invalid_argument("tethered simulation: history keep_cycles must be >= 1");
+  if (history) {  // empty without options.record_history
+    history->t_s.clear();
+    history->delta_M_rad.clear();
+    history->loads.clear();
+  }
   if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
     throw std::invalid_argument("tethered simulation needs speed > 0 and frequency > 0");
   const BodyMotion body = tetheredBodyMotion(point.speed_mps, point.theta_rad);
@@ -308,16 +354,17 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
         options.modal_integration == ModalIntegration::kImplicit
             ? OdeIntegrator(sys.stateCount(), &Imex::explicitRhs, Imex::part(), &sys, iopt)
             : OdeIntegrator(sys.stateCount(), &FlexibleTetheredSystem::rhsCallback, &sys, iopt);
-    SimulationSummary s = runCycles(sys, integrator, model, point, options, history);
+    SimulationSummary s = runCycles(sys, integrator, model, point, options, history, observer);
     s.final_mode_count = model.flexible->mode_count;
     return s;
   }
-  if (model.aeroStateCount() == 0) return sampleStatelessCycles(model, point, options, history);
+  if (model.aeroStateCount() == 0)
+    return sampleStatelessCycles(model, point, options, history, observer);
   RigidTetheredSystem sys(model, body, control);
   IntegratorOptions iopt = integratorOptions(sys, point, options);
   iopt.method = ErkMethod::kDormandPrince5;
   OdeIntegrator integrator(sys.stateCount(), &RigidTetheredSystem::rhsCallback, &sys, iopt);
-  return runCycles(sys, integrator, model, point, options, history);
+  return runCycles(sys, integrator, model, point, options, history, observer);
 }
 
 }  // namespace orni

@@ -20,11 +20,29 @@ struct CycleMeans {
   double FV_N = 0, FH_N = 0, M_Nm = 0, power_aero_W = 0, power_hinge_W = 0;
 };
 
-/// Sampled time histories (uniform, SimulationOptions::samples_per_cycle per cycle).
+/// The last cycles of the sampled time histories (uniform, SimulationOptions::samples_per_cycle
+/// per cycle, sample i at t = i T / samples_per_cycle): the last `keep_cycles` whole cycles and
+/// the sample that ends them (the run's last sample; fewer cycles when the run is shorter, and the
+/// samples of an unfinished cycle after them when the run stopped inside one). Bounded whatever
+/// the cycle count: the whole run streams to a TetheredRunObserver (history_window.hpp).
 struct TimeHistory {
+  int keep_cycles = 1;  ///< in: whole cycles to keep, >= 1
   std::vector<double> t_s;
   std::vector<double> delta_M_rad;
   std::vector<LoadSample> loads;
+};
+
+/// Receives a tethered run's outputs as they are made, so that a caller can write them out
+/// without keeping the run in memory (the runner's histories.csv and cycles.csv). Called from the
+/// simulating thread, outside the right-hand side; an exception thrown here ends the run and
+/// propagates out of simulateTethered.
+class TetheredRunObserver {
+ public:
+  virtual ~TetheredRunObserver() = default;
+  /// Every sample, in time order: with SimulationOptions::record_history only.
+  virtual void onSample(double t_s, double delta_M_rad, const LoadSample& loads) = 0;
+  /// The means of every completed cycle (`cycle` 1-based, in order).
+  virtual void onCycle(int cycle, const CycleMeans& means) = 0;
 };
 
 enum class SimulationStatus { kOk, kNotConverged, kDiverged, kFailed };
@@ -37,8 +55,8 @@ struct SimulationSummary {
   int steady_state_cycle = -1;   ///< first cycle whose means match the previous one (1-based)
   double last_cycle_change = 0;  ///< scaled change of the last cycle means vs the one before
   double last_state_change = 0;  ///< max change of the aero states over the last cycle
-  CycleMeans mean;               ///< means over the last simulated cycle
-  std::vector<CycleMeans> per_cycle;
+  CycleMeans mean;               ///< means over the last simulated cycle (the means of every
+                                 ///< cycle go to TetheredRunObserver::onCycle)
   /// State at the end of the last cycle (flap phase 0): flexible wing [q, q', aero states],
   /// rigid wing [aero states] (quadratures dropped). Free flight starts from it.
   std::vector<double> final_wing_state;
@@ -52,8 +70,13 @@ struct SimulationSummary {
 };
 
 /// Run the tethered simulation at `point` (speed, frequency, theta, tail angle). `history` may be
-/// null (aero maps, trim); when given it receives the sampled histories of all cycles.
+/// null (aero maps, trim); when given (and options.record_history) it receives the sampled
+/// histories of the last history->keep_cycles cycles. `observer` may be null; when given it
+/// receives every sample (with options.record_history) and every cycle's means as they are made.
+/// Memory does not depend on options.cycles. Throws std::invalid_argument for invalid options or
+/// history->keep_cycles < 1.
 SimulationSummary simulateTethered(const FlightCoreModel& model, const OperatingPoint& point,
-                                   const SimulationOptions& options, TimeHistory* history);
+                                   const SimulationOptions& options, TimeHistory* history,
+                                   TetheredRunObserver* observer = nullptr);
 
 }  // namespace orni

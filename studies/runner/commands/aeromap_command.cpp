@@ -15,9 +15,11 @@
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
 #include "studies/runner/output/atomic_file.hpp"
-#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/plotting/figure_rows.hpp"
+#include "trim/aero_map_stream.hpp"
 
 namespace orni::studies {
 
@@ -34,67 +36,93 @@ trim::AeroMapGrid gridOf(const AeromapSettings& a) {
   return g;
 }
 
-/// aeromap.csv (layout in aeromap_command.hpp; column numbers in AeromapCsvColumns).
-CsvTable mapTable(const AeromapSettings& a, const trim::AeroMapGrid& grid,
-                  const trim::AeroMapSummary& map) {
-  const std::size_t n = map.points.size();
-  std::vector<double> speed, freq, theta, tail;
-  std::vector<std::string> fv, fh, m, power, power_aero, status, steady, cycles, change, message;
-  auto cell = [](bool ok, double v) { return ok ? formatShortest(v) : std::string(); };
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto ax = grid.axisIndices(i);
-    speed.push_back(a.speed_mps.values[ax[0]]);
-    freq.push_back(a.freq_hz.values[ax[1]]);
-    theta.push_back(a.theta_deg.values[ax[2]]);
-    tail.push_back(a.tail_angle_deg.values[ax[3]]);
-    const trim::AeroMapPoint& p = map.points[i];
-    const bool ok = p.status == SimulationStatus::kOk;
-    fv.push_back(cell(ok, p.mean.FV_N));
-    fh.push_back(cell(ok, p.mean.FH_N));
-    m.push_back(cell(ok, p.mean.M_Nm));
-    power.push_back(cell(ok, p.mean.power_hinge_W));
-    power_aero.push_back(cell(ok, p.mean.power_aero_W));
-    status.push_back(toString(p.status));
-    steady.push_back(p.steady_state_cycle > 0 ? std::to_string(p.steady_state_cycle) : "");
-    cycles.push_back(std::to_string(p.cycles_run));
-    change.push_back(cell(p.cycles_run > 1 && std::isfinite(p.last_cycle_change),
-                          p.last_cycle_change));
-    message.push_back(p.message);
+/// Points by status.
+struct MapCounts {
+  std::size_t points = 0, ok = 0, not_converged = 0, diverged = 0, failed = 0;
+  void add(SimulationStatus s) {
+    ++points;
+    switch (s) {
+      case SimulationStatus::kOk: ++ok; break;
+      case SimulationStatus::kNotConverged: ++not_converged; break;
+      case SimulationStatus::kDiverged: ++diverged; break;
+      case SimulationStatus::kFailed: ++failed; break;
+    }
   }
-  CsvTable t;
-  t.addColumn("speed_mps", "m/s", speed);
-  t.addColumn("freq_hz", "Hz", freq);
-  t.addColumn("theta_deg", "deg", theta);
-  t.addColumn("tail_angle_deg", "deg", tail);
-  t.addTextColumn("FV_mean_N", "N", fv);
-  t.addTextColumn("FH_mean_N", "N", fh);
-  t.addTextColumn("M_mean_Nm", "N m", m);
-  t.addTextColumn("power_W", "W", power);
-  t.addTextColumn("power_aero_W", "W", power_aero);
-  t.addTextColumn("status", "-", status);
-  t.addTextColumn("steady_cycle", "-", steady);
-  t.addTextColumn("cycles_run", "-", cycles);
-  t.addTextColumn("last_cycle_change", "-", change);
-  t.addTextColumn("message", "-", message);
-  return t;
+};
+
+/// aeromap.csv (layout in aeromap_command.hpp; column numbers in AeromapCsvColumns), one row at a
+/// time from the journal, which holds every point in order: a map of any size in bounded memory.
+MapCounts writeMapTable(const fs::path& path, const AeromapSettings& a,
+                        const trim::AeroMapGrid& grid, const AeroMapJournal& journal) {
+  CsvStreamWriter csv(path, {{"speed_mps", "m/s"},
+                             {"freq_hz", "Hz"},
+                             {"theta_deg", "deg"},
+                             {"tail_angle_deg", "deg"},
+                             {"FV_mean_N", "N"},
+                             {"FH_mean_N", "N"},
+                             {"M_mean_Nm", "N m"},
+                             {"power_W", "W"},
+                             {"power_aero_W", "W"},
+                             {"status", "-"},
+                             {"steady_cycle", "-"},
+                             {"cycles_run", "-"},
+                             {"last_cycle_change", "-"},
+                             {"message", "-"}});
+  auto cell = [](bool ok, double v) { return ok ? formatShortest(v) : std::string(); };
+  MapCounts counts;
+  std::vector<std::string> row(csv.columns());
+  journal.replay([&](std::size_t i, const trim::AeroMapPoint& p) {
+    const auto ax = grid.axisIndices(i);
+    const bool ok = p.status == SimulationStatus::kOk;
+    row = {formatShortest(a.speed_mps.values[ax[0]]),
+           formatShortest(a.freq_hz.values[ax[1]]),
+           formatShortest(a.theta_deg.values[ax[2]]),
+           formatShortest(a.tail_angle_deg.values[ax[3]]),
+           cell(ok, p.mean.FV_N),
+           cell(ok, p.mean.FH_N),
+           cell(ok, p.mean.M_Nm),
+           cell(ok, p.mean.power_hinge_W),
+           cell(ok, p.mean.power_aero_W),
+           toString(p.status),
+           p.steady_state_cycle > 0 ? std::to_string(p.steady_state_cycle) : "",
+           std::to_string(p.cycles_run),
+           cell(p.cycles_run > 1 && std::isfinite(p.last_cycle_change), p.last_cycle_change),
+           p.message};
+    csv.textRow(row);
+    counts.add(p.status);
+  });
+  if (counts.points != grid.size())
+    throw std::runtime_error(journal.path().string() + ": " + std::to_string(counts.points) +
+                             " of " + std::to_string(grid.size()) + " points recorded");
+  csv.commit();
+  return counts;
 }
 
-std::string runStatus(const trim::AeroMapSummary& map) {
-  return map.ok == map.points.size() ? "ok" : "not_converged";
+std::string runStatus(const MapCounts& map) {
+  return map.ok == map.points ? "ok" : "not_converged";
 }
 
-std::string runMessage(const trim::AeroMapSummary& map) {
+std::string runMessage(const MapCounts& map) {
   char buf[240];
-  if (map.ok == map.points.size()) {
+  if (map.ok == map.points) {
     std::snprintf(buf, sizeof buf, "all %zu points reached their periodic steady state",
-                  map.points.size());
+                  map.points);
   } else {
     std::snprintf(buf, sizeof buf,
                   "%zu of %zu points without a result (%zu not_converged, %zu diverged, %zu "
                   "failed): see the status and message columns of aeromap.csv",
-                  map.points.size() - map.ok, map.points.size(), map.not_converged,
-                  map.diverged, map.failed);
+                  map.points - map.ok, map.points, map.not_converged, map.diverged, map.failed);
   }
+  return buf;
+}
+
+/// "180 points (180 computed): 178 ok, 2 not_converged, 0 diverged, 0 failed, 1.23 s".
+std::string briefReport(const MapCounts& map, std::size_t computed, double wall_s) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf,
+                "%zu points (%zu computed): %zu ok, %zu not_converged, %zu diverged, %zu failed, "
+                "%.3g s",
+                map.points, computed, map.ok, map.not_converged, map.diverged, map.failed, wall_s);
   return buf;
 }
 
@@ -134,16 +162,19 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
 
   std::optional<ProgressLine> progress;
   if (run.progress) progress.emplace("aeromap", grid.size(), resume.records);
-  const trim::AeroMapSummary map = trim::buildAeroMap(
-      model, grid, options, resume.points,
-      [&](std::size_t index, const trim::AeroMapPoint& point) {
-        journal.append(index, point);
-        if (progress) progress->pointDone();
-        if (run.on_point) run.on_point(index, point);
-      });
+  const auto t_map = std::chrono::steady_clock::now();
+  trim::streamAeroMap(model, grid, options, resume.records,
+                      [&](std::size_t index, const trim::AeroMapPoint& point) {
+                        journal.append(index, point);
+                        if (progress) progress->pointDone();
+                        if (run.on_point) run.on_point(index, point);
+                      });
   if (progress) progress->finish();
+  const std::size_t computed = grid.size() - resume.records;
+  const double map_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t_map).count();
 
-  writeFileAtomic(out_dir / "aeromap.csv", mapTable(study.aeromap, grid, map).toString());
+  const MapCounts map = writeMapTable(out_dir / "aeromap.csv", study.aeromap, grid, journal);
   writeFileAtomic(out_dir / "study.resolved.toml", resolved);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -154,12 +185,12 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
       .set("message", runMessage(map))
       .set("wall_time_s", wall_s)
       .set("version", versionString())
-      .set("points", static_cast<long>(map.points.size()))
+      .set("points", static_cast<long>(map.points))
       .set("points_ok", static_cast<long>(map.ok))
       .set("points_not_converged", static_cast<long>(map.not_converged))
       .set("points_diverged", static_cast<long>(map.diverged))
       .set("points_failed", static_cast<long>(map.failed))
-      .set("points_computed", static_cast<long>(map.computed))
+      .set("points_computed", static_cast<long>(computed))
       .set("points_resumed", static_cast<long>(resume.records))
       .set("threads", run.threads)
       .set("speed_mps", a.speed_mps.values)
@@ -173,14 +204,20 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
       .set("structure", model.flexible ? "flexible" : "rigid");
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
 
-  if (run.figures && map.ok > 0) drawAeromapFigures(out_dir, study);
+  // gnuplot reads aeromap.csv once per curve and keeps what it reads (its `stats` every value):
+  // a map larger than kFigureRows points is left to the user's own plotting.
+  const bool drawable = map.points <= kFigureRows;
+  if (run.figures && map.ok > 0 && drawable) drawAeromapFigures(out_dir, study);
   if (run.figures && map.ok == 0)
     std::cerr << "aeromap: no point has a result: no figures drawn\n";
+  if (run.figures && map.ok > 0 && !drawable)
+    std::cerr << "aeromap: " << map.points << " points: no figures drawn (figures are drawn for "
+              << "maps of at most " << kFigureRows << " points; aeromap.csv has every point)\n";
   // Every output is in place now: a run stopped before this line (in the figures too) resumes
   // from the journal and computes no point again.
   journal.remove();
-  std::cout << study.name << ": aeromap " << map.BriefReport() << "\n  -> " << out_dir.string()
-            << "\n";
+  std::cout << study.name << ": aeromap " << briefReport(map, computed, map_s) << "\n  -> "
+            << out_dir.string() << "\n";
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "core/dynamics/free_flight.hpp"
@@ -10,57 +11,71 @@
 #include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/plotting/figure_rows.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies {
 
 namespace {
 
-CsvTable historyTable(const FreeFlightHistory& h) {
-  CsvTable t;
-  std::vector<double> d, x, alt, th, U, W, Q, V, alpha, gamma, fv, fh, m, tip, twist, sep;
-  for (std::size_t i = 0; i < h.t_s.size(); ++i) {
-    const BodyState& b = h.body[i];
-    const LoadSample& l = h.samples[i].loads;
-    d.push_back(h.delta_M_rad[i] * kRadToDeg);
-    x.push_back(b.x_I_m);
-    alt.push_back(b.h_m);
-    th.push_back(b.theta_rad * kRadToDeg);
-    U.push_back(b.U_mps);
-    W.push_back(b.W_mps);
-    Q.push_back(b.Q_radps * kRadToDeg);
-    V.push_back(std::hypot(b.U_mps, b.W_mps));
+// histories.csv, written as the run makes it (every history_every-th sample): memory does not grow
+// with the cycle count. Nothing is in place until commit(); a failed run leaves no file.
+class FreeFlightFiles : public FreeFlightObserver {
+ public:
+  FreeFlightFiles(const std::filesystem::path& out_dir, int history_every)
+      : histories_(out_dir / "histories.csv",
+                   {{"t", "s"},
+                    {"delta_M", "deg"},
+                    {"x_I", "m"},
+                    {"h", "m"},
+                    {"theta", "deg"},
+                    {"U", "m/s"},
+                    {"W", "m/s"},
+                    {"Q", "deg/s"},
+                    {"airspeed", "m/s"},
+                    {"alpha_body", "deg"},
+                    {"flight_path", "deg"},
+                    {"FV_aero", "N"},
+                    {"FH_aero", "N"},
+                    {"M_aero", "N m"},
+                    {"tip_deflection", "m"},
+                    {"tip_twist", "deg"},
+                    {"separated_fraction", "-"}},
+                   static_cast<std::size_t>(history_every)) {}
+
+  void onSample(double t_s, double delta_M_rad, const BodyState& b,
+                const FreeFlightSample* sample) override {
+    const LoadSample l = sample ? sample->loads : LoadSample{};
     const double a = std::atan2(b.W_mps, b.U_mps);
-    alpha.push_back(a * kRadToDeg);
-    gamma.push_back((b.theta_rad - a) * kRadToDeg);
-    fv.push_back(l.FV_N);
-    fh.push_back(l.FH_N);
-    m.push_back(l.M_Nm);
-    tip.push_back(l.tip_deflection_m);
-    twist.push_back(l.tip_twist_rad * kRadToDeg);
-    sep.push_back(l.separated_fraction);
+    const double row[] = {t_s,
+                          delta_M_rad * kRadToDeg,
+                          b.x_I_m,
+                          b.h_m,
+                          b.theta_rad * kRadToDeg,
+                          b.U_mps,
+                          b.W_mps,
+                          b.Q_radps * kRadToDeg,
+                          std::hypot(b.U_mps, b.W_mps),
+                          a * kRadToDeg,
+                          (b.theta_rad - a) * kRadToDeg,
+                          l.FV_N,
+                          l.FH_N,
+                          l.M_Nm,
+                          l.tip_deflection_m,
+                          l.tip_twist_rad * kRadToDeg,
+                          l.separated_fraction};
+    static_assert(sizeof row / sizeof row[0] == 17, "one value per histories.csv column");
+    histories_.row(row);
   }
-  t.addColumn("t", "s", h.t_s);
-  t.addColumn("delta_M", "deg", d);
-  t.addColumn("x_I", "m", x);
-  t.addColumn("h", "m", alt);
-  t.addColumn("theta", "deg", th);
-  t.addColumn("U", "m/s", U);
-  t.addColumn("W", "m/s", W);
-  t.addColumn("Q", "deg/s", Q);
-  t.addColumn("airspeed", "m/s", V);
-  t.addColumn("alpha_body", "deg", alpha);
-  t.addColumn("flight_path", "deg", gamma);
-  t.addColumn("FV_aero", "N", fv);
-  t.addColumn("FH_aero", "N", fh);
-  t.addColumn("M_aero", "N m", m);
-  t.addColumn("tip_deflection", "m", tip);
-  t.addColumn("tip_twist", "deg", twist);
-  t.addColumn("separated_fraction", "-", sep);
-  return t;
-}
+  std::size_t rows() const { return histories_.rowsWritten(); }
+  void commit() { histories_.commit(); }
+
+ private:
+  CsvStreamWriter histories_;
+};
 
 CsvTable spectrumTable(const LimitCycleMetrics& m) {
   CsvTable t;
@@ -74,6 +89,21 @@ CsvTable spectrumTable(const LimitCycleMetrics& m) {
   return t;
 }
 
+// The limit-cycle metrics but the theta extremes; a long run's are over its last cycles only
+// (FreeFlightOptions::limit_cycle_window_samples), and then say from which cycle on.
+JsonObject limitCycleJson(const FreeFlightSummary& s) {
+  const LimitCycleMetrics& m = s.limit_cycle;
+  JsonObject j;
+  j.set("altitude_p2p_slow_m", m.altitude_p2p_slow_m)
+      .set("climb_rate_mps", m.climb_rate_mps)
+      .set("dominant_freq_delta_hz", m.dominant_freq_delta_hz)
+      .set("dominant_freq_theta_hz", m.dominant_freq_theta_hz)
+      .set("dominant_freq_h_hz", m.dominant_freq_h_hz);
+  if (s.limit_cycle_first_cycle != s.first_analysed_cycle)
+    j.set("window_first_cycle", s.limit_cycle_first_cycle);
+  return j;
+}
+
 std::string title(const Study& study) {
   std::ostringstream s;
   s << study.name << " (free flight): U0 = " << study.point.speed_mps
@@ -84,16 +114,17 @@ std::string title(const Study& study) {
 }
 
 // Paper Fig. 7 layout: delta_M, theta and h against time (left) and their spectra (right).
-std::string flightFigure(const Study& study, bool with_spectra) {
+std::string flightFigure(const Study& study, bool with_spectra, const std::string& skip) {
   std::ostringstream g;
   g << "set multiplot layout 3," << (with_spectra ? 2 : 1) << " columnsfirst title \""
     << title(study) << "\" noenhanced font ',12'\n";
   g << "set key off\nset grid\nset xlabel 'time (s)'\n";
-  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' skip 2 using 1:2 with lines lc "
-       "rgb '#333333'\n";
-  g << "set ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' skip 2 using 1:5 with lines lc rgb "
-       "'#c0392b'\n";
-  g << "set ylabel 'h (m)'\nplot 'histories.csv' skip 2 using 1:4 with lines lc rgb '#2471a3'\n";
+  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' " << skip
+    << " using 1:2 with lines lc rgb '#333333'\n";
+  g << "set ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' " << skip
+    << " using 1:5 with lines lc rgb '#c0392b'\n";
+  g << "set ylabel 'h (m)'\nplot 'histories.csv' " << skip
+    << " using 1:4 with lines lc rgb '#2471a3'\n";
   if (with_spectra) {
     g << "set xlabel 'f (Hz)'\n";
     g << "set ylabel '|{/Symbol d}_M(f)| (deg)'\nplot 'spectra.csv' skip 2 using 1:2 with "
@@ -108,7 +139,7 @@ std::string flightFigure(const Study& study, bool with_spectra) {
 }
 
 // Paper Fig. 6: the last flapping cycle, delta_M and theta, downstroke shaded.
-std::string cycleFigure(const Study& study, int cycles) {
+std::string cycleFigure(const Study& study, int cycles, const std::string& skip) {
   const double T = 1.0 / study.point.freq_hz;
   std::ostringstream g;
   g << "set multiplot layout 2,1 title \"" << title(study) << ", cycle " << cycles
@@ -116,20 +147,20 @@ std::string cycleFigure(const Study& study, int cycles) {
   g << "set key off\nset grid\nset xrange [" << (cycles - 1) * T << ":" << cycles * T << "]\n";
   g << "set object 1 rect from " << (cycles - 0.75) * T << ", graph 0 to " << (cycles - 0.25) * T
     << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
-  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' skip 2 using 1:2 with lines lw 2 "
-       "lc rgb '#333333'\n";
-  g << "set xlabel 'time (s)'\nset ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' skip 2 using "
-       "1:5 with lines lw 2 lc rgb '#c0392b'\n";
+  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' " << skip
+    << " using 1:2 with lines lw 2 lc rgb '#333333'\n";
+  g << "set xlabel 'time (s)'\nset ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' " << skip
+    << " using 1:5 with lines lw 2 lc rgb '#c0392b'\n";
   g << "unset multiplot\n";
   return g.str();
 }
 
 // Paper Fig. 8: pitch phase portrait (theta, Q) after the transient.
-std::string phaseFigure(const Study& study, double t_from) {
+std::string phaseFigure(const Study& study, double t_from, const std::string& skip) {
   std::ostringstream g;
   g << "set title \"" << title(study) << "\" noenhanced font ',12'\n";
   g << "set key off\nset grid\nset xlabel '{/Symbol q} (deg)'\nset ylabel 'Q (deg/s)'\n";
-  g << "plot 'histories.csv' skip 2 using ($1 >= " << t_from
+  g << "plot 'histories.csv' " << skip << " using ($1 >= " << t_from
     << " ? $5 : 1/0):8 with lines lc rgb '#8e44ad'\n";
   return g.str();
 }
@@ -140,8 +171,8 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                        const JsonObject* trim_point, const Study* as_given) {
   const auto t0 = std::chrono::steady_clock::now();
   const FlightCoreModel model(study.vehicle);
-  FreeFlightHistory history;
-  const FreeFlightSummary s = simulateFree(model, study.point, study.simulate, &history);
+  std::optional<FreeFlightFiles> files(std::in_place, out_dir, study.history_every);
+  const FreeFlightSummary s = simulateFree(model, study.point, study.simulate, nullptr, &*files);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -151,11 +182,14 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
   const bool failed = s.status == SimulationStatus::kFailed;
   writeFileAtomic(out_dir / "study.resolved.toml",
                   resolvedStudyToml(as_given != nullptr ? *as_given : study));
-  if (failed)
+  std::size_t history_rows = 0;
+  if (failed) {
+    files.reset();  // the streamed file is discarded
     removeRunOutputs(out_dir, {"histories.csv", "spectra.csv"}, {"flight", "cycle", "phase"});
-  else
-    writeFileAtomic(out_dir / "histories.csv",
-                    historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
+  } else {
+    history_rows = files->rows();
+    files->commit();
+  }
 
   JsonObject summary;
   summary.set("kind", "simulate")
@@ -194,12 +228,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                             .set("drift_state", s.verdict.drift_state)
                             .set("drift_per_window", s.verdict.drift_per_window)
                             .set("first_analysed_cycle", s.first_analysed_cycle))
-        .set("limit_cycle", JsonObject()
-                                .set("altitude_p2p_slow_m", m.altitude_p2p_slow_m)
-                                .set("climb_rate_mps", m.climb_rate_mps)
-                                .set("dominant_freq_delta_hz", m.dominant_freq_delta_hz)
-                                .set("dominant_freq_theta_hz", m.dominant_freq_theta_hz)
-                                .set("dominant_freq_h_hz", m.dominant_freq_h_hz));
+        .set("limit_cycle", limitCycleJson(s));
     writeFileAtomic(out_dir / "spectra.csv", spectrumTable(m).toString());
   }
   const FreeFlightBounds& b = study.simulate.free.bounds;
@@ -225,11 +254,21 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                              .set("rhs_evaluations", s.rhs_evaluations));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (failed) return reportFailedRun(study, s.message, out_dir);
-  drawFigure(out_dir, "flight", flightFigure(study, s.analysed));
-  if (s.cycles_run >= 1) drawFigure(out_dir, "cycle", cycleFigure(study, s.cycles_run));
-  const double t_from = (s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0) /
-                        study.point.freq_hz;
-  drawFigure(out_dir, "phase", phaseFigure(study, t_from));
+  // A long history is read in part (figure_rows.hpp): from the rows a figure shows on, every k-th.
+  const std::size_t spc = static_cast<std::size_t>(study.simulate.samples_per_cycle);
+  const std::size_t every = static_cast<std::size_t>(study.history_every);
+  const std::size_t per_cycle = historyRowsPerCycle(spc, every);
+  auto skipFrom = [&](int cycle) {  // the rows from the start of `cycle` (0-based) on
+    return "skip 2" + figureEvery(history_rows,
+                                  historyRowOf(static_cast<std::size_t>(cycle) * spc, every),
+                                  per_cycle);
+  };
+  drawFigure(out_dir, "flight", flightFigure(study, s.analysed, skipFrom(0)));
+  if (s.cycles_run >= 1)
+    drawFigure(out_dir, "cycle", cycleFigure(study, s.cycles_run, skipFrom(s.cycles_run - 1)));
+  const int first_analysed = s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0;
+  const double t_from = first_analysed / study.point.freq_hz;
+  drawFigure(out_dir, "phase", phaseFigure(study, t_from, skipFrom(first_analysed)));
   std::cout << study.name << ": " << toString(s.status) << ": " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "core/analysis/harmonics.hpp"
@@ -16,8 +17,9 @@
 #include "studies/runner/commands/free_flight_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
-#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/plotting/figure_rows.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies {
@@ -51,73 +53,92 @@ SimulationTrim trimForSimulation(const Study& study) {
   return out;
 }
 
-template <typename Getter>
-std::vector<double> column(const TimeHistory& h, Getter get) {
-  std::vector<double> v;
-  v.reserve(h.loads.size());
-  for (const LoadSample& s : h.loads) v.push_back(get(s));
-  return v;
-}
+// histories.csv (every sample, every history_every-th row) and cycles.csv (every cycle's means),
+// written as the run makes them: memory does not grow with the cycle count. Nothing is in place
+// until commit(); a run that fails leaves neither file.
+class TetheredRunFiles : public TetheredRunObserver {
+ public:
+  TetheredRunFiles(const std::filesystem::path& out_dir, int history_every)
+      : histories_(out_dir / "histories.csv",
+                   {{"t", "s"},
+                    {"delta_M", "deg"},
+                    {"FV", "N"},
+                    {"FH", "N"},
+                    {"M", "N m"},
+                    {"power_aero", "W"},
+                    {"power_hinge", "W"},
+                    {"FV_wing_aero", "N"},
+                    {"FH_wing_aero", "N"},
+                    {"M_wing_aero", "N m"},
+                    {"FV_wing_inertial", "N"},
+                    {"FH_wing_inertial", "N"},
+                    {"M_wing_inertial", "N m"},
+                    {"FV_tail", "N"},
+                    {"FH_tail", "N"},
+                    {"FH_body", "N"},
+                    {"M_tail", "N m"},
+                    {"separated_fraction", "-"},
+                    {"tip_deflection", "m"},
+                    {"tip_twist", "deg"}},
+                   static_cast<std::size_t>(history_every)),
+        cycles_(out_dir / "cycles.csv", {{"cycle", "-"},
+                                         {"FV_mean", "N"},
+                                         {"FH_mean", "N"},
+                                         {"M_mean", "N m"},
+                                         {"power_aero_mean", "W"},
+                                         {"power_hinge_mean", "W"}}) {}
 
-CsvTable historyTable(const TimeHistory& h) {
-  CsvTable t;
-  t.addColumn("t", "s", h.t_s);
-  std::vector<double> delta_deg;
-  for (double d : h.delta_M_rad) delta_deg.push_back(d * kRadToDeg);
-  t.addColumn("delta_M", "deg", delta_deg);
-  t.addColumn("FV", "N", column(h, [](const LoadSample& s) { return s.FV_N; }));
-  t.addColumn("FH", "N", column(h, [](const LoadSample& s) { return s.FH_N; }));
-  t.addColumn("M", "N m", column(h, [](const LoadSample& s) { return s.M_Nm; }));
-  t.addColumn("power_aero", "W", column(h, [](const LoadSample& s) { return s.power_aero_W; }));
-  t.addColumn("power_hinge", "W", column(h, [](const LoadSample& s) { return s.power_hinge_W; }));
-  t.addColumn("FV_wing_aero", "N", column(h, [](const LoadSample& s) { return s.FV_wing_aero_N; }));
-  t.addColumn("FH_wing_aero", "N", column(h, [](const LoadSample& s) { return s.FH_wing_aero_N; }));
-  t.addColumn("M_wing_aero", "N m", column(h, [](const LoadSample& s) { return s.M_wing_aero_Nm; }));
-  t.addColumn("FV_wing_inertial", "N",
-              column(h, [](const LoadSample& s) { return s.FV_wing_inertial_N; }));
-  t.addColumn("FH_wing_inertial", "N",
-              column(h, [](const LoadSample& s) { return s.FH_wing_inertial_N; }));
-  t.addColumn("M_wing_inertial", "N m",
-              column(h, [](const LoadSample& s) { return s.M_wing_inertial_Nm; }));
-  t.addColumn("FV_tail", "N", column(h, [](const LoadSample& s) { return s.FV_tail_N; }));
-  t.addColumn("FH_tail", "N", column(h, [](const LoadSample& s) { return s.FH_tail_N; }));
-  t.addColumn("FH_body", "N", column(h, [](const LoadSample& s) { return s.FH_body_N; }));
-  t.addColumn("M_tail", "N m", column(h, [](const LoadSample& s) { return s.M_tail_Nm; }));
-  t.addColumn("separated_fraction", "-",
-              column(h, [](const LoadSample& s) { return s.separated_fraction; }));
-  t.addColumn("tip_deflection", "m",
-              column(h, [](const LoadSample& s) { return s.tip_deflection_m; }));
-  t.addColumn("tip_twist", "deg",
-              column(h, [](const LoadSample& s) { return s.tip_twist_rad * kRadToDeg; }));
-  return t;
-}
-
-CsvTable cycleTable(const SimulationSummary& s) {
-  CsvTable t;
-  std::vector<double> k, fv, fh, m, pa, ph;
-  for (std::size_t i = 0; i < s.per_cycle.size(); ++i) {
-    k.push_back(static_cast<double>(i + 1));
-    fv.push_back(s.per_cycle[i].FV_N);
-    fh.push_back(s.per_cycle[i].FH_N);
-    m.push_back(s.per_cycle[i].M_Nm);
-    pa.push_back(s.per_cycle[i].power_aero_W);
-    ph.push_back(s.per_cycle[i].power_hinge_W);
+  void onSample(double t_s, double delta_M_rad, const LoadSample& l) override {
+    const double row[] = {t_s,
+                          delta_M_rad * kRadToDeg,
+                          l.FV_N,
+                          l.FH_N,
+                          l.M_Nm,
+                          l.power_aero_W,
+                          l.power_hinge_W,
+                          l.FV_wing_aero_N,
+                          l.FH_wing_aero_N,
+                          l.M_wing_aero_Nm,
+                          l.FV_wing_inertial_N,
+                          l.FH_wing_inertial_N,
+                          l.M_wing_inertial_Nm,
+                          l.FV_tail_N,
+                          l.FH_tail_N,
+                          l.FH_body_N,
+                          l.M_tail_Nm,
+                          l.separated_fraction,
+                          l.tip_deflection_m,
+                          l.tip_twist_rad * kRadToDeg};
+    static_assert(sizeof row / sizeof row[0] == 20, "one value per histories.csv column");
+    histories_.row(row);
   }
-  t.addColumn("cycle", "-", k);
-  t.addColumn("FV_mean", "N", fv);
-  t.addColumn("FH_mean", "N", fh);
-  t.addColumn("M_mean", "N m", m);
-  t.addColumn("power_aero_mean", "W", pa);
-  t.addColumn("power_hinge_mean", "W", ph);
-  return t;
-}
+  void onCycle(int cycle, const CycleMeans& m) override {
+    const double row[] = {static_cast<double>(cycle), m.FV_N, m.FH_N, m.M_Nm, m.power_aero_W,
+                          m.power_hinge_W};
+    cycles_.row(row);
+  }
+  std::size_t historyRows() const { return histories_.rowsWritten(); }
+  void commit() {
+    histories_.commit();
+    cycles_.commit();
+  }
+
+ private:
+  CsvStreamWriter histories_, cycles_;
+};
 
 // Figure in the layout of paper Fig. 2: delta_M, FV, FH and M against time over the last (at most
 // three) cycles, i.e. the periodic steady state, with the downstrokes shaded.
-std::string loadsFigure(const Study& study, const SimulationSummary& s) {
+// A long history is read from the first shown row on (figure_rows.hpp).
+std::string loadsFigure(const Study& study, const SimulationSummary& s, std::size_t rows) {
   const double T = 1.0 / study.point.freq_hz;
   const int shown = std::min(3, s.cycles_run);
   const int first = s.cycles_run - shown;
+  const std::size_t spc = static_cast<std::size_t>(study.simulate.samples_per_cycle);
+  const std::size_t every = static_cast<std::size_t>(study.history_every);
+  const std::string skip =
+      "skip 2" + figureEvery(rows, historyRowOf(static_cast<std::size_t>(first) * spc, every),
+                             historyRowsPerCycle(spc, every));
   std::ostringstream g;
   g << "set multiplot layout 4,1 title \"" << study.name << " (tethered): U = "
     << study.point.speed_mps << " m/s, f = " << study.point.freq_hz
@@ -130,21 +151,26 @@ std::string loadsFigure(const Study& study, const SimulationSummary& s) {
     g << "set object " << k + 1 << " rect from " << (k + 0.25) * T << ", graph 0 to "
       << (k + 0.75) * T << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
   g << "set format x ''\n";
-  g << "set ylabel '{/Symbol d}_M (deg)'\n"
-       "plot 'histories.csv' skip 2 using 1:2 with lines lw 2 lc rgb '#333333' title 'flap angle'\n";
-  g << "set ylabel 'F_V (N)'\n"
-       "plot 'histories.csv' skip 2 using 1:3 with lines lw 2 lc rgb '#c0392b' title 'total', "
-       "'' skip 2 using 1:8 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', "
-       "'' skip 2 using 1:11 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
-  g << "set ylabel 'F_H (N)'\n"
-       "plot 'histories.csv' skip 2 using 1:4 with lines lw 2 lc rgb '#c0392b' title 'total', "
-       "'' skip 2 using 1:9 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', "
-       "'' skip 2 using 1:12 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
-  g << "set format x '%g'\nset xlabel 'time (s)'\n";
-  g << "set ylabel 'M_{CG} (N m)'\n"
-       "plot 'histories.csv' skip 2 using 1:5 with lines lw 2 lc rgb '#c0392b' title 'total', "
-       "'' skip 2 using 1:10 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', "
-       "'' skip 2 using 1:13 with lines dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
+  // One curve: 'histories.csv' (or '' for the file of the curve before) with its rows.
+  auto curve = [&](const char* file, int column, const char* style) {
+    g << file << " " << skip << " using 1:" << column << " with lines " << style;
+  };
+  g << "set ylabel '{/Symbol d}_M (deg)'\nplot ";
+  curve("'histories.csv'", 2, "lw 2 lc rgb '#333333' title 'flap angle'\n");
+  const char* total = "lw 2 lc rgb '#c0392b' title 'total', ";
+  const char* aero = "dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', ";
+  const char* inertia = "dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
+  const struct {
+    const char* label;
+    int total, aero, inertia;
+  } panels[] = {{"F_V (N)", 3, 8, 11}, {"F_H (N)", 4, 9, 12}, {"M_{CG} (N m)", 5, 10, 13}};
+  for (const auto& p : panels) {
+    if (p.total == 5) g << "set format x '%g'\nset xlabel 'time (s)'\n";
+    g << "set ylabel '" << p.label << "'\nplot ";
+    curve("'histories.csv'", p.total, total);
+    curve("''", p.aero, aero);
+    curve("''", p.inertia, inertia);
+  }
   g << "unset multiplot\n";
   return g.str();
 }
@@ -195,10 +221,11 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
     return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr, &given);
 
   const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle);
-  TimeHistory history;
+  TimeHistory history;  // the last cycle (the analyses below); every cycle streams to `files`
   SimulationOptions opts = study.simulate;
   opts.record_history = true;
-  const SimulationSummary s = simulateTethered(model, study.point, opts, &history);
+  std::optional<TetheredRunFiles> files(std::in_place, out_dir, study.history_every);
+  const SimulationSummary s = simulateTethered(model, study.point, opts, &history, &*files);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -208,12 +235,13 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   // As given: with at_trim the resolved study keeps the initial guess and solves the same trim.
   writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(given));
   std::optional<ConstrainedFlightTest> cft;
+  std::size_t history_rows = 0;
   if (failed) {
+    files.reset();  // the streamed files are discarded
     removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv"}, {"loads", "zmp"});
   } else {
-    writeFileAtomic(out_dir / "histories.csv",
-                    historyTable(history).toString(static_cast<std::size_t>(study.history_every)));
-    writeFileAtomic(out_dir / "cycles.csv", cycleTable(s).toString());
+    history_rows = files->historyRows();
+    files->commit();
     // The constrained flight test (paper Fig. 9) of the last whole cycle.
     cft = lastCycleConstrainedFlightTest(study, model, history, opts.samples_per_cycle);
     if (cft) writeFileAtomic(out_dir / "zmp.csv", zmpTable(*cft).toString());
@@ -288,7 +316,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
                              .set("rhs_evaluations", s.rhs_evaluations));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (failed) return reportFailedRun(study, s.message, out_dir);
-  drawFigure(out_dir, "loads", loadsFigure(study, s));
+  drawFigure(out_dir, "loads", loadsFigure(study, s, history_rows));
   if (cft) drawFigure(out_dir, "zmp", zmpFigureScript(study, *cft, s.cycles_run));
   std::cout << study.name << ": " << s.BriefReport() << "\n  -> " << out_dir.string() << "\n";
   return 0;

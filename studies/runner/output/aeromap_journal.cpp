@@ -1,6 +1,9 @@
 #include "studies/runner/output/aeromap_journal.hpp"
 
 #include <charconv>
+#include <fstream>
+#include <stdexcept>
+#include <string>
 #include <system_error>
 #include <utility>
 
@@ -92,32 +95,52 @@ bool parseJournalRecord(std::string_view line, std::size_t points, std::size_t* 
 
 AeroMapJournal::AeroMapJournal(std::filesystem::path file, std::uint64_t fingerprint,
                                std::size_t points, JournalResume* resume)
-    : journal_(
-          std::move(file), "aeromap", fingerprint, points,
-          [](std::size_t, std::string_view payload) {
-            trim::AeroMapPoint p;
-            return decodePayload(payload, &p);
-          },
-          &opened_) {
+    : points_(points) {
   JournalResume r;
-  r.existed = opened_.existed;
-  r.fingerprint_matched = opened_.fingerprint_matched;
-  r.records = opened_.records;
-  r.rejected_lines = opened_.rejected_lines;
-  r.points.resize(points);
-  for (std::size_t i = 0; i < points; ++i) {
-    if (!opened_.payloads[i]) continue;
+  auto keep = [&](std::string_view line) {
+    std::size_t index = 0;
     trim::AeroMapPoint p;
-    if (decodePayload(*opened_.payloads[i], &p)) r.points[i] = std::move(p);  // always (accepted)
-  }
-  opened_ = PointJournalResume();
-  if (resume) *resume = std::move(r);
+    if (!parseJournalRecord(line, points_, &index, &p) || index != records_) return false;
+    ++records_;
+    return true;
+  };
+  JournalFile::Reading reading;
+  file_.emplace(std::move(file),
+                "# ornithopter aeromap journal v2 fingerprint=" + hex16(fingerprint) +
+                    " points=" + std::to_string(points),
+                keep, &reading);
+  r.existed = reading.existed;
+  r.fingerprint_matched = reading.header_matched;
+  r.records = records_;
+  r.rejected_lines = reading.rejected_lines;
+  if (resume) *resume = r;
 }
 
 void AeroMapJournal::append(std::size_t index, const trim::AeroMapPoint& point) {
-  journal_.append(index, payloadOf(point));
+  if (index != records_)
+    throw std::logic_error("aeromap journal: point " + std::to_string(index) +
+                           " appended where point " + std::to_string(records_) + " is next");
+  file_->append(journalRecord(index, point));
+  ++records_;
 }
 
-void AeroMapJournal::remove() { journal_.remove(); }
+void AeroMapJournal::replay(
+    const std::function<void(std::size_t, const trim::AeroMapPoint&)>& visit) const {
+  std::ifstream in(file_->path(), std::ios::binary);
+  std::string line;
+  if (!in || !std::getline(in, line))
+    throw std::runtime_error("cannot read " + file_->path().string());
+  for (std::size_t expected = 0; expected < records_; ++expected) {
+    std::size_t index = 0;
+    trim::AeroMapPoint p;
+    if (!std::getline(in, line) || !parseJournalRecord(line, points_, &index, &p) ||
+        index != expected)
+      throw std::runtime_error(file_->path().string() + ": record of point " +
+                               std::to_string(expected) + " does not read back");
+    visit(index, p);
+  }
+}
+
+void AeroMapJournal::remove() { file_->remove(); }
 
 }  // namespace orni::studies

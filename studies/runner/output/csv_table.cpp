@@ -7,9 +7,7 @@
 
 namespace orni::studies {
 
-namespace {
-
-std::string csvCell(const std::string& text) {
+std::string csvTextCell(const std::string& text) {
   if (text.find_first_of("\n\r") != std::string::npos)
     throw std::logic_error("CsvTable: a cell contains a newline");
   if (text.find_first_of(",\"") == std::string::npos) return text;
@@ -17,8 +15,6 @@ std::string csvCell(const std::string& text) {
   for (const char c : text) q += (c == '"') ? std::string("\"\"") : std::string(1, c);
   return q + "\"";
 }
-
-}  // namespace
 
 void CsvTable::add(std::string name, std::string unit, std::vector<std::string> cells) {
   if (!columns_.empty() && cells.size() != columns_.front().size())
@@ -36,7 +32,7 @@ void CsvTable::addColumn(std::string name, std::string unit, const std::vector<d
 }
 
 void CsvTable::addTextColumn(std::string name, std::string unit, std::vector<std::string> cells) {
-  for (std::string& c : cells) c = csvCell(c);
+  for (std::string& c : cells) c = csvTextCell(c);
   add(std::move(name), std::move(unit), std::move(cells));
 }
 

@@ -6,6 +6,10 @@
 
 namespace orni::studies {
 
+/// A text cell as CSV holds it: quoted (RFC 4180) when it has a comma or a double quote; throws
+/// std::logic_error for a newline.
+std::string csvTextCell(const std::string& text);
+
 class CsvTable {
  public:
   /// Add a column of numbers (shortest round-trip formatting); every column must end up with the

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 #include <system_error>
 #include <utility>
@@ -50,37 +49,34 @@ JournalFile::JournalFile(std::filesystem::path file, const std::string& header,
                          const KeepLine& keep, Reading* reading)
     : file_(std::move(file)) {
   Reading r;
-  std::string kept = header + '\n';
+  // Line by line into the rewritten file: a journal of any length never sits in memory.
+  AtomicFileWriter kept(file_);
+  kept.write(header + '\n');
   std::error_code ec;
   if (std::filesystem::exists(file_, ec)) {
     r.existed = true;
     std::ifstream in(file_, std::ios::binary);
-    std::ostringstream buf;
-    buf << in.rdbuf();
-    const std::string text = buf.str();
-    const std::size_t first_nl = text.find('\n');
-    if (first_nl != std::string::npos && std::string_view(text).substr(0, first_nl) == header) {
+    std::string line;
+    // A complete line ends with a newline: getline reaching the end of the file without one
+    // (eof) read a torn line.
+    if (std::getline(in, line) && !in.eof() && line == header) {
       r.header_matched = true;
-      std::size_t start = first_nl + 1;
-      while (start < text.size()) {
-        const std::size_t nl = text.find('\n', start);
-        if (nl == std::string::npos) {  // torn last line: no newline
+      while (std::getline(in, line)) {
+        if (in.eof()) {  // torn last line: no newline
           ++r.rejected_lines;
           break;
         }
-        const std::string_view line = std::string_view(text).substr(start, nl - start);
         if (keep(line)) {
-          kept.append(line.data(), line.size());
-          kept += '\n';
+          line += '\n';
+          kept.write(line);
         } else {
           ++r.rejected_lines;
         }
-        start = nl + 1;
       }
     }
   }
   // Only trusted records survive: later appends never follow a torn fragment.
-  writeFileAtomic(file_, kept);
+  kept.commit();
   fd_ = ::open(file_.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
   if (fd_ < 0)
     throw std::runtime_error("cannot open " + file_.string() + ": " + std::strerror(errno));

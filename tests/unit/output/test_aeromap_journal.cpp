@@ -1,6 +1,6 @@
 // The aero-map journal (studies/runner/output/aeromap_journal.hpp): records round-trip exactly,
-// torn or corrupt lines are never trusted, and reopening keeps only the valid records of a journal
-// with the same fingerprint.
+// torn or corrupt lines are never trusted, and reopening keeps only the valid records, in point
+// order, of a journal with the same fingerprint.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -8,7 +8,9 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "studies/runner/output/aeromap_journal.hpp"
 
@@ -84,48 +86,54 @@ TEST(OutputAeromapJournal, RejectsTornAndCorruptRecords) {
   EXPECT_FALSE(parseJournalRecord(line, 5, &index, &q));  // index 5 of a 5-point map
 }
 
-TEST(OutputAeromapJournal, ReopenKeepsOnlyValidRecordsOfTheSameStudy) {
+TEST(OutputAeromapJournal, ReopenKeepsOnlyTheValidRecordsInOrderOfTheSameStudy) {
   const fs::path dir = fs::temp_directory_path() / "orni_output_journal";
   fs::remove_all(dir);
   fs::create_directories(dir);
   const fs::path file = dir / "aeromap.journal";
   {
     JournalResume r;
-    AeroMapJournal j(file, 0x1234, 4, &r);
+    AeroMapJournal j(file, 0x1234, 5, &r);
     EXPECT_FALSE(r.existed);
-    j.append(2, samplePoint());
     j.append(0, samplePoint());
+    EXPECT_THROW(j.append(2, samplePoint()), std::logic_error);  // points come in order
+    j.append(1, samplePoint());
+    EXPECT_EQ(j.records(), 2u);
   }
   const std::string good = readAll(file);
-  {  // a torn third record and a corrupt line in the middle
+  {  // a corrupt line in the middle, a record out of order and a torn last record
     std::ofstream out(file, std::ios::binary | std::ios::trunc);
-    const std::string third = journalRecord(3, samplePoint());
-    out << good.substr(0, good.find('\n') + 1) << "garbage line\n"
-        << good.substr(good.find('\n') + 1) << third.substr(0, third.size() / 2);
+    const std::size_t header_end = good.find('\n') + 1;
+    const std::size_t first_end = good.find('\n', header_end) + 1;
+    const std::string third = journalRecord(2, samplePoint());
+    out << good.substr(0, first_end) << "garbage line\n" << good.substr(first_end)
+        << journalRecord(3, samplePoint()) << third.substr(0, third.size() / 2);
   }
   {
     JournalResume r;
-    AeroMapJournal j(file, 0x1234, 4, &r);
+    AeroMapJournal j(file, 0x1234, 5, &r);
     EXPECT_TRUE(r.existed);
     EXPECT_TRUE(r.fingerprint_matched);
-    EXPECT_EQ(r.records, 2u);
-    EXPECT_EQ(r.rejected_lines, 2u);
-    EXPECT_TRUE(r.points[0].has_value());
-    EXPECT_FALSE(r.points[1].has_value());
-    EXPECT_TRUE(r.points[2].has_value());
-    EXPECT_FALSE(r.points[3].has_value());
-    j.append(3, samplePoint());
+    EXPECT_EQ(r.records, 2u);  // points 0 and 1; 3 follows a gap
+    EXPECT_EQ(r.rejected_lines, 3u);
+    j.append(2, samplePoint());
   }
   {  // the rewrite dropped the fragments, so the appended record is whole and trusted
     JournalResume r;
-    AeroMapJournal j(file, 0x1234, 4, &r);
+    AeroMapJournal j(file, 0x1234, 5, &r);
     EXPECT_EQ(r.records, 3u);
     EXPECT_EQ(r.rejected_lines, 0u);
-    EXPECT_TRUE(r.points[3].has_value());
+    std::vector<std::size_t> seen;
+    j.replay([&](std::size_t index, const trim::AeroMapPoint& p) {
+      seen.push_back(index);
+      EXPECT_EQ(p.message, samplePoint().message);
+      EXPECT_EQ(p.mean.FV_N, samplePoint().mean.FV_N);
+    });
+    EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2}));
   }
   {  // another fingerprint (or point count): everything is discarded
     JournalResume r;
-    AeroMapJournal j(file, 0x9999, 4, &r);
+    AeroMapJournal j(file, 0x9999, 5, &r);
     EXPECT_TRUE(r.existed);
     EXPECT_FALSE(r.fingerprint_matched);
     EXPECT_EQ(r.records, 0u);
