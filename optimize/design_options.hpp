@@ -2,7 +2,6 @@
 // evaluation. Light header (no dynamics) so that the study files can hold them.
 #pragma once
 
-#include <functional>
 #include <string>
 
 #include "core/model/vehicle_model.hpp"
@@ -39,9 +38,6 @@ struct DesignProblemOptions {
   DesignConstraints constraints;
   /// Start each trim from the last converged trim of the same start (else from trim.initial).
   bool warm_start = true;
-  /// Optional check of a designed vehicle; throws (std::exception) when the design is not a valid
-  /// vehicle, and the evaluation fails with that message.
-  std::function<void(const VehicleModel&)> validate;
 
   bool IsValid(std::string* why) const;
 };

@@ -9,6 +9,8 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
+#include "core/model/invalid_model_error.hpp"
+#include "core/model/vehicle_validation.hpp"
 #include "core/model/wing_inertia.hpp"
 
 namespace orni::opt {
@@ -54,8 +56,10 @@ DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblem
                                 const OperatingPoint& initial_guess) {
   DesignEvaluation e;
   try {
+    // A design outside the vehicle's rules (core/model/vehicle_validation.hpp) fails here, with
+    // the key at fault in the message.
+    requireValidVehicle(vehicle);
     e.structural_mass_kg = 2.0 * computeWingInertia(vehicle).total.mass_kg;
-    if (options.validate) options.validate(vehicle);
     const FlightCoreModel model(vehicle);
     TrimOptions t = options.trim;
     for (TrimUnknown u : t.unknowns) setUnknownValue(&t.initial, u, unknownValue(initial_guess, u));
@@ -102,9 +106,12 @@ DesignProblem::DesignProblem(VehicleModel base, DesignSpace space, DesignProblem
     for (const DesignField& f : v.fields) {
       if (f.member >= static_cast<int>(base_.wing.members.size()))
         throw std::invalid_argument("design variable '" + v.name + "': member index out of range");
-      if (f.positive() && !(v.lower > 0.0))
-        throw std::invalid_argument("design variable '" + v.name + "': " + f.name +
-                                    " must stay > 0 (lower bound)");
+      const FieldSpec& spec = f.spec();
+      if (!spec.siRange().contains(v.lower) || !spec.siRange().contains(v.upper))
+        throw InvalidModelError("design variable '" + v.name + "': " + f.name + " must stay in " +
+                                spec.range.interval() + " (the range of " +
+                                std::string(spec.key) + "), got [" + displayNumber(v.lower) +
+                                ", " + displayNumber(v.upper) + "]");
     }
   }
   if (options_.constraints.tip_deflection_max_m > 0.0 &&

@@ -3,8 +3,8 @@
 // the paper's heuristic search of tail area, aspect ratio, elevation and the P1-P4 distance.
 //
 // One evaluation (evaluateDesign): apply the design to a copy of the vehicle (design_space.hpp),
-// check it (the optional validate hook: the runner re-reads it as a vehicle file, so every
-// evaluated design is a valid vehicle), build the FlightCoreModel (a flexible wing's modal model
+// check it (core's model checks, core/model/vehicle_validation.hpp: the ranges of the field table
+// and the rules between fields, the same as the vehicle files'), build the FlightCoreModel (a flexible wing's modal model
 // comes from the structural cache, core/dynamics/flexible_wing.cpp), solve the trim with Ceres
 // (trim/trim_solver.hpp; initial guess: the last converged trim of this start, warm start, else
 // the study's initial guess) and, on a converged trim, the free-flight check that solveTrim runs.

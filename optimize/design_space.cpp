@@ -43,15 +43,22 @@ std::string memberList(const VehicleModel& v) {
 
 }  // namespace
 
-bool DesignField::positive() const {
+const FieldSpec& DesignField::spec() const {
   switch (kind) {
-    case DesignFieldKind::kTailArea:
-    case DesignFieldKind::kTailAspectRatio:
-    case DesignFieldKind::kTailArm:
-    case DesignFieldKind::kSkinThickness:
-    case DesignFieldKind::kMemberDiameter: return true;
-    default: return false;
+    case DesignFieldKind::kTailArea: return field("tail.area_m2");
+    case DesignFieldKind::kTailAspectRatio: return field("tail.aspect_ratio");
+    case DesignFieldKind::kTailArm: return field("tail.arm_m");
+    case DesignFieldKind::kTailHeight: return field("tail.height_m");
+    case DesignFieldKind::kHingeX: return field("kinematics.hinge_x_m");
+    case DesignFieldKind::kHingeZ: return field("kinematics.hinge_z_m");
+    case DesignFieldKind::kSkinThickness: return field("wing.skin.thickness_m");
+    case DesignFieldKind::kMemberDiameter: return field("wing.members[].diameter_m");
+    case DesignFieldKind::kMemberStartX:
+    case DesignFieldKind::kMemberStartY: return field("wing.members[].start_xy_m");
+    case DesignFieldKind::kMemberEndX:
+    case DesignFieldKind::kMemberEndY: return field("wing.members[].end_xy_m");
   }
+  throw std::logic_error("DesignField::spec: unknown field kind");
 }
 
 std::vector<std::string> designFieldNames(const VehicleModel& vehicle) {

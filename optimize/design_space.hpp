@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "core/model/field_table.hpp"
 #include "core/model/vehicle_model.hpp"
 
 namespace orni::opt {
@@ -47,8 +48,10 @@ struct DesignField {
   int member = -1;
   std::string name;  ///< the resolved key ("wing.members.STIF1.diameter_m")
 
-  /// True for fields whose values must be > 0 (areas, lengths of sections, aspect ratio, arm).
-  bool positive() const;
+  /// The field-table entry of the vehicle key this field sets ("tail.area_m2",
+  /// "wing.members[].diameter_m", "wing.members[].end_xy_m" for end_x_m and end_y_m): its range
+  /// (SI = file units for every design field) bounds the variable.
+  const FieldSpec& spec() const;
 };
 
 /// Resolves a field name (wildcards expanded) against `vehicle`. On failure returns false and says

@@ -2,6 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
+
+#include "core/model/field_table.hpp"
 
 namespace orni::opt {
 
@@ -30,20 +34,27 @@ bool OptimizerOptions::IsValid(std::string* why) const {
     if (why) *why = m;
     return false;
   };
-  if (max_evaluations < 2 || max_evaluations > 1000000)
-    return fail("max_evaluations must be in [2, 1000000]");
-  if (starts < 1 || starts > 1000) return fail("starts must be in [1, 1000]");
-  if (threads < 1 || threads > 1024) return fail("threads must be in [1, 1024]");
-  if (seed < 0 || seed >= 2147483648L) return fail("seed must be in [0, 2^31)");
-  if (!(initial_step > 0.0 && initial_step <= 1.0)) return fail("initial_step must be in (0, 1]");
-  if (!(xtol >= 0.0 && xtol < 1.0)) return fail("xtol must be in [0, 1)");
-  if (!(ftol_rel >= 0.0 && ftol_rel < 1.0)) return fail("ftol_rel must be in [0, 1)");
-  if (polish_evaluations < 0 || polish_evaluations >= max_evaluations)
+  // The keys of [optimize] and -j: the field table's ranges.
+  const std::pair<const char*, double> keyed[] = {
+      {"optimize.max_evaluations", max_evaluations},
+      {"optimize.starts", starts},
+      {"jobs", threads},
+      {"optimize.seed", static_cast<double>(seed)},
+      {"optimize.initial_step", initial_step},
+      {"optimize.xtol", xtol},
+      {"optimize.ftol_rel", ftol_rel},
+      {"optimize.polish_evaluations", polish_evaluations},
+      {"optimize.population", population},
+      {"optimize.constraint_tol", constraint_tol}};
+  for (const auto& [key, value] : keyed)
+    if (!field(key).range.contains(value)) {
+      const std::string name(field(key).key.substr(field(key).key.rfind('.') + 1));
+      if (why) *why = name + " must be in " + field(key).range.interval();
+      return false;
+    }
+  if (polish_evaluations >= max_evaluations)
     return fail("polish_evaluations must be in [0, max_evaluations - 1]");
-  if (population != 0 && (population < 2 || population > 100000))
-    return fail("population must be 0 (automatic) or in [2, 100000]");
-  if (!(constraint_tol >= 0.0 && constraint_tol < 1.0))
-    return fail("constraint_tol must be in [0, 1)");
+  if (population == 1) return fail("population must be 0 (automatic) or in [2, 100000]");
   if (!std::isfinite(failure_objective)) return fail("failure_objective must be finite");
   if (!(std::isfinite(failure_constraint) && failure_constraint > 0.0))
     return fail("failure_constraint must be finite and > 0");

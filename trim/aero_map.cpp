@@ -4,21 +4,14 @@
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
+#include <utility>
 
+#include "core/model/field_table.hpp"
 #include "trim/point_pool.hpp"
 
 namespace orni::trim {
 
 namespace {
-
-constexpr double kHalfPi = 1.57079632679489661923;
-
-/// Every value finite and in (lo, hi) or (lo, hi] (hi_closed).
-bool allInside(const std::vector<double>& v, double lo, double hi, bool hi_closed) {
-  for (const double x : v)
-    if (!std::isfinite(x) || !(x > lo) || !(hi_closed ? x <= hi : x < hi)) return false;
-  return true;
-}
 
 /// One line: newlines and other control characters become spaces (the runner's files keep one
 /// point per line).
@@ -57,13 +50,21 @@ bool AeroMapGrid::IsValid(std::string* why) const {
   };
   if (speed_mps.empty() || freq_hz.empty() || theta_rad.empty() || tail_angle_rad.empty())
     return fail("every axis needs at least one value");
-  if (!allInside(speed_mps, 0.0, 1e3, false)) return fail("speed_mps values must be in (0, 1000)");
-  if (!allInside(freq_hz, 0.0, 200.0, true))
-    return fail("freq_hz values must be in (0, 200]");
-  if (!allInside(theta_rad, -kHalfPi, kHalfPi, false))
-    return fail("theta_rad values must be in (-pi/2, pi/2)");
-  if (!allInside(tail_angle_rad, -kHalfPi, kHalfPi, false))
-    return fail("tail_angle_rad values must be in (-pi/2, pi/2)");
+  // The ranges of the [aeromap] axes in the field table (SI).
+  const std::pair<const char*, const std::vector<double>*> axes[] = {
+      {"aeromap.speed_mps", &speed_mps},
+      {"aeromap.freq_hz", &freq_hz},
+      {"aeromap.theta_deg", &theta_rad},
+      {"aeromap.tail_angle_deg", &tail_angle_rad}};
+  for (const auto& [key, values] : axes) {
+    const FieldSpec& f = field(key);
+    for (const double v : *values)
+      if (!f.siRange().contains(v)) {
+        if (why) *why = std::string(key) + " values must be in " + f.range.interval() + " " +
+                        std::string(f.unit);
+        return false;
+      }
+  }
   // Product without overflow: each factor is checked against the remaining budget.
   std::size_t n = 1;
   for (const std::size_t k : {speed_mps.size(), freq_hz.size(), theta_rad.size(),

@@ -5,8 +5,10 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/model/field_table.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 
 namespace orni {
@@ -160,12 +162,25 @@ bool CalibrationOptions::IsValid(std::string* why) const {
     for (std::size_t j = 0; j < i; ++j)
       if (variables[j].parameter == v.parameter)
         return fail(std::string("variable ") + keyOf(v.parameter) + " listed twice");
+    const FieldSpec& f = field(keyOf(v.parameter));  // SI = file units for these keys
+    if (!(f.range.contains(v.lower) && f.range.contains(v.upper)))
+      return fail(std::string("variable ") + keyOf(v.parameter) + ": bounds must lie in " +
+                  f.range.interval());
   }
-  if (!(target.speed_mps > 0 && target.freq_hz > 0)) return fail("target speed and frequency > 0");
-  if (settled.cycles < 6 || settled.window_cycles < 1 || settled.window_cycles >= settled.cycles)
-    return fail("settled cycles >= 6 and 1 <= window < cycles");
-  if (!(tolerance > 0)) return fail("tolerance > 0");
-  if (max_iterations < 1 || max_iterations > 200) return fail("max_iterations in [1, 200]");
+  // The keys of [calibrate]: the field table's ranges (SI).
+  const std::pair<const char*, double> keyed[] = {
+      {"calibrate.theta_mean_deg", target.theta_rad},
+      {"calibrate.speed_mps", target.speed_mps},
+      {"calibrate.tail_angle_deg", target.tail_angle_rad},
+      {"calibrate.freq_hz", target.freq_hz},
+      {"calibrate.settled_cycles", settled.cycles},
+      {"calibrate.window_cycles", settled.window_cycles},
+      {"calibrate.tolerance", tolerance},
+      {"calibrate.max_iterations", max_iterations}};
+  for (const auto& [key, value] : keyed)
+    if (!field(key).siRange().contains(value))
+      return fail(std::string(key) + " must be in " + field(key).range.interval());
+  if (settled.window_cycles >= settled.cycles) return fail("settled window < cycles");
   return true;
 }
 

@@ -1,7 +1,9 @@
 #include "trim/trim_options.hpp"
 
 #include <cmath>
+#include <utility>
 
+#include "core/model/field_table.hpp"
 #include "core/model/frames.hpp"
 
 namespace orni {
@@ -52,29 +54,36 @@ bool TrimOptions::IsValid(std::string* why) const {
     const std::string name = trimUnknownName(u);
     if (!(std::isfinite(b.lower) && std::isfinite(b.upper) && b.lower < b.upper))
       return fail("bounds must have finite lower < upper (" + name + ")");
-    if ((u == TrimUnknown::kSpeed || u == TrimUnknown::kFreq) && !(b.lower > 0.0))
-      return fail("bounds must have a lower bound > 0 for " + name);
-    if ((u == TrimUnknown::kThetaMean || u == TrimUnknown::kTailAngle) &&
-        !(b.lower > -0.5 * kPi && b.upper < 0.5 * kPi))
-      return fail("bounds must lie inside (-90, 90) deg for " + name);
+    const FieldSpec& f = field("trim.bounds." + name);
+    if (!(f.siRange().contains(b.lower) && f.siRange().contains(b.upper)))
+      return fail("bounds must lie in " + f.range.interval() + " " + std::string(f.unit) +
+                  " for " + name);
     if (!(fd_steps[i] > 0.0 && fd_steps[i] <= 0.25 * (b.upper - b.lower)))
       return fail("fd_steps must be > 0 and at most a quarter of the bound interval (" + name +
                   ")");
   }
-  if (!(initial.speed_mps > 0.0)) return fail("initial speed must be > 0");
-  if (!(initial.freq_hz > 0.0)) return fail("initial frequency must be > 0");
-  if (!(std::abs(initial.theta_rad) < 0.5 * kPi && std::abs(initial.tail_angle_rad) < 0.5 * kPi))
-    return fail("initial angles must lie inside (-90, 90) deg");
+  const std::pair<const char*, double> initial_values[] = {
+      {"trim.initial.theta_mean_deg", initial.theta_rad},
+      {"trim.initial.speed_mps", initial.speed_mps},
+      {"trim.initial.tail_angle_deg", initial.tail_angle_rad},
+      {"trim.freq_hz", initial.freq_hz}};
+  for (const auto& [key, value] : initial_values)
+    if (!field(key).siRange().contains(value))
+      return fail(std::string(key) + " must be in " + field(key).range.interval());
   for (TrimUnknown u : unknowns) {
     const TrimBounds& b = bounds[static_cast<std::size_t>(trimIndex(u))];
     const double v = unknownValue(initial, u);
     if (!(v >= b.lower && v <= b.upper))
       return fail(std::string("initial ") + trimUnknownName(u) + " must lie inside its bounds");
   }
-  if (max_iterations < 1 || max_iterations > 1000)
-    return fail("max_iterations must be in [1, 1000]");
-  if (!(residual_tol > 0.0 && residual_tol <= 0.1)) return fail("residual_tol must be in (0, 0.1]");
-  if (!(function_tol > 0.0 && function_tol < 1.0)) return fail("function_tol must be in (0, 1)");
+  // The keys of [trim]: the field table's ranges.
+  const std::pair<const char*, double> keyed[] = {
+      {"trim.max_iterations", max_iterations}, {"trim.residual_tol", residual_tol},
+      {"trim.function_tol", function_tol},     {"trim.derivative_cycles", derivative_cycles},
+      {"trim.refine_cycles", refine_cycles}};
+  for (const auto& [key, value] : keyed)
+    if (!field(key).range.contains(value))
+      return fail(std::string(key).substr(5) + " must be in " + field(key).range.interval());
   if (!(gradient_tol >= 0.0 && gradient_tol < 1.0)) return fail("gradient_tol must be in [0, 1)");
   if (!(parameter_tol >= 0.0 && parameter_tol < 1.0))
     return fail("parameter_tol must be in [0, 1)");
@@ -82,10 +91,6 @@ bool TrimOptions::IsValid(std::string* why) const {
     return fail("stall_iterations must be in [0, 1000]");
   if (!(stall_decrease > 0.0 && stall_decrease < 1.0))
     return fail("stall_decrease must be in (0, 1)");
-  if (derivative_cycles < 1 || derivative_cycles > 1000)
-    return fail("derivative_cycles must be in [1, 1000]");
-  if (refine_cycles < 6 || refine_cycles > 10000)
-    return fail("refine_cycles must be in [6, 10000]");
   std::string sim_why;
   if (!simulation.IsValid(&sim_why)) return fail("simulation: " + sim_why);
   if (!periodic.IsValid(&sim_why)) return fail(sim_why);

@@ -5,12 +5,22 @@
 
 #include "core/aero/tail.hpp"
 #include "core/dynamics/flexible_wing.hpp"
-#include "core/model/invalid_model_error.hpp"
+#include "core/model/vehicle_validation.hpp"
 
 namespace orni {
 
+namespace {
+
+/// The vehicle, checked (core/model/vehicle_validation.hpp) before anything is built from it.
+const VehicleModel& checked(const VehicleModel& v) {
+  requireValidVehicle(v);
+  return v;
+}
+
+}  // namespace
+
 FlightCoreModel::FlightCoreModel(const VehicleModel& v)
-    : vehicle(v), strips(makeStrips(v.wing)), wing_mass(computeWingInertia(v)) {
+    : vehicle(checked(v)), strips(makeStrips(v.wing)), wing_mass(computeWingInertia(v)) {
   strip_geometry.reserve(strips.size());
   double area_half = 0.0;
   for (const Strip& s : strips) {
@@ -34,8 +44,6 @@ FlightCoreModel::FlightCoreModel(const VehicleModel& v)
   e_c_W = Vec3(std::cos(i), 0.0, -std::sin(i));  // rotY(i) e_x: nose-up incidence
   n_W = Vec3(-std::sin(i), 0.0, -std::cos(i));   // rotY(i) (-e_z)
   if (v.wing.structure == StructureLevel::kFlexible) {
-    if (v.wing.incidence_rad != 0.0)
-      throw InvalidModelError("the flexible wing model is flat: wing.incidence_deg must be 0");
     std::vector<double> chords, widths;
     for (const aero::StripGeometry& g : strip_geometry) {
       chords.push_back(g.chord_m);

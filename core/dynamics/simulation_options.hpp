@@ -47,6 +47,7 @@ struct FreeFlightOptions {
 
 struct SimulationOptions {
   FlightMode mode = FlightMode::kTethered;
+  // Ranges: the field table's simulate.* entries (core/model/field_table.cpp).
   int cycles = 10;               ///< flapping cycles to simulate, [1, 100000]
   double rel_tol = 1e-4;         ///< SUNDIALS relative tolerance, (0, 1e-2]; cycle means move
                                  ///< < 0.2 % when tightened tenfold (tests/unit/dynamics)
@@ -68,33 +69,9 @@ struct SimulationOptions {
   bool stop_when_steady = false; ///< end the run at the first cycle that meets steady_tol
                                  ///< (aero maps, trim); `cycles` is then the maximum
 
-  /// True when every field is inside its range; otherwise false with the reason in *why.
-  bool IsValid(std::string* why) const {
-    auto fail = [why](const char* m) {
-      if (why) *why = m;
-      return false;
-    };
-    if (cycles < 1 || cycles > 100000) return fail("cycles must be in [1, 100000]");
-    if (!(rel_tol > 0 && rel_tol <= 1e-2)) return fail("rel_tol must be in (0, 1e-2]");
-    if (!(abs_tol > 0 && abs_tol <= 1e-2)) return fail("abs_tol must be in (0, 1e-2]");
-    if (!(separation_abs_tol > 0 && separation_abs_tol <= 1e-2))
-      return fail("separation_abs_tol must be in (0, 1e-2]");
-    if (!(steady_tol > 0 && steady_tol <= 0.1)) return fail("steady_tol must be in (0, 0.1]");
-    if (samples_per_cycle < 8 || samples_per_cycle > 100000)
-      return fail("samples_per_cycle must be in [8, 100000]");
-    const FreeFlightBounds& b = free.bounds;
-    if (!(b.U_mps > 0 && b.W_mps > 0 && b.theta_rad > 0 && b.Q_radps >= 0 && b.h_m > 0))
-      return fail("free-flight bounds must be positive (Q may be 0 = automatic)");
-    if (!(free.transient_fraction >= 0 && free.transient_fraction <= 0.9))
-      return fail("transient_fraction must be in [0, 0.9]");
-    if (!(free.divergence_ratio > 1)) return fail("divergence_ratio must be > 1");
-    if (!(free.initial_altitude_m > 0)) return fail("initial_altitude_m must be > 0");
-    if (free.periodic_start_cycles < 0 || free.periodic_start_cycles > 1000)
-      return fail("periodic_start_cycles must be in [0, 1000]");
-    if (free.limit_cycle_window_samples < 1 || free.limit_cycle_window_samples > 10000000)
-      return fail("limit_cycle_window_samples must be in [1, 10^7]");
-    return true;
-  }
+  /// True when every field is inside its range (the field table's simulate.* and simulate.free.*
+  /// entries, core/model/field_table.hpp); otherwise false with "<key> must be in <range>" in *why.
+  bool IsValid(std::string* why) const;
 };
 
 }  // namespace orni

@@ -1,8 +1,9 @@
 // VehicleModel: the immutable description of an ornithopter (or a wind-tunnel rig) in SI units.
 //
 // Built once from a vehicle file (studies/runner/config) and never changed by an algorithm
-// (style.md habit 1). Every field states its unit and valid range; the loader enforces the
-// ranges and names file, line and key when a value is outside them.
+// (style.md habit 1). Every field states its unit; its valid range is its entry in the field table
+// (core/model/field_table.cpp, `ornithopter keys vehicle`), checked by core
+// (core/model/vehicle_validation.hpp) and by the readers, which name file, line and key.
 //
 // Frames (core/model/frames.hpp): B body at P1 (x forward, y right, z down), W right wing at P2
 // (x_W forward along the root chord, y_W outboard, z_W down when the flap angle is zero).
@@ -15,17 +16,17 @@ namespace orni {
 
 /// Ambient air and gravity.
 struct AirModel {
-  double density_kgpm3 = 1.225;               ///< rho, (0, 10]
-  double kinematic_viscosity_m2ps = 1.5e-5;   ///< nu, (0, 1e-3]
-  double gravity_mps2 = 9.81;                 ///< g, [0, 100]
+  double density_kgpm3 = 1.225;               ///< rho
+  double kinematic_viscosity_m2ps = 1.5e-5;   ///< nu
+  double gravity_mps2 = 9.81;                 ///< g
 };
 
 /// Isotropic linear-elastic material (paper Table 1).
 struct Material {
   std::string name;
-  double youngs_modulus_pa = 0.0;  ///< E, > 0
-  double poisson_ratio = 0.3;      ///< nu, (-1, 0.5)
-  double density_kgpm3 = 0.0;      ///< rho, > 0
+  double youngs_modulus_pa = 0.0;  ///< E
+  double poisson_ratio = 0.3;      ///< nu
+  double density_kgpm3 = 0.0;      ///< rho
 };
 
 /// A straight wing member (spar, diagonal, stiffener): solid circular rod between two points of
@@ -33,7 +34,7 @@ struct Material {
 struct WingMember {
   std::string name;
   std::string material;     ///< key into VehicleModel::materials
-  double diameter_m = 0.0;  ///< rod diameter, > 0
+  double diameter_m = 0.0;  ///< rod diameter
   double start_x_W_m = 0.0;
   double start_y_W_m = 0.0;
   double end_x_W_m = 0.0;
@@ -43,7 +44,7 @@ struct WingMember {
 /// Wing skin: a shell of uniform thickness over the whole planform.
 struct WingSkin {
   std::string material;      ///< key into VehicleModel::materials
-  double thickness_m = 0.0;  ///< > 0
+  double thickness_m = 0.0;  ///< skin thickness
 };
 
 enum class Planform { kRectangular, kQuarterEllipse };
@@ -68,10 +69,10 @@ enum class InertialStiffness {
 
 /// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6, 3.7).
 struct WingFeSettings {
-  double element_size_m = 0.005;  ///< target element edge h, (0, semispan]
-  int mode_count = 12;            ///< fixed-interface modes kept (at most), [1, 200]
+  double element_size_m = 0.005;  ///< target element edge h, <= semispan
+  int mode_count = 12;            ///< fixed-interface modes kept (at most)
   double cutoff_hz = 0.0;         ///< keep only modes below this frequency; 0 = no cut-off
-  double damping_ratio = 0.015;   ///< modal damping zeta of every mode, [0, 1)
+  double damping_ratio = 0.015;   ///< modal damping zeta of every mode
   bool p3_cross_axis_normal = true;  ///< universal-joint cross axis n_u = z_W (true) or y_W
   P3Joint p3_joint = P3Joint::kUniversal;  ///< the joint at P3
   /// Every node of the root chord (y_W = 0: the skin's root edge, on the flapping axis) held in
@@ -84,17 +85,16 @@ struct WingFeSettings {
 /// Geometry and structure of the right wing; the left wing is its mirror image.
 struct WingModel {
   Planform planform = Planform::kRectangular;
-  double semispan_m = 0.0;      ///< s: hinge P2 to tip along y_W, > 0
-  double root_chord_m = 0.0;    ///< c0, > 0; chord c(y) = c0 (rectangular) or c0 sqrt(1-(y/s)^2)
-  double incidence_rad = 0.0;   ///< built-in chord incidence relative to the hinge axis, nose-up +,
-                                ///< (-pi/4, pi/4)
-  int strip_count = 27;         ///< aerodynamic strips per half wing, [1, 500]
+  double semispan_m = 0.0;      ///< s: hinge P2 to tip along y_W
+  double root_chord_m = 0.0;    ///< c0; chord c(y) = c0 (rectangular) or c0 sqrt(1-(y/s)^2)
+  double incidence_rad = 0.0;   ///< built-in chord incidence relative to the hinge axis, nose-up +
+  int strip_count = 27;         ///< aerodynamic strips per half wing
   StructureLevel structure = StructureLevel::kRigid;
-  double p3_aft_of_le_m = 0.0;  ///< P3 (universal joint) on the root chord, [0, c0]
+  double p3_aft_of_le_m = 0.0;  ///< P3 (universal joint) on the root chord, <= c0
   WingSkin skin;
   std::vector<WingMember> members;
   /// Factor on every member diameter (spar details the paper leaves open: a calibration value,
-  /// see studies/paper/calibrate_magpie.toml), > 0; 1 = the diameters as listed.
+  /// see studies/paper/calibrate_magpie.toml); 1 = the diameters as listed.
   double member_diameter_scale = 1.0;
   WingFeSettings fe;
 
@@ -110,22 +110,22 @@ struct AeroParameters {
   AeroModelKind model = AeroModelKind::kMstTd;
   CirculationLag lag = CirculationLag::kScherer1;
   double aspect_ratio = 0.0;            ///< AR = b^2/S of the wing pair; 0 = from the planform
-  double zero_lift_angle_rad = 0.0;     ///< alpha0, positive for positive camber, [-0.2, 0.2]
-  double moment_coefficient_ac = 0.0;   ///< C_mac, nose-up positive, [-0.5, 0.5]
-  double suction_efficiency = 0.98;     ///< eta_s, [0, 1]
-  double crossflow_drag_coefficient = 1.98;  ///< Cd_cf, [0, 3]
+  double zero_lift_angle_rad = 0.0;     ///< alpha0, positive for positive camber
+  double moment_coefficient_ac = 0.0;   ///< C_mac, nose-up positive
+  double suction_efficiency = 0.98;     ///< eta_s
+  double crossflow_drag_coefficient = 1.98;  ///< Cd_cf
   bool skin_friction = true;            ///< M11 turbulent flat-plate friction on/off
-  double stall_angle_max_rad = 0.2268928;    ///< alpha_stall_max, 13 deg, (0, pi/2)
-  double stall_angle_min_rad = -0.2268928;   ///< alpha_stall_min, -13 deg, (-pi/2, 0)
+  double stall_angle_max_rad = 0.2268928;    ///< alpha_stall_max, 13 deg
+  double stall_angle_min_rad = -0.2268928;   ///< alpha_stall_min, -13 deg
   double stall_width_rad = 0.0349066;   ///< delta_s of the tanh separation function (2 deg);
-                                        ///< 0 = DeLaurier's hard switch. [0, 0.2]
-  double separation_lag_tf0 = 6.0;      ///< T_f0 (semichord times); 0 = no lag. [0, 50]
-  double min_speed_mps = 0.5;           ///< V_min floor of the reference speed, > 0
+                                        ///< 0 = DeLaurier's hard switch
+  double separation_lag_tf0 = 6.0;      ///< T_f0 (semichord times); 0 = no lag
+  double min_speed_mps = 0.5;           ///< V_min floor of the reference speed
 };
 
 /// Prescribed flapping motion delta_M(t) = A sin(2 pi f t) about the hinge axis at P2.
 struct FlappingKinematics {
-  double amplitude_rad = 0.0;  ///< A, (0, pi/2)
+  double amplitude_rad = 0.0;  ///< A
   double hinge_x_B_m = 0.0;    ///< P2 relative to P1 (the moment reference, the CG), body x
   double hinge_z_B_m = 0.0;    ///< P2 relative to P1, body z (down +)
 };
@@ -133,31 +133,31 @@ struct FlappingKinematics {
 /// Fuselage/vehicle mass properties (free flight, trim).
 struct BodyModel {
   bool present = false;          ///< false for a wind-tunnel rig without flight data
-  double mass_kg = 0.0;          ///< total vehicle mass including wings and tail, > 0
-  double pitch_inertia_kgm2 = 0.0;  ///< I_YB of the whole vehicle about P1, > 0
+  double mass_kg = 0.0;          ///< total vehicle mass including wings and tail
+  double pitch_inertia_kgm2 = 0.0;  ///< I_YB of the whole vehicle about P1
   double drag_area_m2 = 0.0;     ///< fuselage parasite drag C_D S (acts at P1 against the flight
-                                 ///< velocity), >= 0; 0 = none (the paper's Eq. 4 has none)
+                                 ///< velocity); 0 = none (the paper's Eq. 4 has none)
 };
 
 /// Horizontal tail, paper Eq. (3) with the incidence of aero-mst.md section 10.
 struct TailModel {
   bool present = false;
-  double area_m2 = 0.0;            ///< S_T, > 0
-  double aspect_ratio = 0.0;       ///< AR_T, > 0
-  double zero_lift_drag_coefficient = 0.0;  ///< C_D0,T, [0, 1]
-  double oswald_efficiency = 0.9;  ///< e, (0, 1]
-  double arm_m = 0.0;              ///< P1 to P4 (tail aerodynamic centre) along -x_B, > 0
+  double area_m2 = 0.0;            ///< S_T
+  double aspect_ratio = 0.0;       ///< AR_T
+  double zero_lift_drag_coefficient = 0.0;  ///< C_D0,T
+  double oswald_efficiency = 0.9;  ///< e
+  double arm_m = 0.0;              ///< P1 to P4 (tail aerodynamic centre) along -x_B
   double height_m = 0.0;           ///< P4 above the body x axis (along -z_B)
-  double mass_kg = 0.0;            ///< point mass at P4 (part of BodyModel::mass_kg), >= 0
-  double downwash_factor = 0.0;    ///< d eps_w / d theta_mean, [0, 1); 0 = no wing downwash
+  double mass_kg = 0.0;            ///< point mass at P4 (part of BodyModel::mass_kg), < it
+  double downwash_factor = 0.0;    ///< d eps_w / d theta_mean; 0 = no wing downwash
 };
 
 /// The default operating point of the vehicle file (CLI flags and study files override it).
 struct OperatingPoint {
-  double speed_mps = 0.0;       ///< U, flight or tunnel speed, > 0
-  double freq_hz = 0.0;         ///< f, flapping frequency, > 0
-  double theta_rad = 0.0;       ///< mean pitch attitude of the body, (-pi/2, pi/2)
-  double tail_angle_rad = 0.0;  ///< delta_T, tail elevation angle (paper sign), (-pi/2, pi/2)
+  double speed_mps = 0.0;       ///< U, flight or tunnel speed
+  double freq_hz = 0.0;         ///< f, flapping frequency
+  double theta_rad = 0.0;       ///< mean pitch attitude of the body
+  double tail_angle_rad = 0.0;  ///< delta_T, tail elevation angle (paper sign)
 };
 
 struct VehicleModel {

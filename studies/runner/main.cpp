@@ -3,6 +3,9 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cstdlib>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -13,10 +16,12 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/field_table.hpp"
 #include "core/model/frames.hpp"
 #include "core/model/invalid_model_error.hpp"
 #include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/commands/calibrate_command.hpp"
+#include "studies/runner/commands/keys_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/optimize_command.hpp"
 #include "studies/runner/commands/periodic_trim_command.hpp"
@@ -48,28 +53,57 @@ struct CliError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-void requireRange(const char* flag, double v, double lo, double hi, bool lo_open,
-                  const char* expected) {
-  const bool ok = std::isfinite(v) && (lo_open ? v > lo : v >= lo) && v < hi;
-  if (!ok)
-    throw CliError(std::string("command line: option ") + flag + ": expected " + expected +
-                   ", got " + std::to_string(v));
+/// "command line: option --freq (key simulate.freq_hz): expected E, got G".
+CliError optionError(const std::string& flag, std::string_view key, const std::string& expected,
+                     const std::string& got) {
+  return CliError("command line: option " + flag + " (key " + std::string(key) + "): expected " +
+                  expected + ", got " + got);
 }
 
-/// A grid axis from a command-line spec "A:B:N", every value checked like requireRange.
-GridAxis axisOption(const char* flag, const std::string& text, double lo, double hi,
-                    bool hi_closed, const char* expected) {
+/// The value of a command-line option that sets the field-table key `key` (file units): the
+/// whole text a number (kNumber) or an integer (kInteger) inside the key's range, the same range
+/// as in the files. Messages quote the text as given.
+double optionValue(const std::string& flag, std::string_view key, const std::string& text) {
+  const FieldSpec& f = field(key);
+  const std::string got = "'" + text + "'";
+  if (f.type == FieldType::kInteger) {
+    long long v = 0;
+    const char* end = text.data() + text.size();
+    const auto res = std::from_chars(text.data(), end, v);
+    if (text.empty() || res.ec != std::errc() || res.ptr != end)
+      throw optionError(flag, key, f.expected(), got);
+    if (!f.range.contains(static_cast<double>(v))) throw optionError(flag, key, f.expected(), got);
+    return static_cast<double>(v);
+  }
+  char* end = nullptr;
+  const double v = text.empty() || std::isspace(static_cast<unsigned char>(text[0]))
+                       ? std::nan("")
+                       : std::strtod(text.c_str(), &end);
+  if (end == nullptr || *end != '\0') throw optionError(flag, key, f.expected(), got);
+  if (!f.range.contains(v)) throw optionError(flag, key, f.expected(), got);
+  return v;
+}
+
+/// A grid axis from a command-line spec "A:B:N" for the [aeromap] key `key`, every value inside
+/// its range.
+GridAxis axisOption(const std::string& flag, std::string_view key, const std::string& text) {
+  const FieldSpec& f = field(key);
+  const std::string expected = std::string("A:B:N (") + trim::kGridSpecMeaning + "), " +
+                               f.range.describe("each value");
   trim::GridSpec spec;
   std::string reason;
   if (!trim::tryParseGridSpec(text, &spec, &reason))
-    throw CliError(std::string("command line: option ") + flag + ": expected A:B:N (" +
-                   trim::kGridSpecMeaning + "), got '" + text + "' (" + reason + ")");
+    throw optionError(flag, key, expected, "'" + text + "' (" + reason + ")");
   GridAxis axis = gridAxis(spec);
   for (const double v : axis.values)
-    if (!(std::isfinite(v) && v > lo && (hi_closed ? v <= hi : v < hi)))
-      throw CliError(std::string("command line: option ") + flag + ": expected values " +
-                     expected + ", got '" + text + "' (value " + formatShortest(v) + ")");
+    if (!f.range.contains(v))
+      throw optionError(flag, key, expected, "'" + text + "' (value " + displayNumber(v) + ")");
   return axis;
+}
+
+/// -j N: the "jobs" entry of the field table; 1 when not given.
+int jobsOption(const std::optional<std::string>& text) {
+  return text ? static_cast<int>(optionValue("-j", "jobs", *text)) : 1;
 }
 
 /// -o, --export-ccx and RUN_DIR: a name, never "" (which would silently mean the default).
@@ -176,8 +210,8 @@ int main(int argc, char** argv) {
   auto* sim = app.add_subcommand("simulate", "Simulate a vehicle file (tethered or free flight)");
   std::string sim_vehicle, sim_mode;
   std::optional<std::string> sim_out;
-  std::optional<double> sim_speed, sim_freq, sim_theta, sim_tail;
-  std::optional<int> sim_cycles;
+  // Values as text: checked against the field table (optionValue), quoted as given in messages.
+  std::optional<std::string> sim_speed, sim_freq, sim_theta, sim_tail, sim_cycles;
   sim->add_option("VEHICLE", sim_vehicle, "Vehicle file (TOML)")->required();
   sim->add_option("--mode", sim_mode, "tethered | free (default tethered)")
       ->check(CLI::IsMember({"tethered", "free"}));
@@ -193,13 +227,13 @@ int main(int argc, char** argv) {
   auto* run = app.add_subcommand("run", "Run one or more study files (kind given inside)");
   std::vector<std::string> run_files;
   std::optional<std::string> run_out;
-  int run_jobs = 1;
+  std::optional<std::string> run_jobs;
   run->add_option("STUDY", run_files, "Study files (TOML)")->required();
   run->add_option("-o,--output", run_out,
                   "Output folder (default results/<study name>); with several studies each goes "
                   "into DIR/<study name>")
       ->check(kNonEmptyPath);
-  run->add_option("-j,--jobs", run_jobs, "Worker threads")->check(CLI::Range(1, 1024));
+  run->add_option("-j,--jobs", run_jobs, "Worker threads");
 
   // plot
   auto* plot = app.add_subcommand("plot", "(Re)draw the figures of a finished run");
@@ -223,8 +257,7 @@ int main(int argc, char** argv) {
                  "tail angle (paper Fig. 5); resumable");
   std::string am_vehicle, am_speed, am_freq, am_theta, am_tail;
   std::optional<std::string> am_out;
-  std::optional<int> am_cycles;
-  int am_jobs = 1;
+  std::optional<std::string> am_cycles, am_jobs;
   am->add_option("VEHICLE", am_vehicle, "Vehicle file (TOML)")->required();
   am->add_option("--speed", am_speed, "Speeds U (m/s) A:B:N: N values from A to B inclusive")
       ->required();
@@ -234,7 +267,7 @@ int main(int argc, char** argv) {
                  "Tail elevation angles delta_T (deg) A:B:N (default: the vehicle's "
                  "operating-point tail angle)");
   am->add_option("--cycles", am_cycles, "Maximum flapping cycles per point (default 40)");
-  am->add_option("-j,--jobs", am_jobs, "Worker threads")->check(CLI::Range(1, 1024));
+  am->add_option("-j,--jobs", am_jobs, "Worker threads");
   am->add_option("-o,--output", am_out,
                  "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
                  "resumes from the journal there")
@@ -246,7 +279,8 @@ int main(int argc, char** argv) {
               "about the CG = 0) with Ceres; initial guess = the vehicle's operating point");
   std::string trim_vehicle, trim_unknowns;
   std::optional<std::string> trim_out;
-  std::optional<double> trim_freq, trim_theta, trim_speed, trim_tail;
+  std::string trim_freq;
+  std::optional<std::string> trim_theta, trim_speed, trim_tail;
   trim->add_option("VEHICLE", trim_vehicle, "Vehicle file (TOML) with a [body] section")
       ->required();
   trim->add_option("--freq", trim_freq,
@@ -289,14 +323,24 @@ int main(int argc, char** argv) {
                   "the vehicle trims, flies bounded and needs the least flapping power; resumable");
   std::string opt_study;
   std::optional<std::string> opt_out;
-  int opt_jobs = 1;
+  std::optional<std::string> opt_jobs;
   opt->add_option("STUDY", opt_study, "Study file (TOML) of kind \"optimize\"")->required();
   opt->add_option("-o,--output", opt_out,
                   "Output folder (default results/<study name>); an interrupted run resumes from "
                   "the journal there")
       ->check(kNonEmptyPath);
-  opt->add_option("-j,--jobs", opt_jobs, "Worker threads (over the starts of a multi-start run)")
-      ->check(CLI::Range(1, 1024));
+  opt->add_option("-j,--jobs", opt_jobs, "Worker threads (over the starts of a multi-start run)");
+
+  // keys
+  auto* keys = app.add_subcommand(
+      "keys", "Print every input key (vehicle files, study files, command line): unit, valid "
+              "range, default and meaning, from the one table every reader checks");
+  std::string keys_group;
+  bool keys_markdown = false;
+  keys->add_option("GROUP", keys_group,
+                   "vehicle | study | simulate | aeromap | trim | optimize | calibrate | sweep | "
+                   "sensitivity | cli (default: every group)");
+  keys->add_flag("--markdown", keys_markdown, "Markdown tables (the README's key reference)");
 
   // A mistyped subcommand: name the nearest one, as a mistyped key does.
   const std::vector<std::string> subcommands = subcommandNames(app);
@@ -321,31 +365,23 @@ int main(int argc, char** argv) {
       Study study = studyFromVehicle(sim_vehicle);
       if (!sim_mode.empty())
         study.simulate.mode = sim_mode == "free" ? FlightMode::kFree : FlightMode::kTethered;
-      if (sim_speed) {
-        requireRange("--speed", *sim_speed, 0.0, 1e3, true, "a speed in m/s > 0");
-        study.point.speed_mps = *sim_speed;
-      }
-      if (sim_freq) {
-        requireRange("--freq", *sim_freq, 0.0, 200.0, true, "a frequency in Hz in (0, 200]");
-        study.point.freq_hz = *sim_freq;
-      }
-      if (sim_theta) {
-        requireRange("--theta", *sim_theta, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
-        study.point.theta_rad = *sim_theta * kDegToRad;
-      }
-      if (sim_tail) {
-        requireRange("--tail", *sim_tail, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
-        study.point.tail_angle_rad = *sim_tail * kDegToRad;
-      }
-      if (sim_cycles) {
-        requireRange("--cycles", *sim_cycles, 1.0, 100001.0, false,
-                     "a whole number of cycles in [1, 100000]");
-        study.simulate.cycles = *sim_cycles;
-      }
+      if (sim_speed)
+        study.point.speed_mps = optionValue("--speed", "simulate.speed_mps", *sim_speed);
+      if (sim_freq) study.point.freq_hz = optionValue("--freq", "simulate.freq_hz", *sim_freq);
+      if (sim_theta)
+        study.point.theta_rad =
+            optionValue("--theta", "simulate.theta_deg", *sim_theta) * kDegToRad;
+      if (sim_tail)
+        study.point.tail_angle_rad =
+            optionValue("--tail", "simulate.tail_angle_deg", *sim_tail) * kDegToRad;
+      if (sim_cycles)
+        study.simulate.cycles =
+            static_cast<int>(optionValue("--cycles", "simulate.cycles", *sim_cycles));
       requireBodyForFreeFlight(study);
       return runStudyLocked(study, outputFolder(sim_out, study, false), 1);
     }
     if (run->parsed()) {
+      const int jobs = jobsOption(run_jobs);
       // Load (and validate) every study first, so a typo in the last one fails before any work.
       std::vector<Study> studies;
       for (const std::string& f : run_files) studies.push_back(loadStudyFile(f));
@@ -363,18 +399,17 @@ int main(int argc, char** argv) {
       for (const fs::path& out : outs) locks.push_back(std::make_unique<OutputFolderLock>(out));
       int rc = kExitOk;
       for (std::size_t i = 0; i < studies.size(); ++i) {
-        const int r = runStudy(studies[i], outs[i], run_jobs);
+        const int r = runStudy(studies[i], outs[i], jobs);
         if (r != kExitOk) rc = r;
       }
       return rc;
     }
     if (am->parsed()) {
-      GridAxis speed = axisOption("--speed", am_speed, 0.0, 1e3, false, "in m/s in (0, 1000)");
-      GridAxis freq = axisOption("--freq", am_freq, 0.0, 200.0, true, "in Hz in (0, 200]");
-      GridAxis theta = axisOption("--theta", am_theta, -90.0, 90.0, false, "in deg in (-90, 90)");
+      GridAxis speed = axisOption("--speed", "aeromap.speed_mps", am_speed);
+      GridAxis freq = axisOption("--freq", "aeromap.freq_hz", am_freq);
+      GridAxis theta = axisOption("--theta", "aeromap.theta_deg", am_theta);
       std::optional<GridAxis> tail;
-      if (!am_tail.empty())
-        tail = axisOption("--tail", am_tail, -90.0, 90.0, false, "in deg in (-90, 90)");
+      if (!am_tail.empty()) tail = axisOption("--tail", "aeromap.tail_angle_deg", am_tail);
       std::size_t points = speed.values.size() * freq.values.size() * theta.values.size();
       if (tail) points *= tail->values.size();
       if (points > trim::kMaxAeroMapPoints)
@@ -383,13 +418,11 @@ int main(int argc, char** argv) {
                        std::to_string(points));
       Study study = aeromapStudyFromVehicle(am_vehicle, std::move(speed), std::move(freq),
                                             std::move(theta), std::move(tail));
-      if (am_cycles) {
-        requireRange("--cycles", *am_cycles, 1.0, 100001.0, false,
-                     "a whole number of cycles in [1, 100000]");
-        study.aeromap.options.cycles = *am_cycles;
-      }
+      if (am_cycles)
+        study.aeromap.options.cycles =
+            static_cast<int>(optionValue("--cycles", "aeromap.cycles", *am_cycles));
       AeromapRunOptions opts;
-      opts.threads = am_jobs;
+      opts.threads = jobsOption(am_jobs);
       const fs::path out = outputFolder(am_out, study, false);
       const OutputFolderLock lock(out);
       return runAeromapStudy(study, out, opts);
@@ -404,20 +437,15 @@ int main(int argc, char** argv) {
       Study study = studyFromVehicle(trim_vehicle, StudyKind::kTrim);
       study.name += "_trim";
       TrimOptions& o = study.trim;
-      requireRange("--freq", *trim_freq, 0.0, 200.0, true, "a frequency in Hz in (0, 200]");
-      o.initial.freq_hz = *trim_freq;
-      if (trim_theta) {
-        requireRange("--theta", *trim_theta, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
-        o.initial.theta_rad = *trim_theta * kDegToRad;
-      }
-      if (trim_speed) {
-        requireRange("--speed", *trim_speed, 0.0, 1e3, true, "a speed in m/s > 0");
-        o.initial.speed_mps = *trim_speed;
-      }
-      if (trim_tail) {
-        requireRange("--tail", *trim_tail, -90.0, 90.0, true, "an angle in deg in (-90, 90)");
-        o.initial.tail_angle_rad = *trim_tail * kDegToRad;
-      }
+      o.initial.freq_hz = optionValue("--freq", "trim.freq_hz", trim_freq);
+      if (trim_theta)
+        o.initial.theta_rad =
+            optionValue("--theta", "trim.initial.theta_mean_deg", *trim_theta) * kDegToRad;
+      if (trim_speed)
+        o.initial.speed_mps = optionValue("--speed", "trim.initial.speed_mps", *trim_speed);
+      if (trim_tail)
+        o.initial.tail_angle_rad =
+            optionValue("--tail", "trim.initial.tail_angle_deg", *trim_tail) * kDegToRad;
       if (!trim_unknowns.empty()) {
         o.unknowns.clear();
         std::stringstream list(trim_unknowns);
@@ -462,7 +490,21 @@ int main(int argc, char** argv) {
         throw CliError("command line: " + opt_study +
                        ": expected a study of kind \"optimize\", got kind \"" +
                        std::string(toString(study.kind)) + "\" (run it with `ornithopter run`)");
-      return runStudyLocked(study, outputFolder(opt_out, study, false), opt_jobs);
+      return runStudyLocked(study, outputFolder(opt_out, study, false), jobsOption(opt_jobs));
+    }
+    if (keys->parsed()) {
+      const std::optional<std::string> text = keysText(keys_group, keys_markdown);
+      if (!text) {
+        std::vector<std::string> groups;
+        for (std::string_view g : fieldGroups()) groups.emplace_back(g);
+        const std::string near = closestMatch(keys_group, groups);
+        std::string list;
+        for (const std::string& g : groups) list += (list.empty() ? "" : ", ") + g;
+        throw CliError("command line: GROUP: expected one of " + list + ", got '" + keys_group +
+                       "'" + (near.empty() ? std::string() : " (did you mean '" + near + "'?)"));
+      }
+      std::cout << *text;
+      return kExitOk;
     }
     if (plot->parsed()) {
       const fs::path dir(plot_dir);

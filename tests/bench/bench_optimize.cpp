@@ -76,7 +76,6 @@ void evaluate(benchmark::State& state, const Case& c) {
     o.trim.initial.speed_mps = 17.22;
     o.trim.initial.tail_angle_rad = 37.93 * kDeg;
   }
-  o.validate = [](const VehicleModel& d) { studies::validateVehicle(d); };
   const DesignProblem p(v, space(v, c.flexible), o);
   std::vector<double> x = p.box().initial;
   if (c.near_optimum) x = {0.019346704082708735, 5.0, 0.2, 3.218850057541522e-4};

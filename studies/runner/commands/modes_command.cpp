@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/vehicle_validation.hpp"
 #include "core/structure/calculix_deck.hpp"
 #include "core/structure/modal_wing.hpp"
 #include "core/structure/wing_mesh.hpp"
@@ -39,12 +40,6 @@ const char* p3JointName(P3Joint j) {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-constexpr double kPi = 3.14159265358979323846;
-/// Largest mesh the command builds (estimated nodes); finer [wing.fe] element sizes are rejected
-/// as bad input rather than left to run out of memory in the eigen-solver.
-constexpr double kMaxEstimatedNodes = 200000.0;
-/// Nodes per (area / h^2) of the station-sweep mesh (EFW, h = 5 mm: 1859 nodes on 882 h^2).
-constexpr double kNodesPerCell = 2.2;
 /// Modes drawn in modes.png/svg.
 constexpr int kFigureModes = 6;
 
@@ -91,11 +86,6 @@ InputError elementSizeError(const Study& study, const std::string& expected,
     if (line >= 0) return InputError::wrongValue(displayPath(vehicle), line, key, expected, got);
   }
   return InputError::wrongValue(inputFile(study), 0, key, expected, got);
-}
-
-double planformArea_m2(const WingModel& w) {
-  const double rect = w.semispan_m * w.root_chord_m;
-  return w.planform == Planform::kQuarterEllipse ? 0.25 * kPi * rect : rect;
 }
 
 std::vector<double> toVector(const Eigen::VectorXd& v) {
@@ -307,19 +297,16 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   const VehicleModel& vehicle = study.vehicle;
   const WingFeSettings& fe = vehicle.wing.fe;
 
-  // Mesh size guard (bad input, exit 2): the estimate is within tens of % of the real count.
-  const double estimated_nodes =
-      kNodesPerCell * planformArea_m2(vehicle.wing) / (fe.element_size_m * fe.element_size_m);
-  if (estimated_nodes > kMaxEstimatedNodes) {
-    char got[96];
-    std::snprintf(got, sizeof got, "%.6g (about %.3g mesh nodes)", fe.element_size_m,
-                  estimated_nodes);
+  // Mesh size guard (bad input, exit 2), the limit of a flexible wing's mesh
+  // (core/model/vehicle_validation.hpp; the reader checks it only for flexible wings, this command
+  // meshes rigid ones too).
+  const double estimated_nodes = estimatedMeshNodes(vehicle.wing);
+  if (!(estimated_nodes <= kMaxWingMeshNodes))
     throw elementSizeError(study,
-                           "an element size giving at most " +
-                               std::to_string(static_cast<long>(kMaxEstimatedNodes)) +
+                           "an element size giving at most " + displayNumber(kMaxWingMeshNodes) +
                                " mesh nodes",
-                           got);
-  }
+                           displayNumber(fe.element_size_m) + " (about " +
+                               displayNumber(std::round(estimated_nodes)) + " mesh nodes)");
 
   structure::WingMesh mesh;
   try {

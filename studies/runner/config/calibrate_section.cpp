@@ -4,6 +4,8 @@
 
 namespace orni::studies {
 
+using orni::field;
+
 std::vector<std::string> calibrateSectionKeys() {
   return {"theta_mean_deg", "speed_mps", "tail_angle_deg", "freq_hz", "settled_cycles",
           "window_cycles",  "tolerance", "max_iterations", "variables"};
@@ -13,18 +15,22 @@ orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::Vehicl
   orni::CalibrationOptions o;
   const orni::OperatingPoint& op = vehicle.operating_point;
   o.target.theta_rad =
-      c.optionalDouble("theta_mean_deg", op.theta_rad * kRadToDeg, Range::open(-90.0, 90.0)) *
-      kDegToRad;
-  o.target.speed_mps = c.optionalDouble("speed_mps", op.speed_mps, Range::positive());
+      c.optionalDouble(field("calibrate.theta_mean_deg"), op.theta_rad * kRadToDeg) * kDegToRad;
+  o.target.speed_mps = c.optionalDouble(field("calibrate.speed_mps"), op.speed_mps);
   o.target.tail_angle_rad =
-      c.optionalDouble("tail_angle_deg", op.tail_angle_rad * kRadToDeg, Range::open(-90.0, 90.0)) *
+      c.optionalDouble(field("calibrate.tail_angle_deg"), op.tail_angle_rad * kRadToDeg) *
       kDegToRad;
-  o.target.freq_hz = c.optionalDouble("freq_hz", op.freq_hz, Range::openClosed(0.0, 200.0));
-  o.settled.cycles = c.optionalInt("settled_cycles", o.settled.cycles, 6, 10000);
+  o.target.freq_hz = c.optionalDouble(field("calibrate.freq_hz"), op.freq_hz);
+  o.settled.cycles = c.optionalInt(field("calibrate.settled_cycles"), o.settled.cycles);
   o.settled.window_cycles =
-      c.optionalInt("window_cycles", o.settled.cycles / 3, 1, o.settled.cycles - 1);
-  o.tolerance = c.optionalDouble("tolerance", o.tolerance, Range::positive());
-  o.max_iterations = c.optionalInt("max_iterations", o.max_iterations, 1, 200);
+      c.optionalInt(field("calibrate.window_cycles"), o.settled.cycles / 3);
+  if (o.settled.window_cycles > o.settled.cycles - 1)
+    throw c.valueError("window_cycles",
+                       "an integer in [1, " + std::to_string(o.settled.cycles - 1) +
+                           "] (below settled_cycles)",
+                       sourceText(*c.table().get("window_cycles")));
+  o.tolerance = c.optionalDouble(field("calibrate.tolerance"), o.tolerance);
+  o.max_iterations = c.optionalInt(field("calibrate.max_iterations"), o.max_iterations);
   std::vector<TableReader> vars =
       c.optionalTableArray("variables", {"key", "initial", "lower", "upper"});
   if (vars.empty() || vars.size() > 3)
@@ -41,14 +47,22 @@ orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::Vehicl
                          "\"" + key + "\"");
     for (const orni::CalibrationVariable& w : o.variables)
       if (w.parameter == v.parameter) throw t.valueError("key", "a key not listed before", key);
-    v.lower = t.requiredDouble("lower", Range::any());
-    v.upper = t.requiredDouble("upper", Range::any());
+    // Bounds and initial value inside the range of the key (SI = file units for these keys).
+    const orni::FieldSpec& spec = field(key);
+    const std::string in_key = " (the range of " + key + ")";
+    v.lower = t.requiredDouble("lower", spec.range, in_key);
+    v.upper = t.requiredDouble("upper", spec.range, in_key);
     if (!(v.lower < v.upper))
-      throw t.valueError("upper", "a number > lower = " + std::to_string(v.lower),
-                         std::to_string(v.upper));
-    v.initial = t.optionalDouble("initial", orni::valueOf(vehicle, v.parameter), Range::any());
+      throw t.valueError("upper", "a number > lower = " + orni::displayNumber(v.lower),
+                         sourceText(*t.table().get("upper")));
+    v.initial = t.has("initial") ? t.requiredDouble("initial", spec.range, in_key)
+                                 : (t.take("initial"), orni::valueOf(vehicle, v.parameter));
     if (!(v.initial >= v.lower && v.initial <= v.upper))
-      throw t.valueError("initial", "a number in [lower, upper]", std::to_string(v.initial));
+      throw t.valueError("initial",
+                         "a number in [lower, upper] = [" + orni::displayNumber(v.lower) + ", " +
+                             orni::displayNumber(v.upper) + "]",
+                         t.has("initial") ? sourceText(*t.table().get("initial"))
+                                          : orni::displayNumber(v.initial) + " (the vehicle's)");
     t.finish();
     o.variables.push_back(v);
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "core/model/vehicle_validation.hpp"
 #include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
@@ -16,6 +17,7 @@ namespace orni::studies {
 
 namespace {
 
+using orni::field;
 using orni::opt::Algorithm;
 using orni::opt::DesignField;
 using orni::opt::DesignObjective;
@@ -89,18 +91,31 @@ DesignVariable readVariable(TableReader& v, const orni::VehicleModel& vehicle,
       var.fields.push_back(d);
     }
   }
-  const bool positive = std::any_of(var.fields.begin(), var.fields.end(),
-                                    [](const DesignField& d) { return d.positive(); });
-  const Range range = positive ? Range::positive() : Range::any();
-  var.lower = v.requiredDouble("lower", range);
-  var.upper = v.requiredDouble("upper", range);
+  // Bounds and initial value inside the range of every field the variable sets (the field
+  // table's entry of its vehicle key; SI = file units for every design field).
+  auto inFieldRanges = [&](const char* key, double value) {
+    for (const DesignField& d : var.fields) {
+      const orni::FieldSpec& spec = d.spec();
+      if (!spec.range.contains(value))
+        throw v.valueError(key,
+                           spec.range.describe() + " (the range of " + d.name +
+                               (d.name == spec.key ? "" : ", " + std::string(spec.key)) + ")",
+                           sourceText(*v.table().get(key)));
+    }
+    return value;
+  };
+  var.lower = inFieldRanges("lower", v.requiredDouble("lower", Range::any()));
+  var.upper = inFieldRanges("upper", v.requiredDouble("upper", Range::any()));
   if (!(var.lower < var.upper))
-    throw v.valueError("upper", "an upper bound > lower = " + formatNumber(var.lower),
-                       formatNumber(var.upper));
-  const std::string interval = "[" + formatNumber(var.lower) + ", " + formatNumber(var.upper) + "]";
-  if (std::optional<double> initial = v.maybeDouble("initial", range)) {
+    throw v.valueError("upper", "an upper bound > lower = " + orni::displayNumber(var.lower),
+                       orni::displayNumber(var.upper));
+  const std::string interval =
+      "[" + orni::displayNumber(var.lower) + ", " + orni::displayNumber(var.upper) + "]";
+  if (std::optional<double> initial = v.maybeDouble("initial", Range::any())) {
+    inFieldRanges("initial", *initial);
     if (!(*initial >= var.lower && *initial <= var.upper))
-      throw v.valueError("initial", "an initial value inside " + interval, formatNumber(*initial));
+      throw v.valueError("initial", "an initial value inside " + interval,
+                         sourceText(*v.table().get("initial")));
     var.initial = *initial;
   } else {
     const double value = orni::opt::fieldValue(vehicle, var.fields.front());
@@ -108,12 +123,13 @@ DesignVariable readVariable(TableReader& v, const orni::VehicleModel& vehicle,
       if (orni::opt::fieldValue(vehicle, d) != value)
         throw v.missingError("initial",
                              "an initial value: the vehicle's values of the group differ (" +
-                                 var.fields.front().name + " = " + formatNumber(value) + ", " +
-                                 d.name + " = " + formatNumber(orni::opt::fieldValue(vehicle, d)) +
+                                 var.fields.front().name + " = " + orni::displayNumber(value) +
+                                 ", " + d.name + " = " +
+                                 orni::displayNumber(orni::opt::fieldValue(vehicle, d)) +
                                  ")");
     if (!(value >= var.lower && value <= var.upper))
       throw v.valueError("lower", "bounds " + interval + " containing the vehicle's value " +
-                                      formatNumber(value) + " (or an initial value)",
+                                      orni::displayNumber(value) + " (or an initial value)",
                          interval);
     var.initial = value;
   }
@@ -138,22 +154,25 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
 
   o.algorithm = r.optionalEnum("algorithm", o.algorithm, kAlgorithms);
   p.objective = r.optionalEnum("objective", p.objective, kObjectives);
-  o.max_evaluations = r.optionalInt("max_evaluations", o.max_evaluations, 2, 1000000);
-  o.starts = r.optionalInt("starts", o.starts, 1, 1000);
-  o.seed = r.optionalInt("seed", static_cast<int>(o.seed), 0, std::numeric_limits<int>::max());
+  o.max_evaluations = r.optionalInt(field("optimize.max_evaluations"), o.max_evaluations);
+  o.starts = r.optionalInt(field("optimize.starts"), o.starts);
+  o.seed = r.optionalInt(field("optimize.seed"), static_cast<int>(o.seed));
   const double freq_hz =
-      r.optionalDouble("freq_hz", vehicle.operating_point.freq_hz, Range::openClosed(0.0, 200.0));
-  o.initial_step = r.optionalDouble("initial_step", o.initial_step, Range::openClosed(0.0, 1.0));
-  o.xtol = r.optionalDouble("xtol", o.xtol, Range::closedOpen(0.0, 1.0));
-  o.ftol_rel = r.optionalDouble("ftol_rel", o.ftol_rel, Range::closedOpen(0.0, 1.0));
-  o.constraint_tol =
-      r.optionalDouble("constraint_tol", o.constraint_tol, Range::closedOpen(0.0, 1.0));
+      r.optionalDouble(field("optimize.freq_hz"), vehicle.operating_point.freq_hz);
+  o.initial_step = r.optionalDouble(field("optimize.initial_step"), o.initial_step);
+  o.xtol = r.optionalDouble(field("optimize.xtol"), o.xtol);
+  o.ftol_rel = r.optionalDouble(field("optimize.ftol_rel"), o.ftol_rel);
+  o.constraint_tol = r.optionalDouble(field("optimize.constraint_tol"), o.constraint_tol);
   p.warm_start = r.optionalBool("warm_start", p.warm_start);
   rejectUnlessIsres(r, "polish_evaluations", o.algorithm);
   rejectUnlessIsres(r, "population", o.algorithm);
-  o.polish_evaluations =
-      r.optionalInt("polish_evaluations", o.polish_evaluations, 0, o.max_evaluations - 1);
-  o.population = r.optionalInt("population", o.population, 0, 100000);
+  o.polish_evaluations = r.optionalInt(field("optimize.polish_evaluations"), o.polish_evaluations);
+  if (o.polish_evaluations > o.max_evaluations - 1)
+    throw r.valueError("polish_evaluations",
+                       "an integer in [0, " + std::to_string(o.max_evaluations - 1) +
+                           "] (below max_evaluations)",
+                       sourceText(*r.table().get("polish_evaluations")));
+  o.population = r.optionalInt(field("optimize.population"), o.population);
   if (o.population == 1)
     throw r.valueError("population", "0 (automatic) or a size in [2, 100000]", "1");
 
@@ -175,27 +194,26 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
   // The initial design must be a valid vehicle.
   std::vector<double> x0;
   for (const DesignVariable& v : s.space.variables) x0.push_back(v.initial);
-  try {
-    validateVehicle(orni::opt::applyDesign(vehicle, s.space, x0));
-  } catch (const InputError& e) {
-    throw r.valueError("variables", "initial values that form a valid vehicle", e.what());
-  }
-  p.validate = [](const orni::VehicleModel& v) { validateVehicle(v); };
+  const std::vector<orni::ModelProblem> problems =
+      orni::vehicleProblems(orni::opt::applyDesign(vehicle, s.space, x0));
+  if (!problems.empty())
+    throw r.valueError("variables", "initial values that form a valid vehicle",
+                       "a design with " + problems.front().message());
 
   // Constraints.
   if (std::optional<TableReader> c = r.optionalTable("constraints", kConstraintKeys)) {
     orni::opt::DesignConstraints& k = p.constraints;
     k.bounded = c->optionalBool("bounded", k.bounded);
-    if (auto d = c->maybeDouble("pitch_amplitude_max_deg", Range::closedOpen(0.0, 90.0)))
+    if (auto d = c->maybeDouble(field("optimize.constraints.pitch_amplitude_max_deg")))
       k.pitch_amplitude_max_rad = *d * orni::kDegToRad;
-    k.tip_deflection_max_m =
-        c->optionalDouble("tip_deflection_max_m", k.tip_deflection_max_m, Range::nonNegative());
-    k.structural_mass_max_kg =
-        c->optionalDouble("structural_mass_max_kg", k.structural_mass_max_kg, Range::nonNegative());
+    k.tip_deflection_max_m = c->optionalDouble(field("optimize.constraints.tip_deflection_max_m"),
+                                               k.tip_deflection_max_m);
+    k.structural_mass_max_kg = c->optionalDouble(
+        field("optimize.constraints.structural_mass_max_kg"), k.structural_mass_max_kg);
     if (k.tip_deflection_max_m > 0.0 && vehicle.wing.structure != orni::StructureLevel::kFlexible)
       throw c->valueError("tip_deflection_max_m",
                           "0 (off) for a rigid wing (set wing.structure = \"flexible\")",
-                          formatNumber(k.tip_deflection_max_m));
+                          sourceText(*c->table().get("tip_deflection_max_m")));
     c->finish();
   }
 
@@ -204,10 +222,10 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
     throw InputError::unknownKey(r.fileOf("weights"), r.lineOf("weights"), r.keyPath("weights"),
                                  "[optimize.weights] is only used with objective = \"weighted\"");
   if (std::optional<TableReader> w = r.optionalTable("weights", kWeightKeys)) {
-    p.weights.power_per_W = w->optionalDouble("power_per_W", p.weights.power_per_W,
-                                              Range::nonNegative());
+    p.weights.power_per_W =
+        w->optionalDouble(field("optimize.weights.power_per_W"), p.weights.power_per_W);
     p.weights.pitch_amplitude_per_deg = w->optionalDouble(
-        "pitch_amplitude_per_deg", p.weights.pitch_amplitude_per_deg, Range::nonNegative());
+        field("optimize.weights.pitch_amplitude_per_deg"), p.weights.pitch_amplitude_per_deg);
     if (p.weights.power_per_W + p.weights.pitch_amplitude_per_deg <= 0.0)
       throw w->valueError("power_per_W", "weights with a positive sum", "both 0");
     w->finish();

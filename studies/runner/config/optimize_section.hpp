@@ -1,7 +1,9 @@
 // The [optimize] section of a study file (kind = "optimize") <-> OptimizeSettings.
 //
 // Private to orni_studies (includes toml++ through toml_access.hpp). Keys (file units in the
-// suffixes; every design field is in m, m^2 or dimensionless, so its bounds are SI):
+// suffixes; every design field is in m, m^2 or dimensionless, so its bounds are SI); the valid
+// range of each is its entry in the field table (core/model/field_table.cpp, `ornithopter keys
+// optimize`), the ranges below are its copy for reading:
 //
 //   algorithm          "cobyla" (default) | "bobyqa" (AUGLAG + BOBYQA, >= 2 variables) | "isres"
 //                      (global ISRES, then a COBYLA polish)
@@ -10,8 +12,8 @@
 //   max_evaluations    evaluations per start, every stage included, [2, 1000000]; default 100
 //   starts             multi-start count [1, 1000]; default 1 (start 0 = the initial design,
 //                      others Halton points in the box); spread over `-j` threads
-//   seed               [0, 2147483647]; default 1 (start k uses seed + k)
-//   freq_hz            flapping frequency of the trim (0, 200]; default the vehicle's operating
+//   seed               [0, 1000000000]; default 1 (start k uses seed + k)
+//   freq_hz            flapping frequency of the trim [0.01, 200]; default the vehicle's operating
 //                      point (the initial guess when freq_hz is a trim unknown)
 //   initial_step       first step as a fraction of each variable's range (0, 1]; default 0.1
 //   xtol               stop when a step is below this fraction of every range [0, 1); 1e-4
@@ -26,16 +28,16 @@
 //                        fields  (optional) array of design field names set together (a group);
 //                                see optimize/design_space.hpp ("tail.area_m2",
 //                                "wing.members.STIF*.diameter_m", ...)
-//                        lower, upper (required) bounds, lower < upper (> 0 for sections, areas,
-//                                aspect ratio and arm)
+//                        lower, upper (required) bounds, lower < upper, inside the range of
+//                                every field the variable sets (tail.arm_m's for "tail.arm_m")
 //                        initial (optional) start value; default the vehicle's value (required
 //                                when the fields of a group differ)
 //   [optimize.constraints] bounded (bool, default true: free flight bounded, paper Eq. 5),
 //                      pitch_amplitude_max_deg, tip_deflection_max_m (flexible wing),
-//                      structural_mass_max_kg (both wings): limits >= 0, 0 = off (default).
+//                      structural_mass_max_kg (both wings): limits, 0 = off (default).
 //                      The trim constraint is always on.
 //   [optimize.weights] (only with objective = "weighted") power_per_W (default 1),
-//                      pitch_amplitude_per_deg (default 0), >= 0, not both 0
+//                      pitch_amplitude_per_deg (default 0), not both 0
 //   [optimize.trim]    every [trim] key except freq_hz (trim_section.hpp): unknowns, initial,
 //                      bounds, tolerances of the trim of each evaluation
 //

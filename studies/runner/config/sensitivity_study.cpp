@@ -87,11 +87,17 @@ std::vector<ParameterInput> readParameters(TableReader& section) {
         throw r.valueError(
             "key", "a key that no other parameter moves",
             describeNode(key_node) + " (also sensitivity.parameters[" + std::to_string(j) + "])");
-    p.low = r.requiredDouble("low", Range::any());
-    p.high = r.requiredDouble("high", Range::any());
+    // Both ends inside the key's field-table range (checked here, at the parameter; an unknown
+    // key is left to the point's loader, which names it).
+    const orni::FieldSpec* spec = orni::findField(p.key);
+    const bool numeric = spec && spec->type == orni::FieldType::kNumber;
+    const Range range = numeric ? spec->range : Range::any();
+    const std::string note = numeric ? " (the range of " + p.key + ")" : std::string();
+    p.low = r.requiredDouble("low", range, note);
+    p.high = r.requiredDouble("high", range, note);
     if (!(p.low < p.high))
-      throw r.valueError("high", "a number > low (" + formatNumber(p.low) + ")",
-                         formatNumber(p.high));
+      throw r.valueError("high", "a number > low (" + orni::displayNumber(p.low) + ")",
+                         orni::displayNumber(p.high));
     r.finish();
     inputs.push_back({std::move(p), std::move(r)});
   }
@@ -111,7 +117,7 @@ std::vector<ParameterInput> readParameters(TableReader& section) {
                        describeNode(*r.table().get("key")) + " (" + body + ")");
   const double value = std::string(end) == "low" ? in.parameter.low : in.parameter.high;
   throw r.valueError(end, "a value valid for \"" + in.parameter.key + "\"",
-                     formatNumber(value) + " (" + body + ")");
+                     orni::displayNumber(value) + " (" + body + ")");
 }
 
 /// Text of the [trim] section and vehicle of a point (or the base) as study.resolved.toml writes
@@ -189,7 +195,8 @@ Study loadSensitivityStudy(toml::table& root, const std::string& text, const fs:
   std::vector<ParameterInput> inputs = readParameters(section);
   SensitivitySettings settings;
   settings.free_flight_cycles =
-      section.optionalInt("free_flight_cycles", settings.free_flight_cycles, 1, 100000);
+      section.optionalInt(orni::field("sensitivity.free_flight_cycles"),
+                          settings.free_flight_cycles);
   if (std::optional<TableReader> free = section.optionalTable("free", freeFlightKeys()))
     readFreeFlightTable(*free, settings.free);
   {

@@ -24,6 +24,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
+using orni::field;
+
 constexpr std::array<std::pair<std::string_view, StudyKind>, 8> kKinds = {{
     {"simulate", StudyKind::kSimulate},
     {"modes", StudyKind::kModes},
@@ -93,12 +95,13 @@ void mergeOverride(toml::table& into, toml::table& from) {
   throw section.valueError(key, expected, n ? describeNode(*n) : std::string("the default"));
 }
 
-/// The integrator tolerances shared by [simulate] and [aeromap].
-void readTolerances(TableReader& r, SimulationOptions& o) {
-  o.rel_tol = r.optionalDouble("rel_tol", o.rel_tol, Range::any());
-  o.abs_tol = r.optionalDouble("abs_tol", o.abs_tol, Range::any());
-  o.separation_abs_tol = r.optionalDouble("separation_abs_tol", o.separation_abs_tol, Range::any());
-  o.steady_tol = r.optionalDouble("steady_tol", o.steady_tol, Range::any());
+/// The integrator tolerances shared by [simulate] and [aeromap] (`section`).
+void readTolerances(TableReader& r, SimulationOptions& o, const std::string& section) {
+  o.rel_tol = r.optionalDouble(field(section + ".rel_tol"), o.rel_tol);
+  o.abs_tol = r.optionalDouble(field(section + ".abs_tol"), o.abs_tol);
+  o.separation_abs_tol =
+      r.optionalDouble(field(section + ".separation_abs_tol"), o.separation_abs_tol);
+  o.steady_tol = r.optionalDouble(field(section + ".steady_tol"), o.steady_tol);
 }
 
 /// The value d in file units with d * si_per_file_unit == si exactly, when one exists.
@@ -113,36 +116,33 @@ const std::vector<std::string> kFreeKeys = {
     "bound_speed_mps", "bound_W_mps",        "bound_theta_deg",   "bound_Q_degps",
     "bound_h_m",       "transient_fraction", "divergence_ratio", "initial_altitude_m"};
 
-/// [simulate.free]: the bounded-norm bounds and the free-flight run settings, in the ranges of
-/// SimulationOptions::IsValid.
+/// [simulate.free] (and [sensitivity.free]): the bounded-norm bounds and the free-flight run
+/// settings, in the ranges of the field table's simulate.free.* entries.
 void readFreeFlight(TableReader& r, FreeFlightOptions& f) {
   FreeFlightBounds& b = f.bounds;
-  b.U_mps = r.optionalDouble("bound_speed_mps", b.U_mps, Range::positive());
-  b.W_mps = r.optionalDouble("bound_W_mps", b.W_mps, Range::positive());
-  if (auto d = r.maybeDouble("bound_theta_deg", Range::positive()))
+  b.U_mps = r.optionalDouble(field("simulate.free.bound_speed_mps"), b.U_mps);
+  b.W_mps = r.optionalDouble(field("simulate.free.bound_W_mps"), b.W_mps);
+  if (auto d = r.maybeDouble(field("simulate.free.bound_theta_deg")))
     b.theta_rad = *d * orni::kDegToRad;
-  if (auto d = r.maybeDouble("bound_Q_degps", Range::nonNegative()))
+  if (auto d = r.maybeDouble(field("simulate.free.bound_Q_degps")))
     b.Q_radps = *d * orni::kDegToRad;
-  b.h_m = r.optionalDouble("bound_h_m", b.h_m, Range::positive());
+  b.h_m = r.optionalDouble(field("simulate.free.bound_h_m"), b.h_m);
   f.transient_fraction =
-      r.optionalDouble("transient_fraction", f.transient_fraction, Range::closed(0.0, 0.9));
-  f.divergence_ratio = r.optionalDouble(
-      "divergence_ratio", f.divergence_ratio,
-      Range{1.0, std::numeric_limits<double>::infinity(), true, false});
+      r.optionalDouble(field("simulate.free.transient_fraction"), f.transient_fraction);
+  f.divergence_ratio =
+      r.optionalDouble(field("simulate.free.divergence_ratio"), f.divergence_ratio);
   f.initial_altitude_m =
-      r.optionalDouble("initial_altitude_m", f.initial_altitude_m, Range::positive());
+      r.optionalDouble(field("simulate.free.initial_altitude_m"), f.initial_altitude_m);
   r.finish();
 }
 
 void readAeromap(TableReader& am, Study& study) {
   AeromapSettings& a = study.aeromap;
-  constexpr int kIntMin = std::numeric_limits<int>::min();
-  constexpr int kIntMax = std::numeric_limits<int>::max();
-  a.speed_mps = readGridAxis(am, "speed_mps", Range::open(0.0, 1000.0));
-  a.freq_hz = readGridAxis(am, "freq_hz", Range::openClosed(0.0, 200.0));
-  a.theta_deg = readGridAxis(am, "theta_deg", Range::open(-90.0, 90.0));
+  a.speed_mps = readGridAxis(am, "speed_mps", field("aeromap.speed_mps").range);
+  a.freq_hz = readGridAxis(am, "freq_hz", field("aeromap.freq_hz").range);
+  a.theta_deg = readGridAxis(am, "theta_deg", field("aeromap.theta_deg").range);
   if (am.has("tail_angle_deg")) {
-    a.tail_angle_deg = readGridAxis(am, "tail_angle_deg", Range::open(-90.0, 90.0));
+    a.tail_angle_deg = readGridAxis(am, "tail_angle_deg", field("aeromap.tail_angle_deg").range);
   } else {
     a.tail_angle_deg.values = {fileUnits(study.point.tail_angle_rad, orni::kDegToRad)};
   }
@@ -156,8 +156,8 @@ void readAeromap(TableReader& am, Study& study) {
   }
   a.wing_only = am.optionalBool("wing_only", a.wing_only);
   SimulationOptions& o = a.options;
-  o.cycles = am.optionalInt("cycles", o.cycles, kIntMin, kIntMax);
-  readTolerances(am, o);
+  o.cycles = am.optionalInt(field("aeromap.cycles"), o.cycles);
+  readTolerances(am, o, "aeromap");
   std::string why;
   if (!o.IsValid(&why)) throwInvalidOptions(am, why);
   am.finish();
@@ -165,11 +165,13 @@ void readAeromap(TableReader& am, Study& study) {
 
 }  // namespace
 
-GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range) {
+GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range,
+                      std::string_view note) {
   const bool bounded = std::isfinite(range.lo) || std::isfinite(range.hi);
   const std::string expected = std::string("a grid spec \"A:B:N\" (") + trim::kGridSpecMeaning +
                                "), an array of values or a number" +
-                               (bounded ? ", " + range.describe("each value") : std::string());
+                               (bounded ? ", " + range.describe("each value") : std::string()) +
+                               std::string(note);
   const toml::node* n = r.take(key);
   if (!n) throw r.missingError(key, expected);
   GridAxis axis;
@@ -181,12 +183,27 @@ GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range) 
     axis = gridAxis(spec);
     for (const double v : axis.values)
       if (!range.contains(v))
-        throw r.valueError(key, expected, describeNode(*n) + " (value " + formatNumber(v) + ")");
-  } else if (n->is_array()) {
-    axis.values = r.requiredNumberArray(key, 0, range);
-    if (axis.values.empty()) throw r.valueError(key, expected, "an empty array");
+        throw r.valueError(key, expected,
+                           describeNode(*n) + " (value " + orni::displayNumber(v) + ")");
+  } else if (const toml::array* a = n->as_array()) {
+    if (a->empty()) throw r.valueError(key, expected, "an empty array");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::node& e = *a->get(i);
+      const std::optional<double> v = e.is_number() ? e.value<double>() : std::nullopt;
+      if (!v) throw r.valueError(key, expected, describeNode(e) + " at index " + std::to_string(i));
+      if (!range.contains(*v))
+        throw InputError::wrongValue(r.fileOf(key),
+                                     e.source().begin.line > 0
+                                         ? static_cast<int>(e.source().begin.line)
+                                         : r.lineOf(key),
+                                     r.keyPath(key), expected,
+                                     sourceText(e) + " at index " + std::to_string(i));
+      axis.values.push_back(*v);
+    }
   } else if (n->is_number()) {
-    axis.values = {r.requiredDouble(key, range)};
+    const std::optional<double> v = n->value<double>();
+    if (!v || !range.contains(*v)) throw r.valueError(key, expected, sourceText(*n));
+    axis.values = {*v};
   } else {
     throw r.valueError(key, expected, describeNode(*n));
   }
@@ -333,8 +350,6 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
                        "samples_per_cycle", "history_every", "wing_only", "at_trim", "free"})) {
     SimulationOptions& o = study.simulate;
     OperatingPoint& p = study.point;
-    constexpr int kIntMin = std::numeric_limits<int>::min();
-    constexpr int kIntMax = std::numeric_limits<int>::max();
     o.mode = sim->optionalEnum("mode", o.mode, kModes);
     if (sim->has("free") && o.mode != FlightMode::kFree)
       throw InputError::unknownKey(sim->fileOf("free"), sim->lineOf("free"), sim->keyPath("free"),
@@ -342,17 +357,16 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
                                    "[simulate] is mode = \"tethered\"");
     if (std::optional<TableReader> free = sim->optionalTable("free", kFreeKeys))
       readFreeFlight(*free, o.free);
-    p.speed_mps = sim->optionalDouble("speed_mps", p.speed_mps, Range::positive());
-    p.freq_hz = sim->optionalDouble("freq_hz", p.freq_hz, Range::openClosed(0.0, 200.0));
-    if (auto d = sim->maybeDouble("theta_deg", Range::open(-90.0, 90.0)))
-      p.theta_rad = *d * orni::kDegToRad;
-    if (auto d = sim->maybeDouble("tail_angle_deg", Range::open(-90.0, 90.0)))
+    p.speed_mps = sim->optionalDouble(field("simulate.speed_mps"), p.speed_mps);
+    p.freq_hz = sim->optionalDouble(field("simulate.freq_hz"), p.freq_hz);
+    if (auto d = sim->maybeDouble(field("simulate.theta_deg"))) p.theta_rad = *d * orni::kDegToRad;
+    if (auto d = sim->maybeDouble(field("simulate.tail_angle_deg")))
       p.tail_angle_rad = *d * orni::kDegToRad;
-    o.cycles = sim->optionalInt("cycles", o.cycles, kIntMin, kIntMax);
-    readTolerances(*sim, o);
+    o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
+    readTolerances(*sim, o, "simulate");
     o.samples_per_cycle =
-        sim->optionalInt("samples_per_cycle", o.samples_per_cycle, kIntMin, kIntMax);
-    study.history_every = sim->optionalInt("history_every", study.history_every, 1, 1000000);
+        sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);
+    study.history_every = sim->optionalInt(field("simulate.history_every"), study.history_every);
     study.wing_only = sim->optionalBool("wing_only", study.wing_only);
     study.at_trim = sim->optionalBool("at_trim", study.at_trim);
     if (study.at_trim && !study.vehicle.body.present)

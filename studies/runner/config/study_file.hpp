@@ -23,12 +23,13 @@
 //            constrained flight test and the limit-cycle metrics use every sample).
 //   [simulate.free] (optional, only with mode = "free": rejected for a tethered [simulate], where
 //            it would be silently ignored) the free-flight settings (FreeFlightOptions):
-//              bound_speed_mps, bound_W_mps, bound_theta_deg, bound_h_m  (> 0) and
-//              bound_Q_degps (>= 0; 0 = automatic 2 pi f bound_theta): the bounds R_i of the
+//              bound_speed_mps, bound_W_mps, bound_theta_deg, bound_h_m and
+//              bound_Q_degps (0 = automatic 2 pi f bound_theta): the bounds R_i of the
 //                bounded-norm criterion (paper Eq. 5) on the deviations of U, W, theta, Q, h;
-//              transient_fraction (share of the cycles before the verdict, [0, 0.9]),
-//              divergence_ratio (> 1; stop as diverged above this scaled norm),
-//              initial_altitude_m (> 0; ground contact at h = 0).
+//              transient_fraction (share of the cycles before the verdict),
+//              divergence_ratio (stop as diverged above this scaled norm),
+//              initial_altitude_m (ground contact at h = 0).
+//            Every key's range: the field table (`ornithopter keys simulate`).
 //            Defaults: FreeFlightOptions (simulation_options.hpp).
 //   [aeromap] (required for kind = "aeromap", rejected otherwise) the grid of an aero map (paper
 //            Fig. 5). Axes speed_mps, freq_hz, theta_deg (required) and tail_angle_deg (optional,

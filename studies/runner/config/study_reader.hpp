@@ -34,8 +34,10 @@ Study loadSweepStudy(toml::table& root, const std::string& text,
 void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out);
 
 /// A grid axis at `key`: "A:B:N", an array of values or one number, every value inside `range`
-/// (an [aeromap] axis, a sweep axis's values). Throws InputError.
-GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range);
+/// (an [aeromap] axis, a sweep axis's values; `note` follows the range in messages). Throws
+/// InputError at the value (an array's element at its own line).
+GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range,
+                      std::string_view note = {});
 
 /// Writes an axis back: a spec as "A:B:N", a list as an array.
 void writeGridAxis(TomlWriter& out, std::string_view key, const GridAxis& axis);

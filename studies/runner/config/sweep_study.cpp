@@ -117,7 +117,22 @@ std::vector<AxisInput> readAxes(TableReader& sweep, StudyKind run) {
         throw r.valueError(
             "key", "a key that no other axis sweeps",
             describeNode(key_node) + " (also sweep.axes[" + std::to_string(j) + "])");
-    axis.values = readGridAxis(r, "values", Range::any());
+    // The values of a known key are checked against its field-table entry here, at the axis
+    // (the same range as in the file, [override] or the run's section); an unknown key is left to
+    // the point's loader, which names it.
+    const orni::FieldSpec* spec = orni::findField(axis.key);
+    const bool numeric = spec && (spec->type == orni::FieldType::kNumber ||
+                                  spec->type == orni::FieldType::kInteger);
+    axis.values = numeric ? readGridAxis(r, "values", spec->range,
+                                         " (the range of " + axis.key + ")")
+                          : readGridAxis(r, "values", Range::any());
+    if (numeric && spec->type == orni::FieldType::kInteger)
+      for (const double v : axis.values.values)
+        if (std::floor(v) != v)
+          throw r.valueError("values",
+                             "whole numbers in " + spec->range.interval() + " (" + axis.key +
+                                 " is an integer)",
+                             orni::displayNumber(v));
     r.finish();
     axes.push_back({std::move(axis), std::move(r)});
   }
@@ -194,7 +209,7 @@ std::string bodyOf(const InputError& e) {
       at.source().begin.line > 0 ? static_cast<int>(at.source().begin.line) : r.lineOf("values");
   throw InputError::wrongValue(r.fileOf("values"), line, r.keyPath("values"),
                                "values valid for \"" + in.axis.key + "\"",
-                               formatNumber(in.axis.values.values[j]) + " (" + body + ")");
+                               orni::displayNumber(in.axis.values.values[j]) + " (" + body + ")");
 }
 
 /// Text of the analysis section and vehicle of a point (or the base) as study.resolved.toml
@@ -384,7 +399,7 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
       }
       std::string list;
       for (std::size_t k = 0; k < axes.size(); ++k)
-        list += (k ? ", " : "") + axes[k].axis.key + " = " + formatNumber(*values[k]);
+        list += (k ? ", " : "") + axes[k].axis.key + " = " + orni::displayNumber(*values[k]);
       throw sweep.valueError("axes", "axes whose every combination is a valid study",
                              "point " + std::to_string(index) + " (" + list + "): " + bodyOf(e));
     }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <map>
+#include <mutex>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
@@ -50,8 +52,77 @@ std::string readTomlFileText(const fs::path& file) {
   return text;
 }
 
+namespace {
+
+/// The texts of the documents parsed in this process, by display path (the latest of each), for
+/// sourceText. Read only to write an error message.
+struct SourceTexts {
+  std::mutex mutex;
+  std::map<std::string, std::string> texts;
+};
+
+SourceTexts& sourceTexts() {
+  static SourceTexts registry;
+  return registry;
+}
+
+}  // namespace
+
+std::string sourceText(const toml::node& node) {
+  const toml::source_region& src = node.source();
+  std::string line_text;
+  if (src.path && src.begin.line > 0 && src.begin.line == src.end.line &&
+      src.end.column > src.begin.column) {
+    SourceTexts& registry = sourceTexts();
+    const std::lock_guard<std::mutex> lock(registry.mutex);
+    const auto it = registry.texts.find(*src.path);
+    if (it != registry.texts.end()) {
+      std::size_t start = 0;
+      for (toml::source_index l = 1; l < src.begin.line && start != std::string::npos; ++l) {
+        start = it->second.find('\n', start);
+        if (start != std::string::npos) ++start;
+      }
+      if (start != std::string::npos) {
+        const std::size_t end = it->second.find('\n', start);
+        line_text = it->second.substr(start, end == std::string::npos ? end : end - start);
+      }
+    }
+  }
+  const std::size_t from = src.begin.column - 1, count = src.end.column - src.begin.column;
+  if (from + count <= line_text.size()) {
+    const std::string text = line_text.substr(from, count);
+    // Only a value that reads back as this node's value (the line may have changed since).
+    if (const auto* f = node.as_floating_point()) {
+      std::string plain;
+      for (const char c : text)
+        if (c != '_') plain += c;
+      try {
+        const toml::table t = toml::parse("v = " + plain);
+        const auto v = t.get("v") ? t.get("v")->value<double>() : std::nullopt;
+        if (v && (*v == f->get() || (std::isnan(*v) && std::isnan(f->get())))) return text;
+      } catch (const toml::parse_error&) {
+      }
+    } else if (const auto* i = node.as_integer()) {
+      std::string plain;
+      for (const char c : text)
+        if (c != '_' && c != '+') plain += c;
+      if (plain == std::to_string(i->get())) return text;
+      if (text.size() > 2 && text[0] == '0' && (text[1] == 'x' || text[1] == 'o' || text[1] == 'b'))
+        return text + " (" + std::to_string(i->get()) + ")";
+    }
+  }
+  if (const auto* f = node.as_floating_point()) return orni::displayNumber(f->get());
+  if (const auto* i = node.as_integer()) return std::to_string(i->get());
+  return describeNode(node);
+}
+
 toml::table parseTomlText(std::string_view text, const fs::path& file) {
   const std::string name = displayPath(file);
+  {
+    SourceTexts& registry = sourceTexts();
+    const std::lock_guard<std::mutex> lock(registry.mutex);
+    registry.texts[name] = std::string(text);
+  }
   try {
     return toml::parse(text, std::string(name));
   } catch (const toml::parse_error& e) {
@@ -229,21 +300,6 @@ std::string closestMatch(std::string_view word, const std::vector<std::string>& 
 // ------------------------------------------------------------------------------------------------
 // Range
 
-bool Range::contains(double x) const {
-  const bool lo_ok = lo_open ? x > lo : x >= lo;
-  const bool hi_ok = hi_open ? x < hi : x <= hi;
-  return lo_ok && hi_ok;
-}
-
-std::string Range::describe(const std::string& noun) const {
-  const bool has_lo = std::isfinite(lo), has_hi = std::isfinite(hi);
-  if (!has_lo && !has_hi) return noun;
-  if (has_lo && !has_hi) return noun + (lo_open ? " > " : " >= ") + formatNumber(lo);
-  if (!has_lo) return noun + (hi_open ? " < " : " <= ") + formatNumber(hi);
-  return noun + " in " + (lo_open ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) +
-         (hi_open ? ")" : "]");
-}
-
 // ------------------------------------------------------------------------------------------------
 // TableReader
 
@@ -352,25 +408,28 @@ void TableReader::finish() const {
   }
 }
 
-double TableReader::numberValue(std::string_view key, const toml::node& node,
-                                const Range& range) const {
+double TableReader::numberValue(std::string_view key, const toml::node& node, const Range& range,
+                                std::string_view note) const {
+  const std::string n(note);
   double v = 0.0;
   if (const auto* i = node.as_integer()) {
     v = static_cast<double>(i->get());
   } else if (const auto* f = node.as_floating_point()) {
     v = f->get();
   } else {
-    throw valueError(key, range.describe(), describeNode(node));
+    throw valueError(key, range.describe() + n, describeNode(node));
   }
-  if (!std::isfinite(v)) throw valueError(key, range.describe("a finite number"), formatNumber(v));
-  if (!range.contains(v)) throw valueError(key, range.describe(), formatNumber(v));
+  if (!std::isfinite(v))
+    throw valueError(key, range.describe("a finite number") + n, sourceText(node));
+  if (!range.contains(v)) throw valueError(key, range.describe() + n, sourceText(node));
   return v;
 }
 
-double TableReader::requiredDouble(std::string_view key, const Range& range) {
+double TableReader::requiredDouble(std::string_view key, const Range& range,
+                                   std::string_view note) {
   const toml::node* n = take(key);
-  if (!n) throw missingError(key, range.describe());
-  return numberValue(key, *n, range);
+  if (!n) throw missingError(key, range.describe() + std::string(note));
+  return numberValue(key, *n, range, note);
 }
 
 double TableReader::optionalDouble(std::string_view key, double fallback, const Range& range) {
@@ -390,8 +449,22 @@ int TableReader::intValue(std::string_view key, const toml::node& node, int lo, 
   const auto* i = node.as_integer();
   if (!i) throw valueError(key, expected, describeNode(node));
   const std::int64_t v = i->get();
-  if (v < lo || v > hi) throw valueError(key, expected, std::to_string(v));
+  if (v < lo || v > hi) throw valueError(key, expected, sourceText(node));
   return static_cast<int>(v);
+}
+
+std::string_view TableReader::localKey(const orni::FieldSpec& f) {
+  const std::size_t dot = f.key.rfind('.');
+  return dot == std::string_view::npos ? f.key : f.key.substr(dot + 1);
+}
+
+int TableReader::requiredInt(const orni::FieldSpec& f) {
+  return requiredInt(localKey(f), static_cast<int>(f.range.lo), static_cast<int>(f.range.hi));
+}
+
+int TableReader::optionalInt(const orni::FieldSpec& f, int fallback) {
+  return optionalInt(localKey(f), fallback, static_cast<int>(f.range.lo),
+                     static_cast<int>(f.range.hi));
 }
 
 int TableReader::requiredInt(std::string_view key, int lo, int hi) {
@@ -481,7 +554,7 @@ std::vector<double> TableReader::requiredNumberArray(std::string_view key, std::
       throw valueError(key, expected, describeNode(e) + " at index " + std::to_string(i));
     }
     if (!std::isfinite(v) || !each.contains(v))
-      throw valueError(key, expected, formatNumber(v) + " at index " + std::to_string(i));
+      throw valueError(key, expected, sourceText(e) + " at index " + std::to_string(i));
     values.push_back(v);
   }
   return values;

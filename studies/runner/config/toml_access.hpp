@@ -24,6 +24,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/field_table.hpp"
+#include "core/model/value_range.hpp"
 #include "studies/runner/config/input_error.hpp"
 
 namespace orni::studies {
@@ -59,27 +61,13 @@ std::size_t editDistance(std::string_view a, std::string_view b);
 /// The candidate closest to `word` when it is close enough to be a likely typo, else "".
 std::string closestMatch(std::string_view word, const std::vector<std::string>& candidates);
 
-/// Allowed interval of a number, in file units; bounds may be open or closed or absent.
-struct Range {
-  double lo = -std::numeric_limits<double>::infinity();
-  double hi = std::numeric_limits<double>::infinity();
-  bool lo_open = false;
-  bool hi_open = false;
+/// Allowed interval of a number, in file units (core/model/value_range.hpp).
+using Range = orni::ValueRange;
 
-  static Range any() { return {}; }
-  static Range positive() { return {0.0, std::numeric_limits<double>::infinity(), true, false}; }
-  static Range nonNegative() {
-    return {0.0, std::numeric_limits<double>::infinity(), false, false};
-  }
-  static Range open(double a, double b) { return {a, b, true, true}; }         ///< (a, b)
-  static Range closed(double a, double b) { return {a, b, false, false}; }     ///< [a, b]
-  static Range openClosed(double a, double b) { return {a, b, true, false}; }  ///< (a, b]
-  static Range closedOpen(double a, double b) { return {a, b, false, true}; }  ///< [a, b)
-
-  bool contains(double x) const;
-  /// "a number", "a number > 0", "a number in (0, 90)", ...; `noun` replaces "a number".
-  std::string describe(const std::string& noun = "a number") const;
-};
+/// The text of a value node as it stands in its file ("1e308", "6e-4", "-1_000.5"), when the file
+/// was parsed by parseTomlText/parseTomlFile in this process; otherwise the shortest text that
+/// reads back as its value (displayNumber) or describeNode.
+std::string sourceText(const toml::node& node);
 
 /// Message context shared by the readers of one document.
 struct ReadContext {
@@ -106,12 +94,28 @@ class TableReader {
   /// Keys present in the table, in table order.
   std::vector<std::string> presentKeys() const;
 
-  double requiredDouble(std::string_view key, const Range& range);
+  /// `note` follows the range in messages (" (the range of tail.arm_m)").
+  double requiredDouble(std::string_view key, const Range& range, std::string_view note = {});
   double optionalDouble(std::string_view key, double fallback, const Range& range);
   std::optional<double> maybeDouble(std::string_view key, const Range& range);
 
   int requiredInt(std::string_view key, int lo, int hi);
   int optionalInt(std::string_view key, int fallback, int lo, int hi);
+
+  /// Numbers and integers of a field-table entry (core/model/field_table.hpp): the key is the
+  /// entry's last part ("semispan_m" of "wing.semispan_m"), the range the entry's (file units);
+  /// a value outside it is an InputError naming the range and the value as written.
+  double requiredDouble(const orni::FieldSpec& f) { return requiredDouble(localKey(f), f.range); }
+  double optionalDouble(const orni::FieldSpec& f, double fallback) {
+    return optionalDouble(localKey(f), fallback, f.range);
+  }
+  std::optional<double> maybeDouble(const orni::FieldSpec& f) {
+    return maybeDouble(localKey(f), f.range);
+  }
+  int requiredInt(const orni::FieldSpec& f);
+  int optionalInt(const orni::FieldSpec& f, int fallback);
+  /// The entry's last part, the key inside its table.
+  static std::string_view localKey(const orni::FieldSpec& f);
 
   bool requiredBool(std::string_view key);
   bool optionalBool(std::string_view key, bool fallback);
@@ -136,6 +140,10 @@ class TableReader {
   /// Array of exactly `size` numbers (any size when 0), each inside `each`.
   std::vector<double> requiredNumberArray(std::string_view key, std::size_t size,
                                           const Range& each);
+  /// The pair of a kPair entry ([a, b], each inside the entry's range).
+  std::vector<double> requiredPair(const orni::FieldSpec& f) {
+    return requiredNumberArray(localKey(f), 2, f.range);
+  }
 
   TableReader requiredTable(std::string_view key, std::vector<std::string> allowed);
   std::optional<TableReader> optionalTable(std::string_view key, std::vector<std::string> allowed);
@@ -173,7 +181,8 @@ class TableReader {
   const toml::node* nodeOf(std::string_view key) const;
   const toml::node& locator(std::string_view key) const;
   std::string childPath(std::string_view key) const;
-  double numberValue(std::string_view key, const toml::node& node, const Range& range) const;
+  double numberValue(std::string_view key, const toml::node& node, const Range& range,
+                     std::string_view note = {}) const;
   int intValue(std::string_view key, const toml::node& node, int lo, int hi) const;
 
   const toml::table* table_;

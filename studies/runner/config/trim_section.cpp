@@ -28,19 +28,20 @@ std::string quotedList(const std::vector<std::string>& names) {
   return s;
 }
 
-/// The file-unit range of an unknown's values (initial guesses and bounds).
-Range unknownRange(TrimUnknown u) {
-  switch (u) {
-    case TrimUnknown::kThetaMean:
-    case TrimUnknown::kTailAngle: return Range::open(-90.0, 90.0);
-    case TrimUnknown::kSpeed: return Range::positive();
-    case TrimUnknown::kFreq: return Range::openClosed(0.0, 200.0);
-  }
-  return Range::any();
+using orni::field;
+
+/// The field-table entry of an unknown's initial value ("trim.initial.speed_mps", or
+/// "trim.freq_hz" for the frequency) and of its bounds ("trim.bounds.speed_mps").
+const orni::FieldSpec& initialField(TrimUnknown u) {
+  if (u == TrimUnknown::kFreq) return field("trim.freq_hz");
+  return field(std::string("trim.initial.") + orni::trimUnknownName(u));
+}
+const orni::FieldSpec& boundsField(TrimUnknown u) {
+  return field(std::string("trim.bounds.") + orni::trimUnknownName(u));
 }
 
 std::string intervalText(double lo, double hi) {
-  return "[" + formatNumber(lo) + ", " + formatNumber(hi) + "]";
+  return "[" + orni::displayNumber(lo) + ", " + orni::displayNumber(hi) + "]";
 }
 
 /// File-unit value that converts back to exactly `si` (see TomlWriter::scaled).
@@ -141,8 +142,7 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
                                  "method is \"two_stage\"");
   }
 
-  o.initial.freq_hz =
-      trim.optionalDouble("freq_hz", o.initial.freq_hz, unknownRange(TrimUnknown::kFreq));
+  o.initial.freq_hz = trim.optionalDouble(field("trim.freq_hz"), o.initial.freq_hz);
   o.unknowns = readUnknowns(trim);
 
   // Initial guess (and fixed values) of theta, U and delta_T; the frequency is freq_hz.
@@ -150,7 +150,7 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
       trim.optionalTable("initial", {"theta_mean_deg", "speed_mps", "tail_angle_deg"});
   if (initial) {
     for (TrimUnknown u : {TrimUnknown::kThetaMean, TrimUnknown::kSpeed, TrimUnknown::kTailAngle}) {
-      if (auto v = initial->maybeDouble(orni::trimUnknownName(u), unknownRange(u)))
+      if (auto v = initial->maybeDouble(initialField(u)))
         orni::setUnknownValue(&o.initial, u, *v * orni::trimUnknownScale(u));
     }
     initial->finish();
@@ -166,7 +166,7 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
         bounds->take(name);
         continue;
       }
-      const std::vector<double> b = bounds->requiredNumberArray(name, 2, unknownRange(u));
+      const std::vector<double> b = bounds->requiredPair(boundsField(u));
       if (!(b[0] < b[1]))
         throw bounds->valueError(name, "[lower, upper] with lower < upper",
                                  intervalText(b[0], b[1]));
@@ -175,7 +175,7 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
       if (!(o.fd_steps[i] <= 0.25 * (b[1] - b[0]) * scale))
         throw bounds->valueError(name,
                                  "an interval at least four finite-difference steps wide (" +
-                                     formatNumber(4.0 * o.fd_steps[i] / scale) + " " +
+                                     orni::displayNumber(4.0 * o.fd_steps[i] / scale) + " " +
                                      orni::trimUnknownUnit(u) + ")",
                                  intervalText(b[0], b[1]));
       o.bounds[i] = TrimBounds{b[0] * scale, b[1] * scale};
@@ -191,7 +191,7 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
     const double v = orni::unknownValue(o.initial, u);
     if (v >= b.lower && v <= b.upper) continue;
     const std::string interval = intervalText(fileValue(b.lower, scale), fileValue(b.upper, scale));
-    const std::string value = formatNumber(fileValue(v, scale));
+    const std::string value = orni::displayNumber(fileValue(v, scale));
     if (u == TrimUnknown::kFreq && trim.has("freq_hz"))
       throw trim.valueError("freq_hz", "an initial frequency inside bounds " + interval, value);
     if (initial && initial->has(name))
@@ -207,18 +207,16 @@ orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& v
                           value + " (the vehicle's operating point)");
   }
 
-  o.max_iterations = trim.optionalInt("max_iterations", o.max_iterations, 1, 1000);
-  o.residual_tol = trim.optionalDouble("residual_tol", o.residual_tol, Range::openClosed(0.0, 0.1));
-  o.function_tol = trim.optionalDouble("function_tol", o.function_tol, Range::open(0.0, 1.0));
-  o.simulation.rel_tol =
-      trim.optionalDouble("rel_tol", o.simulation.rel_tol, Range::openClosed(0.0, 1e-2));
-  o.simulation.steady_tol =
-      trim.optionalDouble("steady_tol", o.simulation.steady_tol, Range::openClosed(0.0, 0.1));
-  o.simulation.cycles = trim.optionalInt("max_cycles", o.simulation.cycles, 1, 100000);
-  o.derivative_cycles = trim.optionalInt("derivative_cycles", o.derivative_cycles, 1, 1000);
-  if (!periodic) {
+  o.max_iterations = trim.optionalInt(field("trim.max_iterations"), o.max_iterations);
+  o.residual_tol = trim.optionalDouble(field("trim.residual_tol"), o.residual_tol);
+  o.function_tol = trim.optionalDouble(field("trim.function_tol"), o.function_tol);
+  o.simulation.rel_tol = trim.optionalDouble(field("trim.rel_tol"), o.simulation.rel_tol);
+  o.simulation.steady_tol = trim.optionalDouble(field("trim.steady_tol"), o.simulation.steady_tol);
+  o.simulation.cycles = trim.optionalInt(field("trim.max_cycles"), o.simulation.cycles);
+  o.derivative_cycles = trim.optionalInt(field("trim.derivative_cycles"), o.derivative_cycles);
+  if (!periodic) {  // two-stage keys; with method = "periodic" they were rejected above
     o.refine_in_free_flight = trim.optionalBool("refine_in_free_flight", o.refine_in_free_flight);
-    o.refine_cycles = trim.optionalInt("refine_cycles", o.refine_cycles, 6, 10000);
+    o.refine_cycles = trim.optionalInt(field("trim.refine_cycles"), o.refine_cycles);
   }
   trim.finish();
 

@@ -1,9 +1,10 @@
 // The [trim] section of a study file (architecture.md 5) <-> orni::TrimOptions.
 //
 // Private to orni_studies (includes toml++ through toml_access.hpp). Keys (all optional; file
-// units in the suffixes, converted to SI here):
+// units in the suffixes, converted to SI here; each valid range is the key's entry in the field
+// table, core/model/field_table.cpp, `ornithopter keys trim`, copied here for reading):
 //
-//   freq_hz           flapping frequency (0, 200]: fixed, or the initial guess when "freq_hz" is an
+//   freq_hz           flapping frequency [0.01, 200]: fixed, or the initial guess when "freq_hz" is an
 //                     unknown; default the vehicle's operating point
 //   unknowns          array of 1-3 distinct names from "theta_mean_deg", "speed_mps",
 //                     "tail_angle_deg", "freq_hz"; default the first three (3 = square solve,
@@ -13,13 +14,13 @@
 //                     operating point
 //   bounds            table { <unknown name> = [lower, upper] } with lower < upper, per unknown;
 //                     defaults theta_mean_deg [-10, 40], speed_mps [2, 30], tail_angle_deg
-//                     [-30, 45], freq_hz [1, 40]; angles inside (-90, 90), speed and frequency > 0
+//                     [-30, 45], freq_hz [1, 40]; inside the ranges of the unknowns
 //   max_iterations    Ceres iterations [1, 1000], default 50
-//   residual_tol      equilibrium tolerance (0, 0.1] as a fraction of the weight: max(|FV - W|,
+//   residual_tol      equilibrium tolerance [1e-12, 0.1] as a fraction of the weight: max(|FV - W|,
 //                     |FH|, |M| / c_mean) <= residual_tol * W, default 1e-4
-//   function_tol      Ceres function tolerance (0, 1), default 1e-12
-//   rel_tol           integrator relative tolerance of every periodic run (0, 1e-2], default 1e-6
-//   steady_tol        periodic steady-state tolerance of the residual runs (0, 0.1], default 1e-5
+//   function_tol      Ceres function tolerance [1e-20, 1), default 1e-12
+//   rel_tol           integrator relative tolerance of every periodic run [1e-12, 0.01], default 1e-6
+//   steady_tol        periodic steady-state tolerance of the residual runs [1e-12, 0.1], default 1e-5
 //   max_cycles        cycle limit of a residual run [1, 100000], default 40
 //   derivative_cycles cycles of each finite-difference run [1, 1000], default 3
 //   refine_in_free_flight  refine the Eq. (4) trim to level settled free flight (default true;

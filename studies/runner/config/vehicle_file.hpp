@@ -42,9 +42,4 @@ void writeVehicleToml(const orni::VehicleModel& vehicle, TomlWriter& out,
 /// The complete vehicle as a stand-alone vehicle-file document.
 std::string vehicleToToml(const orni::VehicleModel& vehicle);
 
-/// Checks a vehicle built in code (e.g. a design of the optimiser) against every rule of the
-/// vehicle files by writing and re-reading it (vehicleToToml, parseVehicleTable). Throws InputError
-/// (file "design vehicle", the key at fault) when it is not a valid vehicle.
-void validateVehicle(const orni::VehicleModel& vehicle);
-
 }  // namespace orni::studies

@@ -57,7 +57,6 @@ variables = [
   EXPECT_EQ(o.problem.objective, opt::DesignObjective::kPower);
   EXPECT_TRUE(o.problem.constraints.bounded);
   EXPECT_TRUE(o.problem.warm_start);
-  EXPECT_TRUE(static_cast<bool>(o.problem.validate));
   EXPECT_EQ(o.problem.trim.initial.freq_hz, 6.0);
   ASSERT_EQ(o.space.size(), 2);
   EXPECT_EQ(o.space.variables[0].initial, 0.007);  // the vehicle's value
@@ -160,7 +159,8 @@ TEST_F(ConfigOptimizeSection, ErrorsNameFileLineAndKey) {
       {"[optimize]\nvariables = [{ name = \"tail.area_m2\", lower = 0.01, upper = 0.004 }]\n",
        "optimize.variables[0].upper", 4, "an upper bound > lower"},
       {"[optimize]\nvariables = [{ name = \"tail.area_m2\", lower = 0.0, upper = 0.01 }]\n",
-       "optimize.variables[0].lower", 4, "a number > 0"},
+       "optimize.variables[0].lower", 4,
+       "expected a number in [1e-6, 100] (the range of tail.area_m2), got 0.0"},
       {"[optimize]\nvariables = [{ name = \"tail.area_m2\", lower = 0.008, upper = 0.01 }]\n",
        "optimize.variables[0].lower", 4, "containing the vehicle's value 0.007"},
       {"[optimize]\nvariables = [{ name = \"tail.area_m2\", lower = 0.004, upper = 0.01, "

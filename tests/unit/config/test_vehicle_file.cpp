@@ -307,10 +307,11 @@ TEST(ConfigTomlAccess, EditDistanceSuggestions) {
 }
 
 TEST(ConfigTomlAccess, RangeDescriptions) {
-  EXPECT_EQ(Range::positive().describe(), "a number > 0");
+  EXPECT_EQ(Range::openClosed(0, 200).describe(), "a number in (0, 200]");
   EXPECT_EQ(Range::open(0, 90).describe(), "a number in (0, 90)");
   EXPECT_EQ(Range::closedOpen(0, 1).describe(), "a number in [0, 1)");
-  EXPECT_EQ(Range::nonNegative().describe(), "a number >= 0");
+  EXPECT_EQ(Range::closed(1e-6, 1e5).describe(), "a number in [1e-6, 100000]");
+  EXPECT_FALSE(Range::closed(0, 1).contains(std::nan("")));
   EXPECT_TRUE(Range::open(0, 90).contains(45));
   EXPECT_FALSE(Range::open(0, 90).contains(90));
   EXPECT_TRUE(Range::closed(0, 1).contains(1));
@@ -360,13 +361,15 @@ TEST(ConfigVehicleMessages, MinimalVehicleLoads) { EXPECT_EQ(errorOf(kMinimal), 
 
 TEST(ConfigVehicleMessages, Formats) {
   EXPECT_EQ(errorOf(replaced("semispan_m = 0.27", "semispan_m = -1")),
-            "mem.toml:4: key 'wing.semispan_m': expected a number > 0, got -1");
+            "mem.toml:4: key 'wing.semispan_m': expected a number in [0.005, 20], got -1");
   EXPECT_EQ(errorOf(replaced("semispan_m = 0.27", "semispan_m = \"wide\"")),
-            "mem.toml:4: key 'wing.semispan_m': expected a number > 0, got a string \"wide\"");
+            "mem.toml:4: key 'wing.semispan_m': expected a number in [0.005, 20], got a string "
+            "\"wide\"");
   EXPECT_EQ(errorOf(replaced("semispan_m = 0.27", "semispn_m = 0.27")),
             "mem.toml:4: unknown key 'wing.semispn_m' (did you mean 'semispan_m'?)");
   EXPECT_EQ(errorOf(replaced("root_chord_m = 0.1\n", "")),
-            "mem.toml:2: missing required key 'wing.root_chord_m' (expected a number > 0)");
+            "mem.toml:2: missing required key 'wing.root_chord_m' (expected a number in "
+            "[0.002, 10])");
   EXPECT_EQ(errorOf(replaced("strips = 10", "strips = 1000")),
             "mem.toml:6: key 'wing.strips': expected an integer in [1, 500], got 1000");
   EXPECT_EQ(errorOf(replaced("strips = 10", "strips = 10.0")),
@@ -375,7 +378,8 @@ TEST(ConfigVehicleMessages, Formats) {
             "mem.toml:3: key 'wing.planform': expected one of \"rectangular\" or "
             "\"quarter_ellipse\", got a string \"rectangle\" (did you mean \"rectangular\"?)");
   EXPECT_EQ(errorOf(replaced("root_chord_m = 0.1", "root_chord_m = -inf")),
-            "mem.toml:5: key 'wing.root_chord_m': expected a finite number > 0, got -inf");
+            "mem.toml:5: key 'wing.root_chord_m': expected a finite number in [0.002, 10], "
+            "got -inf");
   EXPECT_EQ(errorOf(replaced("material = \"FILM\"", "material = \"FOIL\"")),
             "mem.toml:8: key 'wing.skin.material': expected the name of a [materials.NAME] table "
             "(\"FILM\"), got an unknown material \"FOIL\"");
@@ -398,15 +402,16 @@ TEST(ConfigVehicleMessages, WingFeFormats) {
             "mem.toml:11: key 'wing.fe.inertial_stiffness': expected one of \"both\", "
             "\"softening_only\" or \"none\", got a string \"softening\"");
   EXPECT_EQ(errorOf(withFe("element_size_m = 0.0\n")),
-            "mem.toml:11: key 'wing.fe.element_size_m': expected a number in (0, 0.27], got 0");
+            "mem.toml:11: key 'wing.fe.element_size_m': expected a number in [0.001, 20], got 0");
   EXPECT_EQ(errorOf(withFe("element_size_m = 0.3\n")),
-            "mem.toml:11: key 'wing.fe.element_size_m': expected a number in (0, 0.27], got 0.3");
+            "mem.toml:11: key 'wing.fe.element_size_m': expected a number in [0.001, 0.27] (at "
+            "most wing.semispan_m), got 0.3");
   EXPECT_EQ(errorOf(withFe("modes = 201\n")),
             "mem.toml:11: key 'wing.fe.modes': expected an integer in [1, 200], got 201");
   EXPECT_EQ(errorOf(withFe("modes = 12.0\n")),
             "mem.toml:11: key 'wing.fe.modes': expected an integer in [1, 200], got a float 12.0");
   EXPECT_EQ(errorOf(withFe("cutoff_hz = -1\n")),
-            "mem.toml:11: key 'wing.fe.cutoff_hz': expected a number >= 0, got -1");
+            "mem.toml:11: key 'wing.fe.cutoff_hz': expected a number in [0, 100000], got -1");
   EXPECT_EQ(errorOf(withFe("damping_ratio = 1\n")),
             "mem.toml:11: key 'wing.fe.damping_ratio': expected a number in [0, 1), got 1");
   EXPECT_EQ(errorOf(withFe("p3_cross_axis = \"norml\"\n")),
