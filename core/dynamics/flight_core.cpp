@@ -12,15 +12,15 @@ namespace orni {
 namespace {
 
 /// The vehicle, checked (core/model/vehicle_validation.hpp) before anything is built from it.
-const VehicleModel& checked(const VehicleModel& v) {
-  requireValidVehicle(v);
+const VehicleModel& checked(const VehicleModel& v, FlightCoreModel::Checks checks) {
+  if (checks == FlightCoreModel::Checks::kRequired) requireValidVehicle(v);
   return v;
 }
 
 }  // namespace
 
-FlightCoreModel::FlightCoreModel(const VehicleModel& v)
-    : vehicle(checked(v)), strips(makeStrips(v.wing)), wing_mass(computeWingInertia(v)) {
+FlightCoreModel::FlightCoreModel(const VehicleModel& v, Checks checks)
+    : vehicle(checked(v, checks)), strips(makeStrips(v.wing)), wing_mass(computeWingInertia(v)) {
   strip_geometry.reserve(strips.size());
   double area_half = 0.0;
   for (const Strip& s : strips) {

@@ -67,7 +67,15 @@ struct FlightCoreModel {
   /// The flexible wing (structure = "flexible"): modes, strip modal data; null for rigid.
   std::shared_ptr<const FlexibleWingModel> flexible;
 
-  explicit FlightCoreModel(const VehicleModel& v);
+  /// Whether the constructor runs core's model checks (core/model/vehicle_validation.hpp).
+  enum class Checks {
+    kRequired,  ///< every vehicle of the program: InvalidModelError outside the field table's
+                ///< ranges and rules
+    kSkippedForLimitTests,  ///< analytic-limit tests only (a wing 1000 times stiffer than any
+                            ///< material, massless wings, no air): vehicles outside the physical
+                            ///< ranges on purpose
+  };
+  explicit FlightCoreModel(const VehicleModel& v, Checks checks = Checks::kRequired);
   int aeroStateCount() const {
     return aero_states_per_strip * static_cast<int>(strips.size());
   }

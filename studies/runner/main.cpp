@@ -53,11 +53,11 @@ struct CliError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// "command line: option --freq (key simulate.freq_hz): expected E, got G".
+/// "command line: option --freq: expected E (key simulate.freq_hz), got G".
 CliError optionError(const std::string& flag, std::string_view key, const std::string& expected,
                      const std::string& got) {
-  return CliError("command line: option " + flag + " (key " + std::string(key) + "): expected " +
-                  expected + ", got " + got);
+  return CliError("command line: option " + flag + ": expected " + expected + " (key " +
+                  std::string(key) + "), got " + got);
 }
 
 /// The value of a command-line option that sets the field-table key `key` (file units): the

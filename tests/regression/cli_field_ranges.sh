@@ -29,26 +29,26 @@ expect2() {
 }
 
 # Defect 8: the range printed is the range checked, the value as given.
-expect2 "--freq 250" "option --freq (key simulate.freq_hz): expected a number in [0.01, 200], got '250'" \
+expect2 "--freq 250" "option --freq: expected a number in [0.01, 200] (key simulate.freq_hz), got '250'" \
   simulate "$rfw" --freq 250
-expect2 "--speed 1000" "option --speed (key simulate.speed_mps): expected a number in [0.001, 100], got '1000'" \
+expect2 "--speed 1000" "option --speed: expected a number in [0.001, 100] (key simulate.speed_mps), got '1000'" \
   simulate "$rfw" --speed 1000
 expect2 "--speed 1e6" "got '1e6'" simulate "$rfw" --speed 1e6
-expect2 "--speed fast" "expected a number in [0.001, 100], got 'fast'" simulate "$rfw" --speed fast
-expect2 "--theta 90" "(key simulate.theta_deg): expected a number in (-90, 90), got '90'" \
+expect2 "--speed fast" "expected a number in [0.001, 100] (key simulate.speed_mps), got 'fast'" simulate "$rfw" --speed fast
+expect2 "--theta 90" "expected a number in (-90, 90) (key simulate.theta_deg), got '90'" \
   simulate "$rfw" --theta 90
-expect2 "--cycles 0" "option --cycles (key simulate.cycles): expected an integer in [1, 100000], got '0'" \
+expect2 "--cycles 0" "option --cycles: expected an integer in [1, 100000] (key simulate.cycles), got '0'" \
   simulate "$rfw" --cycles 0
-expect2 "--cycles 1.5" "expected an integer in [1, 100000], got '1.5'" simulate "$rfw" --cycles 1.5
-expect2 "trim --freq 0" "option --freq (key trim.freq_hz): expected a number in [0.01, 200], got '0'" \
+expect2 "--cycles 1.5" "(key simulate.cycles), got '1.5'" simulate "$rfw" --cycles 1.5
+expect2 "trim --freq 0" "option --freq: expected a number in [0.01, 200] (key trim.freq_hz), got '0'" \
   trim "$efw" --freq 0
-expect2 "trim --speed 1e6" "(key trim.initial.speed_mps): expected a number in [0.001, 100]" \
+expect2 "trim --speed 1e6" "expected a number in [0.001, 100] (key trim.initial.speed_mps), got '1e6'" \
   trim "$efw" --freq 12 --speed 1e6
-expect2 "aeromap --speed 0:1e6:3" "(key aeromap.speed_mps): expected A:B:N" \
+expect2 "aeromap --speed 0:1e6:3" "option --speed: expected A:B:N" \
   aeromap "$rfw" --speed 0:1e6:3 --freq 4:4:1 --theta 0:0:1
-expect2 "aeromap --cycles 100001" "(key aeromap.cycles): expected an integer in [1, 100000], got '100001'" \
+expect2 "aeromap --cycles 100001" "expected an integer in [1, 100000] (key aeromap.cycles), got '100001'" \
   aeromap "$rfw" --speed 6:6:1 --freq 4:4:1 --theta 0:0:1 --cycles 100001
-expect2 "run -j 0" "option -j (key jobs): expected an integer in [1, 1024], got '0'" \
+expect2 "run -j 0" "option -j: expected an integer in [1, 1024] (key jobs), got '0'" \
   run "$root/studies/examples/rfw_theta20.toml" -j 0
 
 # 200 Hz is inside [0.01, 200]: accepted, as the message says.
@@ -93,7 +93,7 @@ check "... naming override.wing.fe.element_size_m" grep -qF "override.wing.fe.el
 check "keys vehicle exits 0" test $? -eq 0
 check "... lists wing.semispan_m with unit and range" \
   grep -qE '^wing\.semispan_m +m +\[0\.005, 20\] +required' "$scratch/keys.txt"
-check "... lists every vehicle group's key" grep -qE '^operating_point\.freq_hz +Hz +\(0, 200\]' \
+check "... lists every vehicle group's key" grep -qE '^operating_point\.freq_hz +Hz +\[0\.01, 200\]' \
   "$scratch/keys.txt"
 "$bin" keys vehicl >"$scratch/out.txt" 2>"$scratch/err.txt"
 check "keys vehicl exits 2" test $? -eq 2

@@ -457,7 +457,7 @@ TEST_F(ConfigStudyFile, FreeFlightSectionRules) {
       {"[simulate]\nmode = \"free\"\n[simulate.free]\ntransient_fraction = 0.95\n",
        "simulate.free.transient_fraction", 6, "expected a number in [0, 0.9]"},
       {"[simulate]\nmode = \"free\"\n[simulate.free]\ndivergence_ratio = 1\n",
-       "simulate.free.divergence_ratio", 6, "expected a number in (1, 1000], got 1"},
+       "simulate.free.divergence_ratio", 6, "expected a number in (1, 1000000], got 1"},
       {"[simulate]\nmode = \"free\"\n[simulate.free]\ninitial_altitude_m = -5.0\n",
        "simulate.free.initial_altitude_m", 6, "expected a number in (0, 10000], got -5.0"},
       {"[simulate]\nmode = \"free\"\n[simulate.free]\nbound_theta_deg = \"40\"\n",
