@@ -5,6 +5,9 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
+
+#include "core/model/field_table.hpp"
 
 namespace orni {
 
@@ -40,19 +43,21 @@ struct PeriodicTrimOptions {
   /// against about 20 for the leading 8).
   int multipliers = 8;
 
+  /// True when every field is inside the range of its [trim.periodic] key in the field table
+  /// (core/model/field_table.hpp); otherwise false with the reason in *why.
   bool IsValid(std::string* why) const {
-    auto fail = [why](const char* m) {
-      if (why) *why = m;
-      return false;
-    };
-    if (!(residual_tol > 0.0 && residual_tol <= 1e-4))
-      return fail("periodic residual_tol must be in (0, 1e-4]");
-    if (!(rel_tol > 0.0 && rel_tol <= 1e-3)) return fail("periodic rel_tol must be in (0, 1e-3]");
-    if (max_iterations < 1 || max_iterations > 1000)
-      return fail("periodic max_iterations must be in [1, 1000]");
-    if (history_samples < 8 || history_samples > 100000)
-      return fail("periodic history_samples must be in [8, 100000]");
-    if (multipliers < 0 || multipliers > 100) return fail("periodic multipliers must be in [0, 100]");
+    const std::pair<const char*, double> keyed[] = {
+        {"trim.periodic.residual_tol", residual_tol},
+        {"trim.periodic.rel_tol", rel_tol},
+        {"trim.periodic.max_iterations", max_iterations},
+        {"trim.periodic.history_samples", history_samples},
+        {"trim.periodic.multipliers", multipliers}};
+    for (const auto& [key, value] : keyed)
+      if (!field(key).range.contains(value)) {
+        if (why) *why = "periodic " + std::string(key).substr(14) + " must be in " +
+                        field(key).range.interval();
+        return false;
+      }
     return true;
   }
 };

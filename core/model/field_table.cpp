@@ -325,7 +325,11 @@ std::vector<FieldSpec> makeTable() {
 
       // ---- [trim] (also [optimize.trim], without freq_hz) ---------------------------------------
       number("trim.freq_hz", "Hz", 1.0, kFreq, kFromPoint,
-             "flapping frequency: fixed, or the initial guess when an unknown", "trim --freq"),
+             "flapping frequency: fixed, or the initial guess when an unknown",
+             "trim --freq, stability --freq"),
+      choice("trim.method", "two_stage | periodic", "\"two_stage\"",
+             "Eq. (4) then level settled free flight, or the periodic orbit of free flight",
+             "trim --method"),
       list("trim.unknowns", "theta_mean_deg, speed_mps, tail_angle_deg",
            "1-3 of theta_mean_deg, speed_mps, tail_angle_deg, freq_hz", "trim --unknowns"),
       number("trim.initial.theta_mean_deg", "deg", kDeg, kHalfTurnDeg, kFromPoint,
@@ -355,6 +359,21 @@ std::vector<FieldSpec> makeTable() {
       boolean("trim.refine_in_free_flight", "true", "refine the trim to level settled free flight"),
       integer("trim.refine_cycles", R::closed(6, 10000), "120",
               "cycles of each settled free flight"),
+      // [trim.periodic] (method = "periodic", trim/periodic_trim_options.hpp).
+      choice("trim.periodic.control", "tail_angle_deg | freq_hz | cg_shift_m",
+             "\"tail_angle_deg\"", "the control the periodic trim solves for"),
+      // 1e-14: round-off of the scaled states; 1e-4: looser is not a periodic orbit.
+      number("trim.periodic.residual_tol", "-", 1.0, R::closed(1e-14, 1e-4), "1e-8",
+             "converged when every state returns within this many of its scales"),
+      // kRelTol's round-off bound; at most 1e-3, looser grids move the orbit visibly.
+      number("trim.periodic.rel_tol", "-", 1.0, R::closed(1e-12, 1e-3), "1e-5",
+             "step control of the period map's integration grid"),
+      integer("trim.periodic.max_iterations", R::closed(1, 1000), "40", "Newton iterations"),
+      integer("trim.periodic.history_samples", R::closed(8, 100000), "200",
+              "samples of the orbit's histories (one period)"),
+      boolean("trim.periodic.floquet", "true", "the monodromy at the orbit and its multipliers"),
+      integer("trim.periodic.multipliers", R::closed(0, 100), "8",
+              "leading multipliers by Arnoldi; 0 = all, from the full monodromy"),
 
       // ---- [optimize] ---------------------------------------------------------------------------
       choice("optimize.algorithm", "cobyla | bobyqa | isres", "\"cobyla\"", "NLopt algorithm"),

@@ -89,12 +89,12 @@ std::vector<std::pair<std::string, orni::PeriodicControl>> controlChoices() {
 // [trim.periodic] into o.periodic.
 void readPeriodicTable(TableReader& t, orni::PeriodicTrimOptions* o) {
   o->control = t.optionalEnum("control", o->control, controlChoices());
-  o->residual_tol = t.optionalDouble("residual_tol", o->residual_tol, Range::openClosed(0.0, 1e-4));
-  o->rel_tol = t.optionalDouble("rel_tol", o->rel_tol, Range::openClosed(0.0, 1e-3));
-  o->max_iterations = t.optionalInt("max_iterations", o->max_iterations, 1, 1000);
-  o->history_samples = t.optionalInt("history_samples", o->history_samples, 8, 100000);
+  o->residual_tol = t.optionalDouble(field("trim.periodic.residual_tol"), o->residual_tol);
+  o->rel_tol = t.optionalDouble(field("trim.periodic.rel_tol"), o->rel_tol);
+  o->max_iterations = t.optionalInt(field("trim.periodic.max_iterations"), o->max_iterations);
+  o->history_samples = t.optionalInt(field("trim.periodic.history_samples"), o->history_samples);
   o->floquet = t.optionalBool("floquet", o->floquet);
-  o->multipliers = t.optionalInt("multipliers", o->multipliers, 0, 100);
+  o->multipliers = t.optionalInt(field("trim.periodic.multipliers"), o->multipliers);
   t.finish();
 }
 

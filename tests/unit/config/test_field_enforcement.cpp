@@ -31,13 +31,15 @@ fs::path magpie() {
 
 /// A valid document in which the key of each group is set: the magpie for vehicle keys, a study
 /// of the key's kind for analysis keys.
-std::string baseText(std::string_view group) {
+std::string baseText(std::string_view group, std::string_view key = {}) {
   const std::string vehicle = "vehicle = \"" + magpie().generic_string() + "\"\n";
   if (group == "simulate")
     return "kind = \"simulate\"\n" + vehicle + "[simulate]\nmode = \"free\"\n";
   if (group == "aeromap")
     return "kind = \"aeromap\"\n" + vehicle +
            "[aeromap]\nspeed_mps = 10.0\nfreq_hz = 12.0\ntheta_deg = 5.0\n";
+  if (group == "trim" && key.rfind("trim.periodic.", 0) == 0)
+    return "kind = \"trim\"\n" + vehicle + "[trim]\nmethod = \"periodic\"\n";
   if (group == "trim") return "kind = \"trim\"\n" + vehicle + "[trim]\n";
   if (group == "optimize")
     return "kind = \"optimize\"\n" + vehicle +
@@ -105,7 +107,7 @@ void read(std::string_view group, toml::table& root, const std::string& text) {
 
 /// The InputError of the document with `value` at the key, or "" when it is accepted.
 std::string errorWith(const FieldSpec& f, toml::node&& value, std::string* key_named) {
-  const std::string text = baseText(f.group());
+  const std::string text = baseText(f.group(), f.key);
   toml::table root = toml::parse(text, std::string("enforce.toml"));
   setValue(root, concreteKey(f.key), std::move(value));
   try {
