@@ -166,8 +166,9 @@ struct Corrected {
 class Continuation {
  public:
   Continuation(PeriodMap& map, const ShootingOptions& so, const std::vector<double>& p0,
-               const ContinuationOptions& o, const ContinuationCallback& on_point)
-      : curve_(map, so, p0, o.parameter), o_(o), on_point_(on_point) {}
+               const ContinuationOptions& o, const ContinuationCallback& on_point,
+               const ContinuationPrepare& prepare)
+      : curve_(map, so, p0, o.parameter), o_(o), on_point_(on_point), prepare_(prepare) {}
 
   ContinuationSummary run(const std::vector<double>& x0, const std::vector<double>& p0,
                           const ShootingOptions& so, const ContinuationPoint* resume);
@@ -202,6 +203,7 @@ class Continuation {
   Curve curve_;
   ContinuationOptions o_;
   const ContinuationCallback& on_point_;
+  const ContinuationPrepare& prepare_;
   ContinuationSummary summary_;
 };
 
@@ -287,6 +289,7 @@ bool Continuation::complete(const Corrected& c, const Eigen::VectorXd& previous_
   }
   pt->multipliers = e.multipliers;
   pt->max_modulus = std::abs(e.multipliers[0]);
+  pt->leading_vector = e.vectors.col(0);
   pt->stable = pt->max_modulus < 1.0;
   pt->period_maps = curve_.maps();
   return true;
@@ -364,7 +367,9 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
     a.index = resume->index;
     a.arclength = resume->arclength;
     a.residual_max = resume->residual_max;
+    a.period_maps = resume->period_maps;
     h = resume->step;
+    if (prepare_) prepare_(a);
   } else {
     // The start: solved again on a grid refreshed at the given orbit (reproducible).
     ShootingOptions s0 = so;
@@ -389,6 +394,7 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
     a.arclength = 0.0;
     a.step = h;
     if (!emit(a)) return finish(ContinuationStatus::kInterrupted, "stopped after the start");
+    if (prepare_) prepare_(a);
   }
 
   const double s = curve_.scale();
@@ -443,6 +449,7 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
       if (stop) return finish(ContinuationStatus::kInterrupted, "stopped at an event");
     }
     if (!emit(b)) return finish(ContinuationStatus::kInterrupted, "stopped by the caller");
+    if (prepare_) prepare_(b);
     a = b;
     DH_a = DH_b;
     h = h_next;
@@ -472,6 +479,7 @@ ContinuationSummary continuePeriodicOrbits(PeriodMap& map, const std::vector<dou
                                            const ShootingOptions& shooting,
                                            const ContinuationOptions& options,
                                            const ContinuationCallback& on_point,
+                                           const ContinuationPrepare& prepare,
                                            const ContinuationPoint* resume_from) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("continuation options: " + why);
@@ -488,7 +496,7 @@ ContinuationSummary continuePeriodicOrbits(PeriodMap& map, const std::vector<dou
   const double lambda0 = p0[static_cast<std::size_t>(options.parameter)];
   if (!resume_from && !(lambda0 >= options.lambda_min && lambda0 <= options.lambda_max))
     throw std::invalid_argument("continuation: the start lies outside the parameter range");
-  Continuation c(map, shooting, p0, options, on_point);
+  Continuation c(map, shooting, p0, options, on_point, prepare);
   return c.run(x0, p0, shooting, resume_from);
 }
 

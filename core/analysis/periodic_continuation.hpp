@@ -27,9 +27,9 @@
 // tangent, corrector with the arclength condition), to `locate_tol` in the parameter, and reported
 // as an extra point with its event name. The continuation then goes on from the later point.
 //
-// The map must not change between points other than through (x, p) and its grid (a coefficient
-// frozen by the caller stays frozen over the branch): then a resumed run, which chooses the grid
-// of its point again at the recorded grid_origin, reproduces the points of an uninterrupted one.
+// The map may change only in `prepare`, between points: then a resumed run, which chooses the grid
+// of its point again at the recorded grid_origin (with the map as it was when that point was
+// solved: the caller's duty) and calls prepare on it, reproduces an uninterrupted run's points.
 //
 // Stops when the parameter leaves [lambda_min, lambda_max], after max_points points, or when the
 // step falls below min_step (status not_converged, with the reason). No I/O; thread-compatible.
@@ -82,6 +82,7 @@ struct ContinuationPoint {
   long period_maps = 0;          ///< maps used so far (the whole run)
   Eigen::VectorXcd multipliers;  ///< all n, by modulus (largest first)
   double max_modulus = 0.0;
+  Eigen::VectorXcd leading_vector;  ///< eigenvector of multipliers[0] (scaled states, unit norm)
   bool stable = false;           ///< max_modulus < 1
   double tangent_lambda = 0.0;   ///< parameter component of the unit tangent (scaled)
   Eigen::VectorXd y, tangent;    ///< scaled unknowns and unit tangent (resume)
@@ -104,6 +105,10 @@ struct ContinuationSummary {
 /// Called with every point as it is accepted (the start, regular points, events); return false to
 /// stop the run (status interrupted).
 using ContinuationCallback = std::function<bool(const ContinuationPoint&)>;
+/// Called after a regular point is accepted (its Jacobian formed, its events located and every
+/// point emitted), before the step from it: the caller may move a coefficient of the map that is
+/// frozen during a solve to this point (e.g. a vehicle's skin friction to the orbit's airspeed).
+using ContinuationPrepare = std::function<void(const ContinuationPoint&)>;
 
 /// Continue the periodic orbits of `map` from (x0, p0), an orbit already solved to the
 /// residual tolerance at lambda = p0[options.parameter], with the free parameters and conditions
@@ -116,6 +121,7 @@ ContinuationSummary continuePeriodicOrbits(PeriodMap& map, const std::vector<dou
                                            const ShootingOptions& shooting,
                                            const ContinuationOptions& options,
                                            const ContinuationCallback& on_point = {},
+                                           const ContinuationPrepare& prepare = {},
                                            const ContinuationPoint* resume_from = nullptr);
 
 /// The event between two regular points a (earlier) and b, "" when none: fold (tangent_lambda

@@ -77,7 +77,8 @@ ContinuationOptions foldOptions() {
 ContinuationSummary foldBranch(FoldMap& map, const ContinuationCallback& cb = {},
                                const ContinuationPoint* resume = nullptr) {
   ShootingOptions so;  // no free parameters, no conditions
-  return continuePeriodicOrbits(map, {1.0, periodicY0()}, {1.0}, so, foldOptions(), cb, resume);
+  return continuePeriodicOrbits(map, {1.0, periodicY0()}, {1.0}, so, foldOptions(), cb, {},
+                                resume);
 }
 
 TEST(PeriodicContinuation, FollowsTheBranchThroughTheFoldAndLocatesIt) {
