@@ -108,6 +108,7 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
   co.initial_step = options.step / scale;
   co.max_step = 5.0 * co.initial_step;
   co.min_step = 1e-4 * co.initial_step;
+  co.steps_in_parameter = true;
   co.max_points = options.max_points;
   co.residual_tol = o.periodic.residual_tol;
   co.locate_events = options.locate_events;
@@ -115,9 +116,13 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
 
   const std::vector<FloquetStateInfo>& info = map.stateInfo();
   std::string sample_why;
+  double grid_friction_mps = 0.0;  // the friction when the last regular point's grid was chosen
   auto describe = [&](const ContinuationPoint& pt, TrimContinuationPoint* tp) {
     tp->orbit = pt;
     tp->friction_speed_mps = map.frictionSpeed_mps();
+    // The start's grid is chosen after its prepare; a regular point's before (prepare records it).
+    tp->grid_friction_speed_mps =
+        pt.index == 0 && pt.event.empty() ? tp->friction_speed_mps : grid_friction_mps;
     OrbitHistory h;
     if (!map.sampleOrbit(pt.x.data(), pt.p.data(), options.samples, &h, &sample_why)) return false;
     const double T = 1.0 / pt.p[kPeriodFrequency];
@@ -147,25 +152,28 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
     return !on_point || on_point(tp);
   };
 
-  // Before each step: the friction at the accepted point's mean airspeed.
-  double next_friction_mps = 0.0;
-  const ContinuationPrepare prepare = [&](const ContinuationPoint&) {
-    if (next_friction_mps > 0.0) map.setFrictionSpeed(next_friction_mps);
+  // Each corrected point: the friction moved to its orbit's mean airspeed (16 samples, as the
+  // periodic trim's first pass) and the point corrected again: the periodic trim's second pass.
+  const ContinuationPrepare prepare = [&](const ContinuationPoint& pt) {
+    grid_friction_mps = map.frictionSpeed_mps();
+    OrbitHistory h;
+    if (!map.sampleOrbit(pt.x.data(), pt.p.data(), 16, &h, &sample_why)) return false;
+    const double airspeed = cycleMeans(h, 1.0 / pt.p[kPeriodFrequency]).airspeed_mps;
+    if (!(airspeed > 0.0) || airspeed == map.frictionSpeed_mps()) return false;
+    map.setFrictionSpeed(airspeed);
+    return true;
   };
   const ContinuationPoint* from = nullptr;
   if (!resume.empty()) {
     from = &resume.back().orbit;
-    map.setFrictionSpeed(resume.back().friction_speed_mps);  // as when it was solved
-    next_friction_mps = resume.back().mean.airspeed_mps;
+    map.setFrictionSpeed(resume.back().grid_friction_speed_mps);  // as when its grid was chosen
   }
-  const ContinuationCallback forward_and_note = [&](const ContinuationPoint& pt) {
-    const bool go = forward(pt);
-    if (go && pt.event.empty()) next_friction_mps = s.points.back().mean.airspeed_mps;
-    return go;
+  const ContinuationResumeHook on_resume = [&] {
+    map.setFrictionSpeed(resume.back().friction_speed_mps);  // as when it was accepted
   };
   const ContinuationSummary c = continuePeriodicOrbits(
       map, s.start.orbit_start, FreeFlightPeriodMap::parameters(s.start.solution, s.start.cg_shift_m),
-      so, co, forward_and_note, prepare, from);
+      so, co, forward, prepare, from, on_resume);
   s.status = c.status;
   s.message = c.message;
   if (sampling_failed) {

@@ -51,6 +51,7 @@ struct TrimContinuationPoint {
   PeriodicCycleMeans mean;
   std::string leading_label;    ///< what the leading multiplier's eigenvector is ("phugoid-like")
   double friction_speed_mps = 0.0;  ///< the skin friction's speed while this point was solved
+  double grid_friction_speed_mps = 0.0;  ///< ... when its step grid was chosen (resume)
 };
 
 struct TrimContinuationSummary {

@@ -1,6 +1,7 @@
 #include "core/analysis/periodic_continuation.hpp"
 
 #include <Eigen/LU>
+#include <Eigen/QR>
 
 #include <algorithm>
 #include <cmath>
@@ -140,16 +141,14 @@ class Curve {
   long extra_maps_ = 0;
 };
 
-/// Unit null vector of DH oriented like `previous` (|previous| > 0).
+/// Unit null vector of DH (N x (N + 1)) oriented like `previous`: the last column of Q in
+/// DH^T = Q R (Householder), which depends on DH alone, so a resumed run finds the same bits.
 bool tangentOf(const Eigen::MatrixXd& DH, const Eigen::VectorXd& previous, Eigen::VectorXd* t) {
   const Eigen::Index N = DH.rows();
-  Eigen::MatrixXd A(N + 1, N + 1);
-  A.topRows(N) = DH;
-  A.row(N) = previous.transpose();
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(DH.transpose());
   Eigen::VectorXd e = Eigen::VectorXd::Zero(N + 1);
   e[N] = 1.0;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
-  *t = lu.solve(e);
+  *t = qr.householderQ() * e;
   const double norm = t->norm();
   if (!t->allFinite() || !(norm > 0.0)) return false;
   *t /= norm;
@@ -167,8 +166,12 @@ class Continuation {
  public:
   Continuation(PeriodMap& map, const ShootingOptions& so, const std::vector<double>& p0,
                const ContinuationOptions& o, const ContinuationCallback& on_point,
-               const ContinuationPrepare& prepare)
-      : curve_(map, so, p0, o.parameter), o_(o), on_point_(on_point), prepare_(prepare) {}
+               const ContinuationPrepare& prepare, const ContinuationResumeHook& on_resume)
+      : curve_(map, so, p0, o.parameter),
+        o_(o),
+        on_point_(on_point),
+        prepare_(prepare),
+        on_resume_(on_resume) {}
 
   ContinuationSummary run(const std::vector<double>& x0, const std::vector<double>& p0,
                           const ShootingOptions& so, const ContinuationPoint* resume);
@@ -183,6 +186,24 @@ class Continuation {
   /// The point at the corrected y: DH, tangent (oriented like previous_tangent), multipliers.
   bool complete(const Corrected& c, const Eigen::VectorXd& previous_tangent,
                 ContinuationPoint* pt, Eigen::MatrixXd* DH, std::string* why);
+  /// The caller's prepare on the corrected point; when it changed the map, the point is corrected
+  /// again at its parameter on the same grid (chord matrix DH_chord).
+  bool refine(Corrected* c, const Eigen::MatrixXd& DH_chord, std::string* why) {
+    if (!prepare_) return true;
+    ContinuationPoint pt;
+    pt.y = c->y;
+    pt.lambda = curve_.lambda(c->y);
+    curve_.unpack(c->y, &pt.x, &pt.p);
+    if (!prepare_(pt)) return true;
+    Corrected again;
+    const Eigen::Index N = curve_.N();
+    const Eigen::VectorXd none = Eigen::VectorXd::Zero(N + 1);
+    if (!correct(c->y, none, DH_chord, 0.0, true, c->y[N], false, &again, why)) return false;
+    // The step control reads the first correction's iterations (how far the predictor missed).
+    c->y = again.y;
+    c->H = again.H;
+    return true;
+  }
   bool emit(const ContinuationPoint& pt) {
     summary_.points.push_back(pt);
     return !on_point_ || on_point_(pt);
@@ -204,7 +225,9 @@ class Continuation {
   ContinuationOptions o_;
   const ContinuationCallback& on_point_;
   const ContinuationPrepare& prepare_;
+  const ContinuationResumeHook& on_resume_;
   ContinuationSummary summary_;
+  double step_scale_ = 1.0;  // steps_in_parameter's factor on the step limits
 };
 
 bool Continuation::correct(const Eigen::VectorXd& y0, const Eigen::VectorXd& t0,
@@ -339,6 +362,7 @@ bool Continuation::locate(const ContinuationPoint& a, const Eigen::MatrixXd& DH_
   best.index = b.index;
   best.arclength = a.arclength + (std::abs(glo) <= std::abs(ghi) ? s_lo : s_hi);
   best.step = 0.0;
+  best.step_scale = step_scale_;
   best.period_maps = curve_.maps();
   ++summary_.events;
   if (!emit(best)) *stop = true;
@@ -359,7 +383,10 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
     Corrected c;
     c.y = resume->y;
     c.grid_origin = resume->grid_origin;
-    if (!curve_.refreshGrid(resume->grid_origin, &why) || !curve_.residual(resume->y, &c.H, &why))
+    if (!curve_.refreshGrid(resume->grid_origin, &why))
+      return finish(ContinuationStatus::kFailed, "the resumed point could not be mapped: " + why);
+    if (on_resume_) on_resume_();
+    if (!curve_.residual(resume->y, &c.H, &why))
       return finish(ContinuationStatus::kFailed, "the resumed point could not be mapped: " + why);
     c.iterations = resume->corrector_iterations;
     if (!complete(c, resume->tangent, &a, &DH_a, &why))
@@ -369,8 +396,20 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
     a.residual_max = resume->residual_max;
     a.period_maps = resume->period_maps;
     h = resume->step;
-    if (prepare_) prepare_(a);
+    step_scale_ = resume->step_scale;
+    a.step_scale = step_scale_;
+    o_.initial_step *= step_scale_;
+    o_.min_step *= step_scale_;
+    o_.max_step *= step_scale_;
   } else {
+    // The caller's prepare on the given orbit first (its map for the whole first step).
+    if (prepare_) {
+      ContinuationPoint given;
+      given.x = x0;
+      given.p = p0;
+      given.lambda = p0[static_cast<std::size_t>(o_.parameter)];
+      prepare_(given);
+    }
     // The start: solved again on a grid refreshed at the given orbit (reproducible).
     ShootingOptions s0 = so;
     s0.residual_tol = o_.residual_tol;
@@ -392,9 +431,16 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
       return finish(ContinuationStatus::kFailed, "the start orbit: " + why);
     a.index = 0;
     a.arclength = 0.0;
+    if (o_.steps_in_parameter) {
+      step_scale_ = 1.0 / std::max(std::abs(a.tangent[N]), 0.05);
+      o_.initial_step *= step_scale_;
+      o_.min_step *= step_scale_;
+      o_.max_step *= step_scale_;
+      h = o_.initial_step;
+    }
     a.step = h;
+    a.step_scale = step_scale_;
     if (!emit(a)) return finish(ContinuationStatus::kInterrupted, "stopped after the start");
-    if (prepare_) prepare_(a);
   }
 
   const double s = curve_.scale();
@@ -412,7 +458,8 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
       fix = true;
     }
     Corrected c;
-    if (!correct(a.y, a.tangent, DH_a, h, fix, target, true, &c, &why)) {
+    if (!correct(a.y, a.tangent, DH_a, h, fix, target, true, &c, &why) ||
+        !refine(&c, DH_a, &why)) {
       h *= 0.5;
       if (h < o_.min_step) {
         std::snprintf(buf, sizeof buf,
@@ -432,9 +479,12 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
     b.index = a.index + 1;
     b.arclength = a.arclength + taken;
     double h_next = h;
-    if (c.iterations <= 2) h_next = std::min(1.5 * h, o_.max_step);
-    else if (c.iterations > o_.target_iterations) h_next = std::max(0.7 * h, o_.min_step);
+    if (c.iterations < o_.target_iterations)
+      h_next = std::min(1.5 * h, o_.max_step);
+    else if (c.iterations > o_.target_iterations)
+      h_next = std::max(0.7 * h, o_.min_step);
     b.step = h_next;
+    b.step_scale = step_scale_;
     const std::string event = continuationEventBetween(a, b);
     if (!event.empty()) {
       bool stop = false;
@@ -449,7 +499,6 @@ ContinuationSummary Continuation::run(const std::vector<double>& x0,
       if (stop) return finish(ContinuationStatus::kInterrupted, "stopped at an event");
     }
     if (!emit(b)) return finish(ContinuationStatus::kInterrupted, "stopped by the caller");
-    if (prepare_) prepare_(b);
     a = b;
     DH_a = DH_b;
     h = h_next;
@@ -480,7 +529,8 @@ ContinuationSummary continuePeriodicOrbits(PeriodMap& map, const std::vector<dou
                                            const ContinuationOptions& options,
                                            const ContinuationCallback& on_point,
                                            const ContinuationPrepare& prepare,
-                                           const ContinuationPoint* resume_from) {
+                                           const ContinuationPoint* resume_from,
+                                           const ContinuationResumeHook& on_resume) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("continuation options: " + why);
   if (!shooting.IsValid(map.parameterCount(), map.conditionCount(), &why))
@@ -496,7 +546,7 @@ ContinuationSummary continuePeriodicOrbits(PeriodMap& map, const std::vector<dou
   const double lambda0 = p0[static_cast<std::size_t>(options.parameter)];
   if (!resume_from && !(lambda0 >= options.lambda_min && lambda0 <= options.lambda_max))
     throw std::invalid_argument("continuation: the start lies outside the parameter range");
-  Continuation c(map, shooting, p0, options, on_point, prepare);
+  Continuation c(map, shooting, p0, options, on_point, prepare, on_resume);
   return c.run(x0, p0, shooting, resume_from);
 }
 

@@ -10,8 +10,8 @@
 //   predictor  y_p = y_k + h t_k;
 //   corrector  Newton on [H(y); t_k . (y - y_p)] = 0 from y_p with the matrix [DH(y_k); t_k^T]
 //              and Broyden updates of its DH block (chord-Broyden; the last row is exact);
-//   step       h grows by 1.5 when the corrector took <= 2 iterations, shrinks by 0.7 above
-//              `target_iterations`, halves on failure down to `min_step`.
+//   step       h grows by 1.5 when the corrector took fewer than `target_iterations`, shrinks by
+//              0.7 above them, halves on failure down to `min_step`.
 // At every accepted point DH is formed again by forward differences (N + 1 period maps): its state
 // block plus the identity is the monodromy matrix (all n multipliers: stable when every |mu| < 1),
 // its null vector the next tangent. Because every point starts from a fresh DH, a run resumed from
@@ -27,9 +27,12 @@
 // tangent, corrector with the arclength condition), to `locate_tol` in the parameter, and reported
 // as an extra point with its event name. The continuation then goes on from the later point.
 //
-// The map may change only in `prepare`, between points: then a resumed run, which chooses the grid
-// of its point again at the recorded grid_origin (with the map as it was when that point was
-// solved: the caller's duty) and calls prepare on it, reproduces an uninterrupted run's points.
+// The map may change only in `prepare`: called with the given start orbit before anything else,
+// and with every corrected regular point; when it changes the map (e.g. a vehicle's skin friction
+// moved to that orbit's airspeed, as a periodic trim's second pass does) the point is corrected
+// again at its parameter. A resumed run (the caller sets the map as it was when the recorded
+// point was accepted; the grid is chosen again at the recorded grid_origin; every tangent is a
+// function of the Jacobian alone) reproduces an uninterrupted run's points bit for bit.
 //
 // Stops when the parameter leaves [lambda_min, lambda_max], after max_points points, or when the
 // step falls below min_step (status not_converged, with the reason). No I/O; thread-compatible.
@@ -57,6 +60,10 @@ struct ContinuationOptions {
   double initial_step = 0.05;
   double min_step = 1e-5;       ///< below: not_converged
   double max_step = 0.5;
+  /// The three steps are steps of lambda / s_lambda rather than of the arclength: at the start
+  /// they are divided by |t_lambda| of the first tangent (a branch along which the orbit moves
+  /// fast in scaled states then still advances by about initial_step in the parameter).
+  bool steps_in_parameter = false;
   int direction = +1;           ///< +1: first step towards larger lambda, -1 towards smaller
   int max_points = 30;          ///< points after the start (events not counted), [1, 100000]
   int max_corrector_iterations = 8;
@@ -88,6 +95,7 @@ struct ContinuationPoint {
   Eigen::VectorXd y, tangent;    ///< scaled unknowns and unit tangent (resume)
   Eigen::VectorXd grid_origin;   ///< where the map's grid of this point was chosen (resume)
   double step = 0.0;             ///< the step the next point will try (resume)
+  double step_scale = 1.0;       ///< factor of steps_in_parameter on the limits (resume)
 };
 
 enum class ContinuationStatus { kCompleted, kNotConverged, kFailed, kInterrupted };
@@ -105,10 +113,14 @@ struct ContinuationSummary {
 /// Called with every point as it is accepted (the start, regular points, events); return false to
 /// stop the run (status interrupted).
 using ContinuationCallback = std::function<bool(const ContinuationPoint&)>;
-/// Called after a regular point is accepted (its Jacobian formed, its events located and every
-/// point emitted), before the step from it: the caller may move a coefficient of the map that is
-/// frozen during a solve to this point (e.g. a vehicle's skin friction to the orbit's airspeed).
-using ContinuationPrepare = std::function<void(const ContinuationPoint&)>;
+/// Called on resume after the recorded point's grid is chosen again (at the recorded grid_origin)
+/// and before its Jacobian: the caller moves the map from the state it had when that grid was
+/// chosen to the state it had when the point was accepted.
+using ContinuationResumeHook = std::function<void()>;
+/// Called with the start orbit and with each corrected regular point (x, p, lambda, y set) before
+/// its Jacobian: the caller may move a coefficient of the map that is frozen during a solve to
+/// this orbit; true when it changed the map (the point is then corrected again).
+using ContinuationPrepare = std::function<bool(const ContinuationPoint&)>;
 
 /// Continue the periodic orbits of `map` from (x0, p0), an orbit already solved to the
 /// residual tolerance at lambda = p0[options.parameter], with the free parameters and conditions
@@ -122,7 +134,8 @@ ContinuationSummary continuePeriodicOrbits(PeriodMap& map, const std::vector<dou
                                            const ContinuationOptions& options,
                                            const ContinuationCallback& on_point = {},
                                            const ContinuationPrepare& prepare = {},
-                                           const ContinuationPoint* resume_from = nullptr);
+                                           const ContinuationPoint* resume_from = nullptr,
+                                           const ContinuationResumeHook& on_resume = {});
 
 /// The event between two regular points a (earlier) and b, "" when none: fold (tangent_lambda
 /// changes sign), else the type of the multiplier that crossed the unit circle.
