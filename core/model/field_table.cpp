@@ -251,7 +251,8 @@ std::vector<FieldSpec> makeTable() {
 
       // ---- Study files: top level ---------------------------------------------------------------
       choice("kind",
-             "simulate | modes | aeromap | trim | optimize | sweep | calibrate | sensitivity",
+             "simulate | modes | aeromap | trim | optimize | sweep | calibrate | sensitivity | "
+             "continuation",
              "required", "what the study runs"),
       text("study.name", "the file stem",
            "a study's top-level `name`: the run name ([A-Za-z0-9_.-], output folder)"),
@@ -472,6 +473,20 @@ std::vector<FieldSpec> makeTable() {
       table("sensitivity.free", "the [simulate.free] defaults",
             "the bounded-norm settings: the keys of [simulate.free]"),
 
+      // ---- [continuation] (kind continuation, trim/trim_continuation.hpp) -------------------------
+      choice("continuation.parameter", "freq_hz | tail_angle_deg | cg_shift_m", "required",
+             "the parameter the trim branch is followed over (not the [trim.periodic] control)"),
+      number("continuation.to", "key", 1.0, R::any(), "required",
+             "the end of the branch, in the parameter's units", {},
+             "the range of trim.freq_hz, of trim.initial.tail_angle_deg, or [-0.1, 0.1] m"),
+      number("continuation.step", "key", 1.0, R::any(), "0.2 Hz, 0.5 deg or 0.002 m",
+             "first step in the parameter; the arclength steps adapt from there", {},
+             "> 0 and at most the width of the parameter's range"),
+      integer("continuation.max_points", R::closed(1, 10000), "30",
+              "regular points after the start"),
+      boolean("continuation.locate_events", "true",
+              "folds and stability changes located by bisection"),
+
       // ---- Command line only --------------------------------------------------------------------
       // 1024 threads: far beyond any machine this runs on; each owns a workspace.
       integer("jobs", R::closed(1, 1024), "1", "worker threads", "run/aeromap/optimize -j"),
@@ -482,8 +497,9 @@ constexpr std::string_view kVehicleSections[] = {"air",        "wing", "material
                                                  "aero",       "kinematics", "body",
                                                  "tail",       "operating_point", "name",
                                                  "description"};
-constexpr std::string_view kStudySections[] = {"simulate", "aeromap",     "trim",  "optimize",
-                                               "calibrate", "sweep", "sensitivity"};
+constexpr std::string_view kStudySections[] = {"simulate",  "aeromap", "trim",
+                                               "optimize",  "calibrate", "sweep",
+                                               "sensitivity", "continuation"};
 
 std::string_view firstPart(std::string_view key) { return key.substr(0, key.find('.')); }
 
@@ -593,7 +609,7 @@ const FieldSpec& field(std::string_view key) {
 const std::vector<std::string_view>& fieldGroups() {
   static const std::vector<std::string_view> groups = {
       "vehicle", "study", "simulate", "aeromap", "trim", "optimize", "calibrate", "sweep",
-      "sensitivity", "cli"};
+      "sensitivity", "continuation", "cli"};
   return groups;
 }
 

@@ -52,8 +52,8 @@ struct FieldSpec {
   std::string_view also;
 
   /// The section group of the key for `ornithopter keys GROUP`: "vehicle", "study", "simulate",
-  /// "aeromap", "trim", "optimize", "calibrate", "sweep", "sensitivity" or "cli" (command line
-  /// only).
+  /// "aeromap", "trim", "optimize", "calibrate", "sweep", "sensitivity", "continuation" or "cli"
+  /// (command line only).
   std::string_view group() const;
   /// "a number in [0.005, 20]", "an integer in [1, 500]", "one of \"a\", \"b\"", ...
   std::string expected() const;

@@ -26,6 +26,7 @@
 #include "studies/runner/commands/optimize_command.hpp"
 #include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/commands/continuation_command.hpp"
 #include "studies/runner/commands/sensitivity_command.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/commands/sweep_command.hpp"
@@ -158,6 +159,8 @@ int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
       opts.threads = jobs;
       return runSweepStudy(study, out_dir, opts);
     }
+    case StudyKind::kContinuation:
+      return runContinuationStudy(study, out_dir);
     case StudyKind::kSensitivity: {
       SensitivityRunOptions opts;
       opts.threads = jobs;
@@ -339,7 +342,7 @@ int main(int argc, char** argv) {
   bool keys_markdown = false;
   keys->add_option("GROUP", keys_group,
                    "vehicle | study | simulate | aeromap | trim | optimize | calibrate | sweep | "
-                   "sensitivity | cli (default: every group)");
+                   "sensitivity | continuation | cli (default: every group)");
   keys->add_flag("--markdown", keys_markdown, "Markdown tables (the README's key reference)");
 
   // A mistyped subcommand: name the nearest one, as a mistyped key does.

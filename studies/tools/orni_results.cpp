@@ -592,6 +592,11 @@ double aggregate(const std::vector<double>& v, const std::string& agg) {
     for (double x : v) m = std::max(m, std::fabs(x));
     return m;
   }
+  if (agg == "sum") {
+    double s = 0;
+    for (double x : v) s += x;
+    return s;
+  }
   if (agg == "mean") {
     double s = 0;
     for (double x : v) s += x;

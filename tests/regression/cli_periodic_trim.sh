@@ -131,10 +131,13 @@ vehicle = "$efw"
 method = "periodic"
 [sweep]
 run = "trim"
-axes = [{ key = "trim.freq_hz", values = [11, 12] }]
+axes = [{ key = "trim.freq_hz", values = [11.5, 12] }]
 EOF
 "$bin" run "$scratch/sweep_periodic.toml" -o "$scratch/sweep_periodic" > /dev/null 2> "$scratch/sweep_periodic.err"
-check "a sweep of periodic trims exits 2 (not available yet)" test $? -eq 2
-check "... naming trim.method" grep -q "sweep_periodic.toml:4: key 'trim.method'" "$scratch/sweep_periodic.err"
+check "a sweep of periodic trims exits 0" test $? -eq 0
+check "... with the Floquet columns" bash -c "head -1 '$scratch/sweep_periodic/sweep.csv' | grep -q ',max_modulus,floquet_stable,message$'"
+check "... both points ok and stable" test "$(grep -c ',ok,.*,1,' "$scratch/sweep_periodic/sweep.csv")" -eq 2
+twelve=$(grep '^12,' "$scratch/sweep_periodic/sweep.csv" | cut -d, -f3)
+check "... the 12 Hz row is the periodic trim's theta ($twelve = $theta)" awk_true "($twelve - $theta) ^ 2 < 1e-12"
 
 exit $fail

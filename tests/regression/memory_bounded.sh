@@ -14,6 +14,7 @@
 # 10 000-cycle flexible free flight (long: see results/README.md for the measured numbers).
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
+root=$(cd "$root" && pwd)  # the studies written below name the vehicle by absolute path
 rm -rf "$scratch"; mkdir -p "$scratch"
 # check, json, awk_true and fail=0
 source "$(dirname "${BASH_SOURCE[0]}")/../support/cli_checks.sh"

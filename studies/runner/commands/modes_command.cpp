@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/wing_geometry.hpp"
 #include "core/model/vehicle_validation.hpp"
 #include "core/structure/calculix_deck.hpp"
 #include "core/structure/modal_wing.hpp"
@@ -145,12 +146,6 @@ CsvTable modeShapeTable(const structure::ModalWing& wing) {
 /// Grid of the colour maps: stations along the span, points along the local chord.
 constexpr int kFigureStations = 48;
 constexpr int kFigureChordPoints = 14;
-
-double chordAt(const WingModel& w, double y_m) {
-  if (w.planform == Planform::kRectangular) return w.root_chord_m;
-  const double r = std::min(1.0, y_m / w.semispan_m);
-  return w.root_chord_m * std::sqrt(std::max(0.0, 1.0 - r * r));
-}
 
 /// Values of a nodal field at point (x, y) of the wing plane: linear interpolation in the skin
 /// triangle that contains it (the one with the largest smallest barycentric coordinate, so points

@@ -10,6 +10,7 @@
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/output/atomic_file.hpp"
+#include "trim/periodic_trim.hpp"
 #include "trim/trim_solver.hpp"
 
 namespace orni::studies {
@@ -28,6 +29,20 @@ const std::vector<SweepColumn>& trimColumns() {
       {"norm_ratio_max", "-", true},    {"theta_min_deg", "deg", false},
       {"theta_max_deg", "deg", false},  {"altitude_p2p_m", "m", false},
       {"dominant_freq_hz", "Hz", false}};
+  return c;
+}
+
+// A periodic trim's row: the trim's columns (power_hinge_W empty: the orbit's hinge power is not
+// integrated; iterations = Newton iterations, evaluations = period maps; residual_* the orbit's
+// mean fuselage loads minus the weight, residual_scaled_max the periodic residual) and its
+// Floquet verdict.
+const std::vector<SweepColumn>& periodicTrimColumns() {
+  static const std::vector<SweepColumn> c = [] {
+    std::vector<SweepColumn> v = trimColumns();
+    v.push_back({"max_modulus", "-", true});
+    v.push_back({"floquet_stable", "-", false});
+    return v;
+  }();
   return c;
 }
 
@@ -50,8 +65,9 @@ const std::vector<SweepColumn>& freeColumns() {
   return c;
 }
 
-const std::vector<SweepColumn>& columnsOf(StudyKind run, FlightMode mode) {
-  if (run == StudyKind::kTrim) return trimColumns();
+const std::vector<SweepColumn>& columnsOf(StudyKind run, FlightMode mode, TrimMethod method) {
+  if (run == StudyKind::kTrim)
+    return method == TrimMethod::kPeriodic ? periodicTrimColumns() : trimColumns();
   return mode == FlightMode::kFree ? freeColumns() : tetheredColumns();
 }
 
@@ -95,6 +111,44 @@ SweepPointResult trimPoint(const Study& point) {
              num(f.theta_max_rad * kRadToDeg),
              num(f.altitude_p2p_m),
              num(f.dominant_freq_hz)};
+  if (f.status != FreeFlightStatus::kSkipped) r.message += "; free flight: " + f.message;
+  return r;
+}
+
+SweepPointResult periodicTrimPoint(const Study& point) {
+  const FlightCoreModel model(point.vehicle);
+  const PeriodicTrimSummary s = solvePeriodicTrim(model, point.trim);
+  SweepPointResult r;
+  r.status = toString(s.status);
+  r.message = s.message;
+  r.cells.assign(periodicTrimColumns().size(), std::string());
+  if (!s.converged) return r;
+  const FreeFlightVerification& f = s.free_flight;
+  const bool verdict =
+      f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded;
+  const double W = point.vehicle.body.mass_kg * point.vehicle.air.gravity_mps2;
+  r.cells = {num(s.solution.theta_rad * kRadToDeg),
+             num(s.solution.speed_mps),
+             num(s.solution.tail_angle_rad * kRadToDeg),
+             num(s.solution.freq_hz),
+             num(s.mean.power_aero_W),
+             "",
+             num(s.mean.FV_N - W),
+             num(s.mean.FH_N),
+             num(s.mean.M_Nm),
+             num(s.shooting.residual_max),
+             std::to_string(s.shooting.iterations),
+             std::to_string(s.shooting.period_maps),
+             toString(f.status),
+             verdict ? (f.bounded ? "1" : "0") : "",
+             num(f.norm_ratio_max),
+             num(f.theta_min_rad * kRadToDeg),
+             num(f.theta_max_rad * kRadToDeg),
+             num(f.altitude_p2p_m),
+             num(f.dominant_freq_hz),
+             s.floquet_valid ? num(s.floquet.max_modulus) : "",
+             s.floquet_valid ? (s.floquet.stable ? "1" : "0") : ""};
+  if (s.floquet_valid) r.message += "; Floquet: " + s.floquet.BriefReport();
   if (f.status != FreeFlightStatus::kSkipped) r.message += "; free flight: " + f.message;
   return r;
 }
@@ -156,13 +210,15 @@ SweepPointResult freePoint(const Study& point) {
 }  // namespace
 
 std::vector<SweepColumn> sweepResultColumns(const Study& sweep) {
-  return columnsOf(sweep.sweep.run, sweep.simulate.mode);
+  return columnsOf(sweep.sweep.run, sweep.simulate.mode, sweep.trim.method);
 }
 
 SweepPointResult runSweepPoint(const Study& point, StudyKind run) {
   SweepPointResult r;
   try {
-    if (run == StudyKind::kTrim)
+    if (run == StudyKind::kTrim && point.trim.method == TrimMethod::kPeriodic)
+      r = periodicTrimPoint(point);
+    else if (run == StudyKind::kTrim)
       r = trimPoint(point);
     else if (point.simulate.mode == FlightMode::kFree)
       r = freePoint(point);
@@ -172,9 +228,9 @@ SweepPointResult runSweepPoint(const Study& point, StudyKind run) {
     r = SweepPointResult();
     r.status = "failed";
     r.message = std::string("the run threw: ") + e.what();
-    r.cells.assign(columnsOf(run, point.simulate.mode).size(), std::string());
+    r.cells.assign(columnsOf(run, point.simulate.mode, point.trim.method).size(), std::string());
   }
-  if (r.cells.size() != columnsOf(run, point.simulate.mode).size())
+  if (r.cells.size() != columnsOf(run, point.simulate.mode, point.trim.method).size())
     throw std::logic_error("runSweepPoint: one cell per result column expected");
   r.message = oneLine(std::move(r.message));
   return r;

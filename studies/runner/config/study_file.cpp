@@ -15,6 +15,7 @@
 #include "studies/runner/config/optimize_section.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/config/calibrate_section.hpp"
+#include "studies/runner/config/continuation_section.hpp"
 #include "studies/runner/config/trim_section.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
@@ -26,7 +27,7 @@ namespace {
 
 using orni::field;
 
-constexpr std::array<std::pair<std::string_view, StudyKind>, 8> kKinds = {{
+constexpr std::array<std::pair<std::string_view, StudyKind>, 9> kKinds = {{
     {"simulate", StudyKind::kSimulate},
     {"modes", StudyKind::kModes},
     {"aeromap", StudyKind::kAeromap},
@@ -35,6 +36,7 @@ constexpr std::array<std::pair<std::string_view, StudyKind>, 8> kKinds = {{
     {"sweep", StudyKind::kSweep},
     {"calibrate", StudyKind::kCalibrate},
     {"sensitivity", StudyKind::kSensitivity},
+    {"continuation", StudyKind::kContinuation},
 }};
 
 const std::vector<std::pair<std::string, FlightMode>> kModes = {{"tethered", FlightMode::kTethered},
@@ -257,7 +259,8 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
 
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim", "sweep", "calibrate", "optimize", "sensitivity"});
+                   "aeromap", "trim", "sweep", "calibrate", "optimize", "sensitivity",
+                   "continuation"});
   Study study;
   study.study_path = study_file;
   study.kind = top.requiredEnum("kind", kindChoices());
@@ -397,12 +400,38 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
     readAeromap(am, study);
   }
 
-  if (top.has("trim") && study.kind != StudyKind::kTrim)
+  const bool continuation = study.kind == StudyKind::kContinuation;
+  if (top.has("trim") && study.kind != StudyKind::kTrim && !continuation)
     throw InputError::unknownKey(top.fileOf("trim"), top.lineOf("trim"), "trim",
-                                 "[trim] is only allowed in a study of kind \"trim\", this one is "
-                                 "kind \"" +
+                                 "[trim] is only allowed in a study of kind \"trim\" or "
+                                 "\"continuation\", this one is kind \"" +
                                      std::string(toString(study.kind)) + "\"");
-  if (study.kind == StudyKind::kTrim) {
+  if (top.has("continuation") && !continuation)
+    throw InputError::unknownKey(top.fileOf("continuation"), top.lineOf("continuation"),
+                                 "continuation",
+                                 "[continuation] is only allowed in a study of kind "
+                                 "\"continuation\", this one is kind \"" +
+                                     std::string(toString(study.kind)) + "\"");
+  if (continuation) {
+    // The branch is made of periodic trims: method "periodic" unless the file says otherwise
+    // (which is an error at its line).
+    if (toml::table* t = root.get("trim") ? root.get("trim")->as_table() : nullptr) {
+      if (const toml::node* m = t->get("method")) {
+        if (m->value<std::string>() != std::string("periodic")) {
+          const TableReader tr(*t, "trim", study_ctx, trimSectionKeys());
+          throw tr.valueError("method",
+                              "\"periodic\" (a continuation follows periodic trims; the default "
+                              "here)",
+                              describeNode(*m));
+        }
+      } else {
+        t->insert("method", "periodic");
+      }
+    } else if (!root.contains("trim")) {
+      root.insert("trim", toml::table{{"method", "periodic"}});
+    }
+  }
+  if (study.kind == StudyKind::kTrim || continuation) {
     if (!study.vehicle.body.present)
       throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
                                       "trim)",
@@ -415,6 +444,17 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
       TableReader none(empty, "trim", study_ctx, trimSectionKeys());
       study.trim = readTrimSection(none, study.vehicle);
     }
+  }
+  if (continuation) {
+    TableReader c = top.requiredTable("continuation", continuationSectionKeys());
+    study.continuation = readContinuationSection(c);
+    if (study.continuation.parameter == study.trim.periodic.control)
+      throw c.valueError("parameter",
+                         std::string("a parameter other than the [trim.periodic] control \"") +
+                             orni::toString(study.trim.periodic.control) +
+                             "\" (the control keeps every orbit of the branch level)",
+                         std::string("\"") +
+                             continuationParameterName(study.continuation.parameter) + "\"");
   }
 
   if (top.has("calibrate") && study.kind != StudyKind::kCalibrate)
@@ -532,7 +572,9 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     out.number("separation_abs_tol", a.options.separation_abs_tol);
     out.number("steady_tol", a.options.steady_tol);
   }
-  if (kind == StudyKind::kTrim) writeTrimSection(study.trim, out);
+  if (kind == StudyKind::kTrim || kind == StudyKind::kContinuation)
+    writeTrimSection(study.trim, out);
+  if (kind == StudyKind::kContinuation) writeContinuationSection(study.continuation, out);
   if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate, out);
   if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize, out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});

@@ -6,7 +6,9 @@
 // Top-level keys of a study file:
 //   kind     (required) "simulate" | "modes" | "aeromap" | "trim" | "optimize" | "sweep" |
 //            "calibrate" ([calibrate]: config/calibrate_section.hpp) | "sensitivity"
-//            ([sensitivity] and [trim]: config/sensitivity_study.hpp)
+//            ([sensitivity] and [trim]: config/sensitivity_study.hpp) | "continuation"
+//            ([continuation] and [trim], the periodic trim it starts from:
+//            config/continuation_section.hpp)
 //   name     (optional) run name, [A-Za-z0-9_.-]+; default: the file stem
 //   vehicle  (required) path of the vehicle file relative to the study's folder, or an inline
 //            [vehicle] table (as written into study.resolved.toml)
@@ -99,6 +101,7 @@
 #include "trim/aero_map_options.hpp"
 #include "trim/grid_spec.hpp"
 #include "trim/calibration_options.hpp"
+#include "trim/trim_continuation.hpp"
 #include "trim/trim_options.hpp"
 
 namespace orni::studies {
@@ -111,10 +114,12 @@ enum class StudyKind {
   kOptimize,
   kSweep,
   kCalibrate,
-  kSensitivity
+  kSensitivity,
+  kContinuation
 };
 
-/// "simulate", "modes", "aeromap", "trim", "optimize", "sweep", "calibrate", "sensitivity".
+/// "simulate", "modes", "aeromap", "trim", "optimize", "sweep", "calibrate", "sensitivity",
+/// "continuation".
 std::string_view toString(StudyKind kind);
 /// The kind of that spelling, or nullopt.
 std::optional<StudyKind> parseStudyKind(std::string_view text);
@@ -213,6 +218,9 @@ struct Study {
   OptimizeSettings optimize;           ///< [optimize] (kind optimize)
   /// [sensitivity] (kind sensitivity). vehicle and trim above then hold the base study.
   SensitivitySettings sensitivity;
+  /// [continuation] (kind continuation, config/continuation_section.hpp); trim above holds the
+  /// periodic trim the branch starts from.
+  orni::TrimContinuationOptions continuation;
 };
 
 /// True for an axis key of the run's analysis section ("trim.*" in a trim sweep), false for a

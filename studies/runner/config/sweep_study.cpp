@@ -360,11 +360,6 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
             "\" at every point, with the settings of [" + sectionOf(run) + "]");
   }
 
-  if (run == StudyKind::kTrim && top.has("trim")) {
-    TableReader t = top.requiredTable("trim", trimSectionKeys());
-    rejectPeriodicMethod(t, "a sweep");
-  }
-
   trim::SweepGrid grid;
   for (const AxisInput& a : axes) grid.sizes.push_back(a.axis.values.values.size());
   std::string why;

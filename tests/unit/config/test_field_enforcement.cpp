@@ -48,6 +48,9 @@ std::string baseText(std::string_view group, std::string_view key = {}) {
   if (group == "calibrate")
     return "kind = \"calibrate\"\n" + vehicle +
            "[calibrate]\n[[calibrate.variables]]\nkey = \"tail.arm_m\"\nlower = 0.1\nupper = 0.14\n";
+  if (group == "continuation")
+    return "kind = \"continuation\"\n" + vehicle +
+           "[continuation]\nparameter = \"freq_hz\"\nto = 12.5\n";
   if (group == "sensitivity")
     return "kind = \"sensitivity\"\n" + vehicle +
            "[sensitivity]\nparameters = [{ key = \"tail.arm_m\", low = 0.1, high = 0.14 }]\n";

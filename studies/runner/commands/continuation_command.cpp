@@ -1,0 +1,411 @@
+#include "studies/runner/commands/continuation_command.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/dynamics/flight_core.hpp"
+#include "core/model/frames.hpp"
+#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/config/continuation_section.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/point_journal.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+
+namespace orni::studies {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// ---- journal payload: every number of a point, exactly (%.17g), the label last ----------------
+
+void put(std::string* s, double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " %.17g", v);
+  *s += buf;
+}
+void putVector(std::string* s, const Eigen::VectorXd& v) {
+  put(s, static_cast<double>(v.size()));
+  for (Eigen::Index i = 0; i < v.size(); ++i) put(s, v[i]);
+}
+void putVector(std::string* s, const std::vector<double>& v) {
+  putVector(s, Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
+}
+
+std::string encodePoint(const TrimContinuationPoint& p) {
+  const ContinuationPoint& o = p.orbit;
+  std::string s = o.event.empty() ? "-" : o.event;
+  for (double v : {static_cast<double>(o.index), o.lambda, o.arclength, o.residual_max,
+                   static_cast<double>(o.corrector_iterations), o.max_modulus,
+                   o.stable ? 1.0 : 0.0, o.tangent_lambda, o.step, o.step_scale,
+                   p.friction_speed_mps, p.grid_friction_speed_mps,
+                   p.cg_shift_m, p.solution.theta_rad, p.solution.speed_mps,
+                   p.solution.tail_angle_rad, p.solution.freq_hz, p.mean.theta_rad,
+                   p.mean.airspeed_mps, p.mean.U_mps, p.mean.W_mps, p.mean.Q_radps,
+                   p.mean.power_aero_W, p.mean.FV_N, p.mean.FH_N, p.mean.M_Nm,
+                   p.mean.theta_min_rad, p.mean.theta_max_rad, p.mean.altitude_p2p_m})
+    put(&s, v);
+  putVector(&s, o.x);
+  putVector(&s, o.p);
+  putVector(&s, o.y);
+  putVector(&s, o.tangent);
+  putVector(&s, o.grid_origin);
+  put(&s, static_cast<double>(o.multipliers.size()));
+  for (Eigen::Index i = 0; i < o.multipliers.size(); ++i) {
+    put(&s, o.multipliers[i].real());
+    put(&s, o.multipliers[i].imag());
+  }
+  return s + " |" + p.leading_label;
+}
+
+class Reader {
+ public:
+  explicit Reader(std::string_view text) : text_(text) {}
+  bool number(double* v) {
+    while (pos_ < text_.size() && text_[pos_] == ' ') ++pos_;
+    if (pos_ >= text_.size() || text_[pos_] == '|') return false;
+    const std::string token(text_.substr(pos_, text_.find(' ', pos_) - pos_));
+    char* end = nullptr;
+    *v = std::strtod(token.c_str(), &end);
+    pos_ += token.size();
+    return end && *end == '\0' && !token.empty();
+  }
+  bool count(std::size_t* n) {
+    double v = 0.0;
+    if (!number(&v) || !(v >= 0.0 && v <= 1e6) || v != std::floor(v)) return false;
+    *n = static_cast<std::size_t>(v);
+    return true;
+  }
+  bool vector(Eigen::VectorXd* out) {
+    std::size_t n = 0;
+    if (!count(&n)) return false;
+    out->resize(static_cast<Eigen::Index>(n));
+    for (std::size_t i = 0; i < n; ++i)
+      if (!number(&(*out)[static_cast<Eigen::Index>(i)])) return false;
+    return true;
+  }
+  bool vector(std::vector<double>* out) {
+    Eigen::VectorXd v;
+    if (!vector(&v)) return false;
+    out->assign(v.data(), v.data() + v.size());
+    return true;
+  }
+  bool label(std::string* out) {
+    const std::size_t bar = text_.find(" |", pos_);
+    if (bar == std::string_view::npos) return false;
+    for (std::size_t i = pos_; i < bar; ++i)
+      if (text_[i] != ' ') return false;
+    *out = std::string(text_.substr(bar + 2));
+    return true;
+  }
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+};
+
+bool decodePoint(std::string_view payload, TrimContinuationPoint* p) {
+  const std::size_t space = payload.find(' ');
+  if (space == std::string_view::npos) return false;
+  ContinuationPoint& o = p->orbit;
+  const std::string event(payload.substr(0, space));
+  o.event = event == "-" ? std::string() : event;
+  Reader r(payload.substr(space));
+  double index = 0.0, iterations = 0.0, stable = 0.0;
+  double* scalars[] = {&index, &o.lambda, &o.arclength, &o.residual_max, &iterations,
+                       &o.max_modulus, &stable, &o.tangent_lambda, &o.step, &o.step_scale,
+                       &p->friction_speed_mps, &p->grid_friction_speed_mps, &p->cg_shift_m, &p->solution.theta_rad,
+                       &p->solution.speed_mps, &p->solution.tail_angle_rad, &p->solution.freq_hz,
+                       &p->mean.theta_rad, &p->mean.airspeed_mps, &p->mean.U_mps, &p->mean.W_mps,
+                       &p->mean.Q_radps, &p->mean.power_aero_W, &p->mean.FV_N, &p->mean.FH_N,
+                       &p->mean.M_Nm, &p->mean.theta_min_rad, &p->mean.theta_max_rad,
+                       &p->mean.altitude_p2p_m};
+  for (double* v : scalars)
+    if (!r.number(v)) return false;
+  o.index = static_cast<int>(index);
+  o.corrector_iterations = static_cast<int>(iterations);
+  o.stable = stable != 0.0;
+  if (!r.vector(&o.x) || !r.vector(&o.p) || !r.vector(&o.y) || !r.vector(&o.tangent) ||
+      !r.vector(&o.grid_origin))
+    return false;
+  std::size_t m = 0;
+  if (!r.count(&m)) return false;
+  o.multipliers.resize(static_cast<Eigen::Index>(m));
+  for (std::size_t i = 0; i < m; ++i) {
+    double re = 0.0, im = 0.0;
+    if (!r.number(&re) || !r.number(&im)) return false;
+    o.multipliers[static_cast<Eigen::Index>(i)] = {re, im};
+  }
+  const std::size_t N = static_cast<std::size_t>(o.y.size());
+  if (o.x.empty() || m != o.x.size() || N < o.x.size() + 1 ||
+      static_cast<std::size_t>(o.tangent.size()) != N ||
+      static_cast<std::size_t>(o.grid_origin.size()) != N)
+    return false;
+  return r.label(&p->leading_label);
+}
+
+// ---- outputs ----------------------------------------------------------------------------------
+
+double parameterFileValue(PeriodicControl parameter, const TrimContinuationPoint& p) {
+  const double v = continuationParameterValue(parameter, p.solution, p.cg_shift_m);
+  return parameter == PeriodicControl::kTailAngle ? v * kRadToDeg : v;
+}
+
+std::string parameterUnit(PeriodicControl parameter) {
+  switch (parameter) {
+    case PeriodicControl::kFrequency: return "Hz";
+    case PeriodicControl::kTailAngle: return "deg";
+    case PeriodicControl::kCgPosition: return "m";
+  }
+  return "-";
+}
+
+CsvTable branchTable(PeriodicControl parameter, const std::vector<TrimContinuationPoint>& pts) {
+  CsvTable t;
+  std::vector<double> index, lam, f, theta, speed, tail, cg, power, mod, stable, mu_re, mu_im,
+      resid, iters, arc, thmin, thmax, alt;
+  std::vector<std::string> event, label;
+  for (const TrimContinuationPoint& p : pts) {
+    const ContinuationPoint& o = p.orbit;
+    index.push_back(o.index);
+    lam.push_back(parameterFileValue(parameter, p));
+    f.push_back(p.solution.freq_hz);
+    theta.push_back(p.solution.theta_rad * kRadToDeg);
+    speed.push_back(p.solution.speed_mps);
+    tail.push_back(p.solution.tail_angle_rad * kRadToDeg);
+    cg.push_back(p.cg_shift_m);
+    power.push_back(p.mean.power_aero_W);
+    mod.push_back(o.max_modulus);
+    stable.push_back(o.stable ? 1.0 : 0.0);
+    mu_re.push_back(o.multipliers.size() ? o.multipliers[0].real() : 0.0);
+    mu_im.push_back(o.multipliers.size() ? o.multipliers[0].imag() : 0.0);
+    resid.push_back(o.residual_max);
+    iters.push_back(o.corrector_iterations);
+    arc.push_back(o.arclength);
+    thmin.push_back(p.mean.theta_min_rad * kRadToDeg);
+    thmax.push_back(p.mean.theta_max_rad * kRadToDeg);
+    alt.push_back(p.mean.altitude_p2p_m);
+    event.push_back(o.event);
+    label.push_back(p.leading_label);
+  }
+  t.addColumn("point", "- (events share the number of the point after them)", index);
+  t.addColumn(continuationParameterName(parameter), parameterUnit(parameter), lam);
+  t.addColumn("freq_hz", "Hz", f);
+  t.addColumn("theta_mean_deg", "deg", theta);
+  t.addColumn("speed_mps", "m/s (mean airspeed)", speed);
+  t.addColumn("tail_angle_deg", "deg", tail);
+  t.addColumn("cg_shift_m", "m (forward)", cg);
+  t.addColumn("power_aero_W", "W", power);
+  t.addColumn("max_modulus", "- (max |mu|)", mod);
+  t.addColumn("stable", "1 = every |mu| < 1", stable);
+  t.addColumn("leading_mu_real", "-", mu_re);
+  t.addColumn("leading_mu_imag", "-", mu_im);
+  t.addColumn("periodic_residual", "scaled", resid);
+  t.addColumn("corrector_iterations", "-", iters);
+  t.addColumn("arclength", "scaled", arc);
+  t.addColumn("theta_min_deg", "deg", thmin);
+  t.addColumn("theta_max_deg", "deg", thmax);
+  t.addColumn("altitude_p2p_m", "m", alt);
+  t.addTextColumn("event", "fold | branch_point | period_doubling | neimark_sacker", event);
+  t.addTextColumn("leading_label", "-", label);
+  return t;
+}
+
+// Stable stretches as [from, to] of the parameter (file units), in branch order.
+std::vector<JsonObject> stableStretches(PeriodicControl parameter,
+                                        const std::vector<TrimContinuationPoint>& pts) {
+  std::vector<JsonObject> out;
+  bool open = false;
+  double start = 0.0, last = 0.0;
+  for (const TrimContinuationPoint& p : pts) {
+    const double v = parameterFileValue(parameter, p);
+    if (p.orbit.stable && !open) {
+      open = true;
+      start = v;
+    } else if (!p.orbit.stable && open) {
+      out.push_back(JsonObject().set("from", start).set("to", last));
+      open = false;
+    }
+    last = v;
+  }
+  if (open) out.push_back(JsonObject().set("from", start).set("to", last));
+  return out;
+}
+
+std::string branchFigure(const Study& study, PeriodicControl parameter, PeriodicControl control,
+                         const std::string& status) {
+  const std::string x = std::string(continuationParameterName(parameter)) + " (" +
+                        parameterUnit(parameter) + ")";
+  // Columns of continuation.csv: 2 parameter, 4 theta, 5 speed, 6 tail, 3 freq, 7 cg, 8 power,
+  // 9 max |mu|, 10 stable, 19 event (text; events are rows whose point repeats the next one).
+  const int control_col = control == PeriodicControl::kTailAngle   ? 6
+                          : control == PeriodicControl::kFrequency ? 3
+                                                                   : 7;
+  const std::string control_label = control == PeriodicControl::kTailAngle ? "tail angle (deg)"
+                                    : control == PeriodicControl::kFrequency
+                                        ? "frequency (Hz)"
+                                        : "CG shift (m)";
+  std::ostringstream g;
+  g << "set multiplot layout 2,2 title \"" << study.name << ": trimmed flight over "
+    << continuationParameterName(parameter) << " (" << status
+    << "); solid stable, dashed unstable, circles events\" noenhanced font ',12'\n";
+  g << "set grid\nset key off\nset xlabel '" << x << "' noenhanced\n";
+  auto panel = [&](int col, const std::string& ylabel) {
+    g << "set ylabel '" << ylabel << "' noenhanced\n";
+    g << "plot 'continuation.csv' skip 2 using 2:($10 == 1 ? $" << col
+      << " : NaN) with lines lw 2 lc rgb '#1f77b4', "
+      << "'' skip 2 using 2:($10 == 0 ? $" << col
+      << " : NaN) with lines lw 2 dt 2 lc rgb '#d62728', "
+      << "'' skip 2 using 2:(strcol(19) ne '' ? $" << col
+      << " : NaN) with points pt 6 ps 2 lw 2 lc rgb 'black'\n";
+  };
+  panel(control_col, "control: " + control_label);
+  panel(4, "cycle-mean theta (deg)");
+  panel(5, "mean airspeed (m/s)");
+  g << "set ylabel 'max |mu| (1 = stability limit)'\n";
+  g << "plot 'continuation.csv' skip 2 using 2:9 with linespoints lw 2 pt 7 ps 0.6 lc rgb "
+       "'#2ca02c', 1 with lines dt 3 lc rgb '#555555'\n";
+  g << "unset multiplot\n";
+  return g.str();
+}
+
+JsonObject startObject(const PeriodicTrimSummary& s) {
+  JsonObject o;
+  o.set("converged", s.converged)
+      .set("message", s.message)
+      .set("freq_hz", s.solution.freq_hz)
+      .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
+      .set("speed_mps", s.solution.speed_mps)
+      .set("tail_angle_deg", s.solution.tail_angle_rad * kRadToDeg)
+      .set("cg_shift_m", s.cg_shift_m)
+      .set("friction_speed_mps", s.friction_speed_mps);
+  if (s.converged)
+    o.set("periodic_residual", s.shooting.residual_max);
+  else
+    o.setNull("periodic_residual");
+  return o;
+}
+
+}  // namespace
+
+int runContinuationStudy(const Study& study, const fs::path& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const TrimContinuationOptions& co = study.continuation;
+  const FlightCoreModel model(study.vehicle);
+  const std::string resolved = resolvedStudyToml(study);
+  const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
+  fs::create_directories(out_dir);
+
+  // Records: the start, at most max_points regular points and as many events.
+  const std::size_t capacity = 2 * static_cast<std::size_t>(co.max_points) + 2;
+  PointJournalResume resume;
+  PointJournal journal(
+      out_dir / kContinuationJournalName, "continuation", fingerprint, capacity,
+      [](std::size_t, std::string_view payload) {
+        TrimContinuationPoint p;
+        return decodePoint(payload, &p);
+      },
+      &resume);
+  // The recorded branch: the longest run of records from the first, cut after its last regular
+  // point (an event's point is recomputed with the step that finds it).
+  std::vector<TrimContinuationPoint> done;
+  for (std::size_t i = 0; i < capacity && resume.payloads[i]; ++i) {
+    TrimContinuationPoint p;
+    decodePoint(*resume.payloads[i], &p);
+    done.push_back(p);
+  }
+  while (!done.empty() && !done.back().orbit.event.empty()) done.pop_back();
+  if (resume.existed && !resume.fingerprint_matched)
+    std::cerr << "continuation: " << journal.path().string()
+              << " belongs to another study or version: starting afresh\n";
+  else if (!done.empty())
+    std::cerr << "continuation: resuming from " << journal.path().string() << " after point "
+              << done.back().orbit.index << " (" << done.size() << " records)\n";
+
+  std::vector<TrimContinuationPoint> points = done;
+  const TrimContinuationSummary s = continueTrim(
+      model, study.trim, co,
+      [&](const TrimContinuationPoint& p) {
+        journal.append(points.size(), encodePoint(p));
+        // The point as the journal holds it, so that a resumed run writes the same bytes.
+        TrimContinuationPoint exact;
+        decodePoint(encodePoint(p), &exact);
+        points.push_back(exact);
+        std::cerr << "continuation: " << (p.orbit.event.empty() ? "point " : p.orbit.event + " ")
+                  << p.orbit.index << ": " << continuationParameterName(co.parameter) << " "
+                  << parameterFileValue(co.parameter, p)
+                  << (p.orbit.stable ? " stable" : " unstable") << ", max |mu| "
+                  << p.orbit.max_modulus << "\n";
+        return true;
+      },
+      done);
+
+  const bool failed = s.status == ContinuationStatus::kFailed;
+  writeFileAtomic(out_dir / "study.resolved.toml", resolved);
+  writeFileAtomic(out_dir / "continuation.csv", branchTable(co.parameter, points).toString());
+  std::vector<JsonObject> events;
+  int stable_points = 0, regular = 0;
+  for (const TrimContinuationPoint& p : points) {
+    if (!p.orbit.event.empty()) {
+      events.push_back(JsonObject()
+                           .set("event", p.orbit.event)
+                           .set(continuationParameterName(co.parameter),
+                                parameterFileValue(co.parameter, p))
+                           .set("theta_mean_deg", p.solution.theta_rad * kRadToDeg)
+                           .set("speed_mps", p.solution.speed_mps)
+                           .set("tail_angle_deg", p.solution.tail_angle_rad * kRadToDeg)
+                           .set("max_modulus", p.orbit.max_modulus)
+                           .set("leading_label", p.leading_label));
+    } else {
+      ++regular;
+      stable_points += p.orbit.stable ? 1 : 0;
+    }
+  }
+  const double wall_s =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  JsonObject summary;
+  summary.set("kind", "continuation")
+      .set("status", toString(s.status))
+      .set("message", s.message)
+      .set("wall_time_s", wall_s)
+      .set("version", versionString())
+      .set("parameter", continuationParameterName(co.parameter))
+      .set("parameter_unit", parameterUnit(co.parameter))
+      .set("control", toString(study.trim.periodic.control))
+      .set("to", co.parameter == PeriodicControl::kTailAngle ? co.to * kRadToDeg : co.to)
+      .set("points", regular)
+      .set("points_stable", stable_points)
+      .set("points_resumed", static_cast<int>(done.size()))
+      .setObjects("events", events)
+      .setObjects("stable_stretches", stableStretches(co.parameter, points))
+      .set("start", startObject(s.start))
+      .set("friction_note",
+           "skin friction frozen during each step at the previous point's mean airspeed (a "
+           "periodic trim solved at a point directly takes its own orbit's: they differ by "
+           "that one step)")
+      .set("stability_note",
+           "stable = every Floquet multiplier of the orbit's states (body, wing modes, MST-TD "
+           "states; altitude and position excluded) inside the unit circle; all multipliers from "
+           "the full monodromy matrix at every point")
+      .set("period_maps", s.period_maps);
+  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  if (!points.empty())
+    drawFigure(out_dir, "continuation",
+               branchFigure(study, co.parameter, study.trim.periodic.control, toString(s.status)));
+  journal.remove();  // every point is in continuation.csv and the figure is drawn
+  std::cout << study.name << ": continuation " << toString(s.status) << ": " << regular
+            << " points, " << events.size() << " events; " << s.message << "\n  -> "
+            << out_dir.string() << "\n";
+  return failed ? 1 : 0;
+}
+
+}  // namespace orni::studies

@@ -1,0 +1,91 @@
+#include "studies/runner/config/continuation_section.hpp"
+
+#include <cmath>
+#include <utility>
+
+#include "core/model/field_table.hpp"
+#include "core/model/frames.hpp"
+
+namespace orni::studies {
+
+namespace {
+
+using orni::PeriodicControl;
+
+std::vector<std::pair<std::string, PeriodicControl>> parameterChoices() {
+  return {{"freq_hz", PeriodicControl::kFrequency},
+          {"tail_angle_deg", PeriodicControl::kTailAngle},
+          {"cg_shift_m", PeriodicControl::kCgPosition}};
+}
+
+// A forward CG shift beyond 0.1 m moves the CG of a vehicle of the magpie's size (tail arm 0.14 m,
+// root chord 0.1 m) off the airframe: no branch worth following goes there.
+constexpr Range kCgShiftRange = Range::closed(-0.1, 0.1);
+
+/// SI per file unit of the parameter (deg -> rad for the tail angle).
+double siPerFile(PeriodicControl p) {
+  return p == PeriodicControl::kTailAngle ? orni::kDegToRad : 1.0;
+}
+
+/// The range of the branch's end in file units.
+
+Range endRange(PeriodicControl p) {
+  switch (p) {
+    case PeriodicControl::kFrequency: return orni::field("trim.freq_hz").range;
+    case PeriodicControl::kTailAngle: return orni::field("trim.initial.tail_angle_deg").range;
+    case PeriodicControl::kCgPosition: return kCgShiftRange;
+  }
+  return kCgShiftRange;
+}
+
+/// The default first step in file units: 0.2 Hz, 0.5 deg, 2 mm (about 30 points over the ranges
+/// a designer asks for: 10-16 Hz, a 15 deg tail range, a 6 cm CG range).
+double defaultStep(PeriodicControl p) {
+  switch (p) {
+    case PeriodicControl::kFrequency: return 0.2;
+    case PeriodicControl::kTailAngle: return 0.5;
+    case PeriodicControl::kCgPosition: return 0.002;
+  }
+  return 0.2;
+}
+
+}  // namespace
+
+std::vector<std::string> continuationSectionKeys() {
+  return {"parameter", "to", "step", "max_points", "locate_events"};
+}
+
+const char* continuationParameterName(PeriodicControl p) {
+  switch (p) {
+    case PeriodicControl::kFrequency: return "freq_hz";
+    case PeriodicControl::kTailAngle: return "tail_angle_deg";
+    case PeriodicControl::kCgPosition: return "cg_shift_m";
+  }
+  return "freq_hz";
+}
+
+orni::TrimContinuationOptions readContinuationSection(TableReader& t) {
+  orni::TrimContinuationOptions o;
+  o.parameter = t.requiredEnum("parameter", parameterChoices());
+  const double si = siPerFile(o.parameter);
+  const std::string unit_note =
+      std::string(" (the range of ") + continuationParameterName(o.parameter) + ")";
+  o.to = t.requiredDouble("to", endRange(o.parameter), unit_note) * si;
+  const Range width = Range::openClosed(0.0, endRange(o.parameter).hi - endRange(o.parameter).lo);
+  o.step = t.optionalDouble("step", defaultStep(o.parameter), width) * si;
+  o.max_points = t.optionalInt(orni::field("continuation.max_points"), o.max_points);
+  o.locate_events = t.optionalBool("locate_events", o.locate_events);
+  t.finish();
+  return o;
+}
+
+void writeContinuationSection(const orni::TrimContinuationOptions& o, TomlWriter& out) {
+  out.header({"continuation"});
+  out.string("parameter", continuationParameterName(o.parameter));
+  out.scaled("to", o.to, siPerFile(o.parameter));
+  out.scaled("step", o.step, siPerFile(o.parameter));
+  out.integer("max_points", o.max_points);
+  out.boolean("locate_events", o.locate_events);
+}
+
+}  // namespace orni::studies

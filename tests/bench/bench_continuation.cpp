@@ -1,0 +1,49 @@
+// Speed of the continuation of trimmed flight (issue 16 target: the magpie's trim branch over
+// 10-16 Hz with 30 points in at most 10 s on one core).
+//   BM_ContinuationEfw : `ornithopter run` of a continuation study without I/O: the periodic trim
+//                        at the start, then the branch with all multipliers at every point (the
+//                        full monodromy by forward differences of the period map: one map per
+//                        state) and the cycle means. Arguments: start and end frequency (Hz),
+//                        points; counters: points, period maps, events, stable points.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "studies/runner/config/vehicle_file.hpp"
+#include "trim/trim_continuation.hpp"
+
+namespace {
+
+using namespace orni;
+
+void BM_ContinuationEfw(benchmark::State& state) {
+  const FlightCoreModel model(
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml"));
+  TrimOptions o = defaultTrimOptions(model.vehicle);
+  o.initial.freq_hz = static_cast<double>(state.range(0));
+  usePeriodicMethod(&o);
+  TrimContinuationOptions co;
+  co.parameter = PeriodicControl::kFrequency;
+  co.to = static_cast<double>(state.range(1));
+  co.max_points = static_cast<int>(state.range(2));
+  co.step = (co.to - o.initial.freq_hz) / co.max_points;
+  TrimContinuationSummary s;
+  for (auto _ : state) {
+    s = continueTrim(model, o, co);
+    benchmark::DoNotOptimize(s.points.size());
+  }
+  int stable = 0;
+  for (const TrimContinuationPoint& p : s.points) stable += p.orbit.stable ? 1 : 0;
+  state.counters["points"] = static_cast<double>(s.points.size());
+  state.counters["period_maps"] = static_cast<double>(s.period_maps);
+  state.counters["events"] = s.events;
+  state.counters["stable"] = stable;
+  state.counters["completed"] = s.status == ContinuationStatus::kCompleted ? 1.0 : 0.0;
+}
+BENCHMARK(BM_ContinuationEfw)
+    ->Args({12, 16, 30})
+    ->Args({10, 16, 30})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
+
+}  // namespace
