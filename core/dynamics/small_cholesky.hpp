@@ -1,14 +1,16 @@
 // Cholesky factorisation and solves of the small SPD systems of the right-hand side (the modal
-// mass matrix of the wing, M x M, or the free-flight mass matrix, (3 + M) x (3 + M); M ~ 12).
-// Square-root-free form A = L D L^T (unit lower L, diagonal D > 0) on the packed lower triangle,
-// right-looking: a pivot costs one division and no square root (the pivots are a serial chain),
-// and after each pivot the trailing columns are updated independently. Plain loops on a
-// preallocated factor: at these sizes Eigen's dynamic-size LLT spends more on its blocking (one
-// GEMV per column) and triangular-solve dispatch than on the arithmetic. The factor is stored
-// column-major with the column length padded to a multiple of 4 (one AVX2 register) so that every
-// column update is whole vectors from an aligned row: the rows above the diagonal that this also
-// updates are never read, and the lower triangle gets exactly the operations of the unpadded
-// loop (same values). No allocation after construction.
+// mass matrix of the wing, M x M, or the free-flight mass matrix, (3 + M) x (3 + M); M ~ 24).
+// Square-root-free form A = L D L^T (unit lower L, diagonal D > 0) from the lower triangle (a
+// matrix or a packed triangle), right-looking: a pivot costs one division and no square root (the
+// pivots are a serial chain). Plain loops on a preallocated factor: at these sizes Eigen's
+// dynamic-size LLT spends more on its blocking (one GEMV per column) and triangular-solve
+// dispatch than on the arithmetic. The factor is stored column-major with the column length
+// padded to a multiple of 4 (one AVX2 register) so that every column update is whole vectors
+// from an aligned row (the rows above the diagonal that this also updates are scratch, never
+// read), and the pivots go in blocks of 4: one sweep over each later column applies the block's
+// four updates, in the order of the pivot-by-pivot loop (same values, a quarter of the loop
+// overhead). The back substitution runs by rows of L, so its multiply-adds are independent
+// instead of one dependent chain. No allocation after construction.
 #pragma once
 
 #include <algorithm>
