@@ -29,39 +29,46 @@ void StripBatch::resize(int n) {
 namespace {
 // atan2 without a branch: octant reduction to |u| <= tan(pi/16) and the odd Taylor series of
 // atan to u^23 (|u|^25/25 < 1e-19). Only selects, so the strip loops vectorise with it inline.
+// One division: with lo = min(|x|,|y|), hi = max(|x|,|y|) and a = lo/hi in [0, 1],
+// atan(a) = atan(c) + atan((a - c)/(1 + a c)) = atan(c) + atan((lo - c hi)/(hi + c lo)) with c in
+// {0, tan(pi/8), 1}, the octant chosen by comparing lo with tan(pi/16) hi and tan(3 pi/16) hi.
 inline double atan2Poly(double y, double x) {
   const double t1 = 0.19891236737965800691;  // tan(pi/16)
   const double t3 = 0.66817863791929891999;  // tan(3 pi/16)
   const double c1 = 0.41421356237309504880;  // tan(pi/8)
   const double ax = std::abs(x), ay = std::abs(y);
-  // a = min(|x|,|y|) / max(|x|,|y|) in [0, 1] (0 when both are 0).
-  const double a = std::min(ax, ay) / std::max(std::max(ax, ay), 1e-300);
-  // atan(a) = atan(c) + atan((a - c)/(1 + a c)) with c in {0, tan(pi/8), 1}.
-  const double u_mid = (a - c1) / (1.0 + a * c1), u_high = (a - 1.0) / (a + 1.0);
-  const double u = a < t1 ? a : (a < t3 ? u_mid : u_high);
-  const double base = a < t1 ? 0.0 : (a < t3 ? kPi / 8.0 : kPi / 4.0);
-  const double u2 = u * u;
-  double r = base + u * (1.0 + u2 * (-1.0 / 3 + u2 * (1.0 / 5 + u2 * (-1.0 / 7 + u2 * (1.0 / 9 + u2 * (
-                 -1.0 / 11 + u2 * (1.0 / 13 + u2 * (-1.0 / 15 + u2 * (1.0 / 17 + u2 * (
-                 -1.0 / 19 + u2 * (1.0 / 21 + u2 * (-1.0 / 23))))))))))));
+  const double lo = std::min(ax, ay), hi = std::max(std::max(ax, ay), 1e-300);  // u = 0 at rest
+  const bool low = lo < t1 * hi, mid = lo < t3 * hi;
+  const double num = low ? lo : (mid ? lo - c1 * hi : lo - hi);
+  const double den = low ? hi : (mid ? hi + c1 * lo : hi + lo);
+  const double u = num / den;
+  const double base = low ? 0.0 : (mid ? kPi / 8.0 : kPi / 4.0);
+  // Estrin's scheme in u^2 (see sinPoly).
+  const double u2 = u * u, u4 = u2 * u2, u8 = u4 * u4;
+  const double p0 = 1.0 - u2 * (1.0 / 3), p1 = 1.0 / 5 - u2 * (1.0 / 7);
+  const double p2 = 1.0 / 9 - u2 * (1.0 / 11), p3 = 1.0 / 13 - u2 * (1.0 / 15);
+  const double p4 = 1.0 / 17 - u2 * (1.0 / 19), p5 = 1.0 / 21 - u2 * (1.0 / 23);
+  const double q0 = p0 + u4 * p1, q1 = p2 + u4 * p3, q2 = p4 + u4 * p5;
+  double r = base + u * (q0 + u8 * (q1 + u8 * q2));
   // Undo the octant reduction.
   r = ay > ax ? kHalfPi - r : r;
   r = x < 0.0 ? kPi - r : r;
   return y < 0.0 ? -r : r;
 }
-// sin and cos of |x| <= 2 (the lagged 3/4-chord angle is clipped to +-pi/2, plus alpha0) without
-// a call, so the strip loop still vectorises: the Taylor series to x^23 / x^22 (remainders below
+// sin of |x| <= 2 (the lagged 3/4-chord angle is clipped to +-pi/2, plus alpha0) without a
+// call, so the strip loop still vectorises: the Taylor series to x^23 (remainder below
 // 2^25/25! = 2e-18). Outside that range (never reached) the error grows.
-inline void sinCosPoly(double x, double* s, double* c) {
-  const double x2 = x * x;
-  *s = x * (1.0 + x2 * (-1.0 / 6 + x2 * (1.0 / 120 + x2 * (-1.0 / 5040 + x2 * (1.0 / 362880 + x2 * (
-           -1.0 / 39916800 + x2 * (1.0 / 6227020800.0 + x2 * (-1.0 / 1307674368000.0 + x2 * (
-           1.0 / 355687428096000.0 + x2 * (-1.0 / 121645100408832000.0 + x2 * (
-           1.0 / 51090942171709440000.0 + x2 * (-1.0 / 25852016738884976640000.0))))))))))));
-  *c = 1.0 + x2 * (-1.0 / 2 + x2 * (1.0 / 24 + x2 * (-1.0 / 720 + x2 * (1.0 / 40320 + x2 * (
-           -1.0 / 3628800 + x2 * (1.0 / 479001600.0 + x2 * (-1.0 / 87178291200.0 + x2 * (
-           1.0 / 20922789888000.0 + x2 * (-1.0 / 6402373705728000.0 + x2 * (
-           1.0 / 2432902008176640000.0 + x2 * (-1.0 / 1124000727777607680000.0)))))))))));
+inline double sinPoly(double x) {
+  // Estrin's scheme in x^2 (the same polynomial; a short dependency chain instead of Horner's 12
+  // steps, the strip loop's latency is the cost).
+  const double x2 = x * x, x4 = x2 * x2, x8 = x4 * x4;
+  const double p0 = 1.0 - x2 * (1.0 / 6), p1 = 1.0 / 120 - x2 * (1.0 / 5040);
+  const double p2 = 1.0 / 362880 - x2 * (1.0 / 39916800);
+  const double p3 = 1.0 / 6227020800.0 - x2 * (1.0 / 1307674368000.0);
+  const double p4 = 1.0 / 355687428096000.0 - x2 * (1.0 / 121645100408832000.0);
+  const double p5 = 1.0 / 51090942171709440000.0 - x2 * (1.0 / 25852016738884976640000.0);
+  const double q0 = p0 + x4 * p1, q1 = p2 + x4 * p3, q2 = p4 + x4 * p5;
+  return x * (q0 + x8 * (q1 + x8 * q2));
 }
 }  // namespace
 
@@ -103,6 +110,7 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
   const double alpha0 = params.zero_lift_angle_rad;
   const double C1 = context.constants.C1, C2 = context.constants.C2;
   const double J = context.constants.jones_factor;
+  const double one_minus_J2 = 1.0 - J * J;
   const double min_speed = params.min_speed_mps;
   const double stall_max = params.stall_angle_max_rad, stall_min = params.stall_angle_min_rad;
   const double stall_mid = 0.5 * (stall_max + stall_min);
@@ -121,7 +129,7 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
   double* __restrict Vn50_a = b.t[6].data();
   double* __restrict vdot2_a = b.t[7].data();
   double* __restrict Vr_a = b.t[8].data();
-  double* __restrict alpha_t_a = b.t[9].data();
+  double* __restrict inv_Vr_a = b.t[9].data();
   double* __restrict fst_arg = b.t[10].data();  // then f_st
   double* __restrict zdot = b.t[11].data();
   double* __restrict f_state_a = b.t[12].data();
@@ -180,13 +188,13 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
     const double alpha_E = (1.0 - C1) * alpha34 + C1 * z;
     const double alpha_t = J * (alpha_E + alpha0) - alpha0;  // alpha'_t
     // Bounded attached flow (boundedAttachedFlow, mst_strip.hpp): J sin(alpha_E + alpha0) and
-    // the speed ratio V_K / V_r = sqrt(cos^2 + (J sin)^2) of DeLaurier's dynamic pressure.
-    double sE, cE;
-    sinCosPoly(alpha_E + alpha0, &sE, &cE);
-    const double angle_b = J * sE;
-    speed_ratio_a[j] = std::sqrt(cE * cE + angle_b * angle_b);
-    angle_b_a[j] = angle_b;
-    const double alpha_crit = alpha_t - (lever75[j] + xP[j]) * thd * (1.0 / Vr);  // 9.4.2: 0.75 c
+    // the speed ratio V_K / V_r = sqrt(cos^2 + (J sin)^2) = sqrt(1 - (1 - J^2) sin^2) of
+    // DeLaurier's dynamic pressure.
+    const double sE = sinPoly(alpha_E + alpha0);
+    speed_ratio_a[j] = std::sqrt(1.0 - one_minus_J2 * (sE * sE));
+    angle_b_a[j] = J * sE;
+    const double inv_Vr = 1.0 / Vr;
+    const double alpha_crit = alpha_t - (lever75[j] + xP[j]) * thd * inv_Vr;  // 9.4.2: 0.75 c
     // 9.4.1: f_st = 0.5 [1 - tanh(x)] = 1 / (1 + exp(2x)), split at the midpoint of the limits.
     const double x = alpha_crit >= stall_mid ? alpha_crit - stall_max : stall_min - alpha_crit;
     fst_arg[j] = std::min(stall_scale * x, 700.0);
@@ -201,7 +209,7 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
     Vn50_a[j] = qn + thd * lever50[j];
     vdot2_a[j] = vdot2;
     Vr_a[j] = Vr;
-    alpha_t_a[j] = alpha_t;
+    inv_Vr_a[j] = inv_Vr;
   }
   {
     Eigen::Map<ArrayXd> arg(fst_arg, n);
@@ -237,7 +245,7 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
     const double dNs = k_crossflow[j] * std::sqrt(Vt * Vt + Vn50 * Vn50) * Vn50;  // dNc_s
     const double dN2 = (1.0 - f) * dNs + 0.5 * (1.0 + f) * dNa;
     // Chordwise: suction (off in reversed flow), camber, friction (M9-M12), blended (9.4.2).
-    const double alpha_s = angle_b - alpha0 - (lever25[j] + xP[j]) * thd * (1.0 / Vr);  // suction
+    const double alpha_s = angle_b - alpha0 - (lever25[j] + xP[j]) * thd * inv_Vr_a[j];  // suction
     double dFx = Vt > 0.0 ? suction_eff * kTwoPi * alpha_s * alpha_s * qcdy : 0.0;  // dTs
     dFx += kTwoPi * alpha0 * (angle_b - alpha0) * qcdy;                        // - dDcamber
     dFx = std::sqrt(f) * dFx - f * (k_friction[j] * Vt * std::abs(Vt));

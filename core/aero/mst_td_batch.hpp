@@ -2,8 +2,8 @@
 // fused passes over the strips that the compiler vectorises (kinematics, lag and stall angle;
 // then separation and loads), with Eigen's vectorised exp for f_st between them. Same equations,
 // same order of operations, as evalMstTd() (the scalar reference, tests/unit/aero/
-// test_mst_td_batch.cpp checks them against each other); only atan2 is replaced by a
-// branch-free version accurate to a few ulp.
+// test_mst_td_batch.cpp checks them against each other); only atan2 and sin are replaced by
+// branch-free series accurate to a few ulp, and the speed ratio uses cos^2 = 1 - sin^2.
 //
 // Scope: the Scherer lag (option A, states [z, f] per strip) with a smooth stall (stall width > 0);
 // other settings use the scalar kernel. The workspace is sized once; evaluation never allocates.

@@ -1,5 +1,6 @@
-// The right-hand side's SPD solver (core/dynamics/small_cholesky.hpp, packed L D L^T) against
-// Eigen's LLT, and the packed layout shared with the apparent-mass stack (flexible_wing.hpp).
+// The right-hand side's SPD solver (core/dynamics/small_cholesky.hpp, L D L^T on padded
+// columns) against Eigen's LLT, and the packed layout shared with the apparent-mass stack
+// (flexible_wing.hpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -61,6 +62,28 @@ TEST(SmallCholesky, ReadsOnlyTheLowerTriangle) {
   Eigen::VectorXd x = b;
   chol.solveInPlace(x);
   EXPECT_LT((x - x_ref).norm(), kSolveRelTol * x_ref.norm());
+}
+
+TEST(SmallCholesky, ReusedFactorGivesTheBitsOfAFreshOne) {
+  // The padded rows above the diagonal are scratch of the blocked update: what an earlier,
+  // larger-scaled or failed factorisation left there must not reach the next solve.
+  std::mt19937 rng(13);
+  for (int n : {5, 12, 24, 27}) {
+    const Eigen::MatrixXd A = randomSpd(n, &rng), B = randomSpd(n, &rng);
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 2.0, -1.0);
+    SmallCholesky fresh(n), reused(n);
+    ASSERT_TRUE(fresh.factor(B));
+    Eigen::VectorXd x_fresh = b;
+    fresh.solveInPlace(x_fresh);
+    ASSERT_TRUE(reused.factor(1e6 * A));
+    Eigen::MatrixXd bad = A;
+    bad(n / 2, n / 2) = -1.0;
+    reused.factor(bad);  // fails part-way (or not), leaving partial values behind
+    ASSERT_TRUE(reused.factor(B));
+    Eigen::VectorXd x = b;
+    reused.solveInPlace(x);
+    EXPECT_EQ((x - x_fresh).cwiseAbs().maxCoeff(), 0.0) << "n = " << n;
+  }
 }
 
 TEST(SmallCholesky, RejectsMatricesThatAreNotPositiveDefinite) {
