@@ -60,13 +60,19 @@ def _read_summary(out_dir):
 
 
 def _read_csv(path):
-    """A CSV of a run (names row, units row, data) as {name: float64 array}, units in "units"."""
+    """A CSV of a run (names row, units row, data) as {name: NumPy array}: float64 for numeric
+    columns (the CLI writes the shortest text that reads back exactly), str for word columns
+    (status); "units": {name: unit}."""
     with open(path, newline="", encoding="utf-8") as f:
         rows = list(_csv.reader(f))
-    names, units = rows[0], rows[1]
-    data = _np.array([[float(x) if x not in ("", "nan") else _np.nan for x in r] for r in rows[2:]],
-                     dtype=float).reshape(len(rows) - 2, len(names))
-    out = {n: data[:, j] for j, n in enumerate(names)}
+    names, units, data = rows[0], rows[1], rows[2:]
+    out = {}
+    for j, name in enumerate(names):
+        cells = [r[j] for r in data]
+        try:
+            out[name] = _np.array([float(x) if x != "" else _np.nan for x in cells], dtype=float)
+        except ValueError:
+            out[name] = _np.array(cells, dtype=str)
     out["units"] = dict(zip(names, units))
     return out
 

@@ -31,6 +31,7 @@ void VehicleObject::adopt(VehicleModel model) {
   // re-read from it after a set is this one with only that value changed.
   document_ = studies::parseTomlText(studies::vehicleToToml(model_), kPythonSource);
   keys_ = leafKeys(document_);
+  const std::lock_guard<std::mutex> lock(*core_mutex_);
   core_.reset();
 }
 
@@ -51,15 +52,17 @@ void VehicleObject::set(const std::string& key, const py::handle& value) {
   context.file = kPythonSource;
   // The file reader, exactly: the field table's type and range, the cross-checks, unknown keys.
   VehicleModel model = studies::parseVehicleTable(changed, context, std::string());
-  model_ = std::move(model);
   document_ = std::move(changed);
   keys_ = leafKeys(document_);
+  const std::lock_guard<std::mutex> lock(*core_mutex_);  // coreModel() reads model_ without the GIL
+  model_ = std::move(model);
   core_.reset();
 }
 
 std::string VehicleObject::toToml() const { return studies::vehicleToToml(model_); }
 
 std::shared_ptr<const FlightCoreModel> VehicleObject::coreModel() const {
+  const std::lock_guard<std::mutex> lock(*core_mutex_);
   if (!core_) core_ = std::make_shared<const FlightCoreModel>(model_);
   return core_;
 }

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include <memory>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -32,7 +33,8 @@ class VehicleObject {
   /// The vehicle as a TOML table (a study's inline [vehicle]).
   const toml::table& document() const { return document_; }
   const std::string& source() const { return source_; }
-  /// The core model of this vehicle, built once per vehicle state (simulate reuses it).
+  /// The core model of this vehicle, built once per vehicle state (simulate reuses it); safe to
+  /// call without the GIL from several threads.
   std::shared_ptr<const FlightCoreModel> coreModel() const;
 
  private:
@@ -42,7 +44,8 @@ class VehicleObject {
   toml::table document_;  ///< the resolved vehicle in file units and key names
   std::vector<std::string> keys_;
   std::string source_;    ///< the file it was read from
-  mutable std::shared_ptr<const FlightCoreModel> core_;
+  mutable std::shared_ptr<const FlightCoreModel> core_;  ///< guarded by core_mutex_
+  std::shared_ptr<std::mutex> core_mutex_ = std::make_shared<std::mutex>();
 };
 
 }  // namespace orni::python

@@ -29,7 +29,14 @@ def read_summary(folder):
 def read_csv_columns(path):
     with open(path, newline="", encoding="utf-8") as f:
         rows = list(csv.reader(f))
-    return {name: [float(r[j]) for r in rows[2:]] for j, name in enumerate(rows[0])}
+    out = {}
+    for j, name in enumerate(rows[0]):
+        cells = [r[j] for r in rows[2:]]
+        try:
+            out[name] = [float(x) for x in cells]
+        except ValueError:
+            out[name] = cells
+    return out
 
 
 def without_timings(d):

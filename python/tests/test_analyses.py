@@ -33,7 +33,7 @@ def test_aeromap_equals_cli_and_threads(tmp_path):
 
 
 def test_gil_released_during_aeromap():
-    v = ornithopter.load_vehicle(RFW)
+    v = ornithopter.load_vehicle(EFW)  # flexible wing: 20 points take a while
     count = [0]
     stop = threading.Event()
 
@@ -46,7 +46,7 @@ def test_gil_released_during_aeromap():
     time.sleep(0.05)
     before = count[0]
     t0 = time.monotonic()
-    ornithopter.aeromap(v, [4, 6, 8], [4], [0, 10, 20], threads=1)
+    ornithopter.aeromap(v, [12, 14, 16, 18], [12], [0, 5, 10, 15, 20], threads=1)
     elapsed = time.monotonic() - t0
     during = count[0] - before
     stop.set()
