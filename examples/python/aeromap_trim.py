@@ -56,15 +56,18 @@ def trim_figure(out, freqs):
                      t["mean"]["hinge_power_W"]))
         print("trim at %5.1f Hz: %-13s theta %6.2f deg, U %6.2f m/s" %
               (f, t["status"], t["theta_mean_deg"], t["speed_mps"]))
-    r = np.array([(f, th, u, p) for f, ok, th, u, p in rows if ok])
+    r = np.array([(f, th, u, p) for f, ok, th, u, p in rows])
+    ok = np.array([row[1] for row in rows], dtype=bool)
     fig, axes = plt.subplots(1, 3, figsize=(12, 4))
-    if len(r):
-        for a, col, label in zip(axes, (1, 2, 3), ("theta (deg)", "U (m/s)", "hinge power (W)")):
-            a.plot(r[:, 0], r[:, col], "o-")
-            a.set_xlabel("flapping frequency (Hz)")
-            a.set_ylabel(label)
-            a.grid(True)
-    fig.suptitle("Magpie level-flight trim (converged points)")
+    for a, col, label in zip(axes, (1, 2, 3), ("theta (deg)", "U (m/s)", "hinge power (W)")):
+        a.plot(r[:, 0], r[:, col], "-", color="0.6")
+        a.plot(r[ok, 0], r[ok, col], "o", color="C0", label="converged")
+        a.plot(r[~ok, 0], r[~ok, col], "o", mfc="none", color="C3", label="not converged")
+        a.set_xlabel("flapping frequency (Hz)")
+        a.set_ylabel(label)
+        a.grid(True)
+    axes[0].legend()
+    fig.suptitle("Magpie level-flight trim against flapping frequency")
     fig.savefig(os.path.join(out, "trim_vs_freq.png"), dpi=100)
     plt.close(fig)
     return rows

@@ -55,19 +55,22 @@ py::tuple simulateTetheredStudy(const VehicleObject& vehicle, const studies::Stu
       std::optional<FlightCoreModel> wing_alone;
       if (study.wing_only) wing_alone.emplace(study.vehicle.mainWingAlone());
       const FlightCoreModel& model = wing_alone ? *wing_alone : *whole;
+      // Without histories the run samples nothing (as BM_TetheredRfw10Cycles): the summary then
+      // lacks the last-cycle harmonics and the constrained flight test, which need the samples.
       SimulationOptions opts = study.simulate;
-      opts.record_history = true;
+      opts.record_history = histories;
       const std::size_t samples =
           static_cast<std::size_t>(opts.cycles) * static_cast<std::size_t>(opts.samples_per_cycle) +
           1;
       if (histories) rows->reserve(samples * studies::kHistoryColumns);
       HistoryBuffer buffer(rows.get(), histories);
       TimeHistory history;
-      const SimulationSummary s = simulateTethered(model, study.point, opts, &history, &buffer);
+      const SimulationSummary s =
+          simulateTethered(model, study.point, opts, histories ? &history : nullptr, &buffer);
       const double wall_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::optional<ConstrainedFlightTest> cft;
-      if (s.status != SimulationStatus::kFailed)
+      if (histories && s.status != SimulationStatus::kFailed)
         cft = studies::lastCycleConstrainedFlightTest(study, model, history,
                                                       opts.samples_per_cycle);
       summary_text =

@@ -12,7 +12,8 @@ namespace orni::python {
 
 /// Runs the tethered simulate study `study` (kind simulate, mode tethered, not at_trim) whose
 /// vehicle is `vehicle`'s. Returns (summary.json text, histories array of shape (samples,
-/// kHistoryColumns) in histories.csv's columns and units, or None when `histories` is false).
+/// kHistoryColumns) in histories.csv's columns and units, or None when `histories` is false: the
+/// run then samples nothing and the summary has no "last_cycle" nor "constrained_flight_test").
 pybind11::tuple simulateTetheredStudy(const VehicleObject& vehicle, const studies::Study& study,
                                       bool histories);
 

@@ -38,6 +38,7 @@ def test_histories_off_and_history_every():
     full = ornithopter.simulate(v, cycles=2)
     assert np.array_equal(b["histories"]["t"], full["histories"]["t"][::5])
     assert a["mean"] == full["mean"]
+    assert "last_cycle" in full and "last_cycle" not in a
 
 
 def test_bad_option_raises_input_error():
