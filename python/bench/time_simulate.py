@@ -18,13 +18,15 @@ ROOT = os.path.abspath(os.path.join(os.path.dirname(__file__), "..", ".."))
 
 
 def timed(call, n):
+    """Median and minimum wall time, median CPU time (Google Benchmark's "CPU" column) of a call."""
     call()  # warm-up (the vehicle's core model is built once, as in the benchmark)
-    times = []
+    wall, cpu = [], []
     for _ in range(n):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         call()
-        times.append(time.perf_counter() - t0)
-    return statistics.median(times), min(times)
+        wall.append(time.perf_counter() - t0)
+        cpu.append(time.process_time() - c0)
+    return statistics.median(wall), min(wall), statistics.median(cpu)
 
 
 def main():
@@ -33,9 +35,9 @@ def main():
     assert v["aero.model"] == "mst-td", v["aero.model"]
     args = dict(speed=6.0, freq=4.0, theta=0.0, tail=0.0, cycles=10)
     for histories in (False, True):
-        med, best = timed(lambda: ornithopter.simulate(v, histories=histories, **args), n)
-        print("simulate(histories=%-5s): median %.3f ms, min %.3f ms (%d calls)"
-              % (histories, med * 1e3, best * 1e3, n))
+        med, best, cpu = timed(lambda: ornithopter.simulate(v, histories=histories, **args), n)
+        print("simulate(histories=%-5s): wall median %.3f ms, min %.3f ms; CPU median %.3f ms"
+              " (%d calls)" % (histories, med * 1e3, best * 1e3, cpu * 1e3, n))
 
 
 if __name__ == "__main__":

@@ -73,3 +73,15 @@ def test_ctrl_c_stops_a_long_run():
         ornithopter.simulate(v, cycles=100000, histories=False)  # ~15 s uninterrupted
     assert time.monotonic() - t0 < 3.0
     timer.join()
+
+
+def test_free_flight_equals_cli(tmp_path):
+    from conftest import EFW
+    out = tmp_path / "cli"
+    assert cli("simulate", EFW, "--mode", "free", "--cycles", 4, "-o", out) == 0
+    got = ornithopter.simulate(ornithopter.load_vehicle(EFW), mode="free", cycles=4)
+    histories = got.pop("histories")
+    assert without_timings(got) == without_timings(read_summary(out))
+    columns = read_csv_columns(out / "histories.csv")
+    for name, values in columns.items():
+        assert np.array_equal(histories[name], np.array(values)), name
