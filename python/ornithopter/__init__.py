@@ -111,8 +111,11 @@ def simulate(vehicle, mode="tethered", speed=None, freq=None, theta=None, tail=N
       tail    tail angle, deg (simulate.tail_angle_deg)
       cycles  flapping cycles, default 10 (simulate.cycles)
       histories  sample the run and return the histories (default True). False samples
-              nothing (the C++ benchmark's work): the summary then has no "last_cycle" nor
-              "constrained_flight_test" (they need the samples); the rest is unchanged.
+              nothing (the C++ benchmark's work): the integrator then takes its own steps
+              without stopping at the samples, so the means differ from the CLI's (which always
+              samples) within the integrator's tolerance (rel_tol), and the summary has no
+              "last_cycle" nor "constrained_flight_test" (they need the samples). Only the
+              default (True) equals the CLI's summary.json to the last bit.
       out     also keep the CLI's files in this folder (runs the CLI's command; default None)
       **options  any other [simulate] key in file units: rel_tol (default 1e-6), abs_tol,
               samples_per_cycle (default 100), steady_tol, history_every (default 1),

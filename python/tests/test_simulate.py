@@ -37,7 +37,10 @@ def test_histories_off_and_history_every():
     b = ornithopter.simulate(v, cycles=2, history_every=5)
     full = ornithopter.simulate(v, cycles=2)
     assert np.array_equal(b["histories"]["t"], full["histories"]["t"][::5])
-    assert a["mean"] == full["mean"]
+    # Unsampled, the integrator takes its own steps: the means agree within its tolerance.
+    for k in ("FH_N", "power_W", "hinge_power_W"):
+        assert abs(a["mean"][k] - full["mean"][k]) <= 1e-3 * abs(full["mean"][k]), k
+    assert abs(a["mean"]["FV_N"] - full["mean"]["FV_N"]) <= 1e-3 * abs(full["mean"]["FH_N"])
     assert "last_cycle" in full and "last_cycle" not in a
 
 
