@@ -18,6 +18,8 @@ packages=(
   libeigen3-dev libsundials-dev libceres-dev libnlopt-dev libnlopt-cxx-dev libspectra-dev
   libtomlplusplus-dev libcli11-dev libgtest-dev libgmock-dev libbenchmark-dev gnuplot-nox
   calculix-ccx
+  # the Python module ornithopter (python/), its pytest suite and example
+  pybind11-dev python3-numpy python3-pytest python3-matplotlib
   # the readers' libFuzzer target (.ci/run); flock and unshare of the CLI tests
   clang-14 libclang-rt-14-dev util-linux
 )

@@ -26,7 +26,7 @@
 #include "studies/runner/commands/optimize_command.hpp"
 #include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
-#include "studies/runner/commands/continuation_command.hpp"
+#include "studies/runner/commands/run_study.hpp"
 #include "studies/runner/commands/sensitivity_command.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/commands/sweep_command.hpp"
@@ -120,11 +120,6 @@ std::vector<std::string> subcommandNames(CLI::App& app) {
   return names;
 }
 
-/// The file a study came from, for messages: the study file, or the vehicle file it was made of.
-std::string inputFileOf(const Study& study) {
-  return displayPath(study.study_path.empty() ? study.vehicle_path : study.study_path);
-}
-
 fs::path outputFolder(const std::optional<std::string>& out_opt, const Study& study,
                       bool several) {
   if (!out_opt) return fs::path("results") / study.name;
@@ -137,63 +132,6 @@ void requireBodyForFreeFlight(const Study& study) {
     throw InputError::missingKey(inputFileOf(study), 0, "body",
                                  "a [body] table: free flight needs the vehicle's mass and pitch "
                                  "inertia");
-}
-
-int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
-  switch (study.kind) {
-    case StudyKind::kSimulate:
-      return runSimulateStudy(study, out_dir);
-    case StudyKind::kAeromap: {
-      AeromapRunOptions opts;
-      opts.threads = jobs;
-      return runAeromapStudy(study, out_dir, opts);
-    }
-    case StudyKind::kModes:
-      return runModesStudy(study, out_dir);
-    case StudyKind::kTrim:
-      return runTrimStudy(study, out_dir);
-    case StudyKind::kCalibrate:
-      return runCalibrateStudy(study, out_dir);
-    case StudyKind::kSweep: {
-      SweepRunOptions opts;
-      opts.threads = jobs;
-      return runSweepStudy(study, out_dir, opts);
-    }
-    case StudyKind::kContinuation:
-      return runContinuationStudy(study, out_dir);
-    case StudyKind::kSensitivity: {
-      SensitivityRunOptions opts;
-      opts.threads = jobs;
-      return runSensitivityStudy(study, out_dir, opts);
-    }
-    case StudyKind::kOptimize: {
-      OptimizeRunOptions opts;
-      opts.threads = jobs;
-      return runOptimizeStudy(study, out_dir, opts);
-    }
-    default:
-      std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
-                << toString(study.kind)
-                << "' is not available in this version yet (see the open issues)\n";
-      return kExitFailed;
-  }
-}
-
-/// Runs `study` into `out_dir`, which the caller holds locked. A model check of core
-/// (InvalidModelError) is bad input: reported with the study's file, exit 2.
-int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
-  try {
-    return runStudyKind(study, out_dir, jobs);
-  } catch (const InvalidModelError& e) {
-    throw InputError(inputFileOf(study), 0, std::string(), std::string("invalid model: ") +
-                                                               e.what());
-  }
-}
-
-/// Locks `out_dir` (exit 2 at once when another run holds it) and runs `study` into it.
-int runStudyLocked(const Study& study, const fs::path& out_dir, int jobs) {
-  const OutputFolderLock lock(out_dir);
-  return runStudy(study, out_dir, jobs);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <iterator>
 #include <optional>
 #include <sstream>
 
@@ -23,6 +24,44 @@
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies {
+
+const std::vector<CsvColumn>& historyColumns() {
+  static const std::vector<CsvColumn> columns = {
+      {"t", "s"},           {"delta_M", "deg"},          {"FV", "N"},
+      {"FH", "N"},          {"M", "N m"},                {"power_aero", "W"},
+      {"power_hinge", "W"}, {"FV_wing_aero", "N"},       {"FH_wing_aero", "N"},
+      {"M_wing_aero", "N m"}, {"FV_wing_inertial", "N"}, {"FH_wing_inertial", "N"},
+      {"M_wing_inertial", "N m"}, {"FV_tail", "N"},      {"FH_tail", "N"},
+      {"FH_body", "N"},     {"M_tail", "N m"},           {"separated_fraction", "-"},
+      {"tip_deflection", "m"}, {"tip_twist", "deg"}};
+  return columns;
+}
+
+void historyRow(double t_s, double delta_M_rad, const LoadSample& l, double* row) {
+  const double values[] = {t_s,
+                           delta_M_rad * kRadToDeg,
+                           l.FV_N,
+                           l.FH_N,
+                           l.M_Nm,
+                           l.power_aero_W,
+                           l.power_hinge_W,
+                           l.FV_wing_aero_N,
+                           l.FH_wing_aero_N,
+                           l.M_wing_aero_Nm,
+                           l.FV_wing_inertial_N,
+                           l.FH_wing_inertial_N,
+                           l.M_wing_inertial_Nm,
+                           l.FV_tail_N,
+                           l.FH_tail_N,
+                           l.FH_body_N,
+                           l.M_tail_Nm,
+                           l.separated_fraction,
+                           l.tip_deflection_m,
+                           l.tip_twist_rad * kRadToDeg};
+  static_assert(sizeof values / sizeof values[0] == kHistoryColumns,
+                "one value per histories.csv column");
+  std::copy(std::begin(values), std::end(values), row);
+}
 
 namespace {
 
@@ -59,27 +98,7 @@ SimulationTrim trimForSimulation(const Study& study) {
 class TetheredRunFiles : public TetheredRunObserver {
  public:
   TetheredRunFiles(const std::filesystem::path& out_dir, int history_every)
-      : histories_(out_dir / "histories.csv",
-                   {{"t", "s"},
-                    {"delta_M", "deg"},
-                    {"FV", "N"},
-                    {"FH", "N"},
-                    {"M", "N m"},
-                    {"power_aero", "W"},
-                    {"power_hinge", "W"},
-                    {"FV_wing_aero", "N"},
-                    {"FH_wing_aero", "N"},
-                    {"M_wing_aero", "N m"},
-                    {"FV_wing_inertial", "N"},
-                    {"FH_wing_inertial", "N"},
-                    {"M_wing_inertial", "N m"},
-                    {"FV_tail", "N"},
-                    {"FH_tail", "N"},
-                    {"FH_body", "N"},
-                    {"M_tail", "N m"},
-                    {"separated_fraction", "-"},
-                    {"tip_deflection", "m"},
-                    {"tip_twist", "deg"}},
+      : histories_(out_dir / "histories.csv", historyColumns(),
                    static_cast<std::size_t>(history_every)),
         cycles_(out_dir / "cycles.csv", {{"cycle", "-"},
                                          {"FV_mean", "N"},
@@ -89,27 +108,8 @@ class TetheredRunFiles : public TetheredRunObserver {
                                          {"power_hinge_mean", "W"}}) {}
 
   void onSample(double t_s, double delta_M_rad, const LoadSample& l) override {
-    const double row[] = {t_s,
-                          delta_M_rad * kRadToDeg,
-                          l.FV_N,
-                          l.FH_N,
-                          l.M_Nm,
-                          l.power_aero_W,
-                          l.power_hinge_W,
-                          l.FV_wing_aero_N,
-                          l.FH_wing_aero_N,
-                          l.M_wing_aero_Nm,
-                          l.FV_wing_inertial_N,
-                          l.FH_wing_inertial_N,
-                          l.M_wing_inertial_Nm,
-                          l.FV_tail_N,
-                          l.FH_tail_N,
-                          l.FH_body_N,
-                          l.M_tail_Nm,
-                          l.separated_fraction,
-                          l.tip_deflection_m,
-                          l.tip_twist_rad * kRadToDeg};
-    static_assert(sizeof row / sizeof row[0] == 20, "one value per histories.csv column");
+    double row[kHistoryColumns];
+    historyRow(t_s, delta_M_rad, l, row);
     histories_.row(row);
   }
   void onCycle(int cycle, const CycleMeans& m) override {
@@ -186,10 +186,86 @@ double halfRange(const double* x, std::size_t n, std::size_t stride) {
 
 }  // namespace
 
-int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
-  const auto t0 = std::chrono::steady_clock::now();
+JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
+                           const SimulationSummary& s, const SimulationOptions& opts,
+                           const TimeHistory& history,
+                           const std::optional<ConstrainedFlightTest>& cft, double wall_s,
+                           const JsonObject* trim_point) {
+  const bool failed = s.status == SimulationStatus::kFailed;
   JsonObject summary;
   summary.set("kind", "simulate");
+  summary.set("status", toString(s.status))
+      .set("message", s.message)
+      .set("wall_time_s", wall_s)
+      .set("version", versionString())
+      .set("mode", "tethered")
+      .set("cycles", s.cycles_run);
+  if (failed) {
+    summary.setNull("mean");
+  } else {
+    summary
+        .set("mean", JsonObject()
+                         .set("FV_N", s.mean.FV_N)
+                         .set("FH_N", s.mean.FH_N)
+                         .set("M_Nm", s.mean.M_Nm)
+                         .set("power_W", s.mean.power_aero_W)
+                         .set("hinge_power_W", s.mean.power_hinge_W))
+        .set("steady_state_cycle", s.steady_state_cycle)
+        .set("last_cycle_change", s.last_cycle_change);
+  }
+  summary.set("speed_mps", study.point.speed_mps)
+      .set("freq_hz", study.point.freq_hz)
+      .set("theta_deg", study.point.theta_rad * kRadToDeg)
+      .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
+      .set("wing_only", study.wing_only);
+  if (trim_point) summary.set("trim_point", *trim_point);
+  summary
+      .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
+                                                                           : "delaurier1993")
+      .set("structure", model.flexible ? "flexible" : "rigid")
+      .set("strips", static_cast<int>(model.strips.size()))
+      .set("wing_mass_kg", model.flexible ? model.flexible->modal->wing_mass_kg
+                                          : model.wing_mass.total.mass_kg);
+  // Harmonic content of the last cycle (samples_per_cycle points, endpoint excluded); only when
+  // the history holds a whole cycle (a run that failed early may not).
+  const std::size_t spc = static_cast<std::size_t>(opts.samples_per_cycle);
+  if (!failed && history.loads.size() >= spc + 1) {
+    const std::size_t start = history.loads.size() - 1 - spc;
+    const std::size_t stride = sizeof(LoadSample) / sizeof(double);
+    const double* fv = &history.loads[start].FV_N;
+    const double* fh = &history.loads[start].FH_N;
+    const double* mm = &history.loads[start].M_Nm;
+    const Harmonic fv1 = periodHarmonic(fv, spc, 1, stride);
+    const Harmonic fv2 = periodHarmonic(fv, spc, 2, stride);
+    const Harmonic fh1 = periodHarmonic(fh, spc, 1, stride);
+    const Harmonic fh2 = periodHarmonic(fh, spc, 2, stride);
+    const Harmonic m1 = periodHarmonic(mm, spc, 1, stride);
+    summary.set(
+        "last_cycle",
+        JsonObject()
+            .set("FV_amplitude_1f_N", fv1.amplitude)
+            .set("FV_amplitude_2f_N", fv2.amplitude)
+            .set("FH_amplitude_1f_N", fh1.amplitude)
+            .set("FH_amplitude_2f_N", fh2.amplitude)
+            .set("M_amplitude_1f_Nm", m1.amplitude)
+            .set("FV_peak_phase", peakPhase(fv, spc, stride))
+            .set("FH_peak_phase", peakPhase(fh, spc, stride))
+            .set("tip_deflection_amplitude_m",
+                 halfRange(&history.loads[start].tip_deflection_m, spc, stride))
+            .set("tip_twist_amplitude_deg",
+                 kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)));
+  }
+  if (cft) summary.set("constrained_flight_test", zmpSummary(*cft));
+  summary.set("integrator", JsonObject()
+                             .set("method", s.integrator_method)
+                             .set("rel_tol", opts.rel_tol)
+                             .set("steps", s.steps)
+                             .set("rhs_evaluations", s.rhs_evaluations));
+  return summary;
+}
+
+int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
+  const auto t0 = std::chrono::steady_clock::now();
 
   // [simulate] at_trim: solve the trim first; a vehicle that does not trim is a reported outcome.
   Study study = given;
@@ -198,7 +274,9 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
     const SimulationTrim t = trimForSimulation(study);
     trim_point = t.json;
     if (!t.converged) {
-      summary.set("status", "not_converged")
+      JsonObject summary;
+      summary.set("kind", "simulate")
+          .set("status", "not_converged")
           .set("message", "no trim at " + formatShortest(study.point.freq_hz) +
                               " Hz to fly at: " + t.message)
           .set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
@@ -247,73 +325,8 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
     if (cft) writeFileAtomic(out_dir / "zmp.csv", zmpTable(*cft).toString());
   }
 
-  summary.set("status", toString(s.status))
-      .set("message", s.message)
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("mode", "tethered")
-      .set("cycles", s.cycles_run);
-  if (failed) {
-    summary.setNull("mean");
-  } else {
-    summary
-        .set("mean", JsonObject()
-                         .set("FV_N", s.mean.FV_N)
-                         .set("FH_N", s.mean.FH_N)
-                         .set("M_Nm", s.mean.M_Nm)
-                         .set("power_W", s.mean.power_aero_W)
-                         .set("hinge_power_W", s.mean.power_hinge_W))
-        .set("steady_state_cycle", s.steady_state_cycle)
-        .set("last_cycle_change", s.last_cycle_change);
-  }
-  summary.set("speed_mps", study.point.speed_mps)
-      .set("freq_hz", study.point.freq_hz)
-      .set("theta_deg", study.point.theta_rad * kRadToDeg)
-      .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
-      .set("wing_only", study.wing_only);
-  if (study.at_trim) summary.set("trim_point", trim_point);
-  summary
-      .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
-                                                                           : "delaurier1993")
-      .set("structure", model.flexible ? "flexible" : "rigid")
-      .set("strips", static_cast<int>(model.strips.size()))
-      .set("wing_mass_kg", model.flexible ? model.flexible->modal->wing_mass_kg
-                                          : model.wing_mass.total.mass_kg);
-  // Harmonic content of the last cycle (samples_per_cycle points, endpoint excluded); only when
-  // the history holds a whole cycle (a run that failed early may not).
-  const std::size_t spc = static_cast<std::size_t>(opts.samples_per_cycle);
-  if (!failed && history.loads.size() >= spc + 1) {
-    const std::size_t start = history.loads.size() - 1 - spc;
-    const std::size_t stride = sizeof(LoadSample) / sizeof(double);
-    const double* fv = &history.loads[start].FV_N;
-    const double* fh = &history.loads[start].FH_N;
-    const double* mm = &history.loads[start].M_Nm;
-    const Harmonic fv1 = periodHarmonic(fv, spc, 1, stride);
-    const Harmonic fv2 = periodHarmonic(fv, spc, 2, stride);
-    const Harmonic fh1 = periodHarmonic(fh, spc, 1, stride);
-    const Harmonic fh2 = periodHarmonic(fh, spc, 2, stride);
-    const Harmonic m1 = periodHarmonic(mm, spc, 1, stride);
-    summary.set(
-        "last_cycle",
-        JsonObject()
-            .set("FV_amplitude_1f_N", fv1.amplitude)
-            .set("FV_amplitude_2f_N", fv2.amplitude)
-            .set("FH_amplitude_1f_N", fh1.amplitude)
-            .set("FH_amplitude_2f_N", fh2.amplitude)
-            .set("M_amplitude_1f_Nm", m1.amplitude)
-            .set("FV_peak_phase", peakPhase(fv, spc, stride))
-            .set("FH_peak_phase", peakPhase(fh, spc, stride))
-            .set("tip_deflection_amplitude_m",
-                 halfRange(&history.loads[start].tip_deflection_m, spc, stride))
-            .set("tip_twist_amplitude_deg",
-                 kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)));
-  }
-  if (cft) summary.set("constrained_flight_test", zmpSummary(*cft));
-  summary.set("integrator", JsonObject()
-                             .set("method", s.integrator_method)
-                             .set("rel_tol", opts.rel_tol)
-                             .set("steps", s.steps)
-                             .set("rhs_evaluations", s.rhs_evaluations));
+  const JsonObject summary = tetheredSummary(study, model, s, opts, history, cft, wall_s,
+                                             study.at_trim ? &trim_point : nullptr);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (failed) return reportFailedRun(study, s.message, out_dir);
   drawFigure(out_dir, "loads", loadsFigure(study, s, history_rows));

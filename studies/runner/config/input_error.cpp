@@ -22,13 +22,16 @@ InputError::InputError(std::string file, int line, std::string key, const std::s
 
 InputError InputError::wrongValue(const std::string& file, int line, const std::string& key,
                                   const std::string& expected, const std::string& got) {
-  return InputError(file, line, key, "key '" + key + "': expected " + expected + ", got " + got);
+  InputError e(file, line, key, "key '" + key + "': expected " + expected + ", got " + got);
+  e.expected_ = expected;
+  return e;
 }
 
 InputError InputError::missingKey(const std::string& file, int line, const std::string& key,
                                   const std::string& expected) {
-  return InputError(file, line, key,
-                    "missing required key '" + key + "' (expected " + expected + ")");
+  InputError e(file, line, key, "missing required key '" + key + "' (expected " + expected + ")");
+  e.expected_ = expected;
+  return e;
 }
 
 InputError InputError::unknownKey(const std::string& file, int line, const std::string& key,

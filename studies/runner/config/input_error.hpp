@@ -40,11 +40,15 @@ class InputError : public std::runtime_error {
   int line() const noexcept { return line_; }
   /// Dotted key path ("wing.members[2].diameter_m"); empty for syntax and file errors.
   const std::string& key() const noexcept { return key_; }
+  /// What the key expects ("a number in [0.01, 1] m"), for wrongValue and missingKey; empty for
+  /// the other forms.
+  const std::string& expected() const noexcept { return expected_; }
 
  private:
   std::string file_;
   int line_ = 0;
   std::string key_;
+  std::string expected_;
 };
 
 }  // namespace orni::studies

@@ -1,0 +1,251 @@
+"""ornithopter: flexible flapping-wing flight simulation, aero maps, trim and design from Python.
+
+The same readers, checks, runs and summaries as the command line ``ornithopter``: every function
+returns what the CLI writes into ``summary.json`` (as a dict; ``wall_time_s`` aside, to the last
+bit) and raises :class:`InputError` where the CLI exits with status 2. Units are in the key
+suffixes, as in the files (``speed_mps``, ``theta_deg``, ``arm_m``). Every computation releases the
+GIL; Ctrl-C stops a :func:`simulate` at the end of the current flapping cycle (the other runs have
+no cancellation point: it takes effect when they return).
+
+Functions: :func:`load_vehicle`, :func:`load_study`, :func:`simulate`, :func:`modes`,
+:func:`aeromap`, :func:`trim`, :func:`optimize`, :func:`run`.
+"""
+
+import csv as _csv
+import json as _json
+import os as _os
+import tempfile as _tempfile
+
+import numpy as _np
+
+from . import _ornithopter as _core
+
+__version__ = _core.__version__
+__all__ = ["InputError", "Vehicle", "Study", "load_vehicle", "load_study", "simulate", "modes",
+           "aeromap", "trim", "optimize", "run", "__version__"]
+
+InputError = _core.InputError
+Vehicle = _core.Vehicle
+Study = _core.Study
+
+Vehicle.__doc__ = """A vehicle as read from its file (:func:`load_vehicle`).
+
+``v["tail.arm_m"]`` reads a field by its file key (file units), ``v["tail.arm_m"] = 0.14`` sets it:
+the whole vehicle is then re-read by the file reader, so the value is checked exactly as in a file
+(type, range from the field table, cross-checks); a rejected value raises :class:`InputError`
+(``.file == "<python>"``, ``.key``, ``.expected``) and leaves the vehicle unchanged. ``v.keys()``
+lists every key, ``v.to_toml()`` gives the complete vehicle file (every default filled in; the
+``.line`` of an error about a key you did not set refers to this text)."""
+
+
+def load_vehicle(path):
+    """Read a vehicle file (TOML) with the CLI's reader and checks.
+
+    Returns a :class:`Vehicle`. Raises :class:`InputError` (``.file``, ``.line``, ``.key``,
+    ``.expected``) for a bad file."""
+    return _core.Vehicle.load(_os.fspath(path))
+
+
+def load_study(path):
+    """Read a study file (TOML, any kind) with the CLI's reader and checks.
+
+    Returns a :class:`Study` (``.kind``, ``.name``, ``.path``) for :func:`optimize` or :func:`run`.
+    Raises :class:`InputError` for a bad file."""
+    return _core.load_study(_os.fspath(path))
+
+
+def _read_summary(out_dir):
+    with open(_os.path.join(out_dir, "summary.json"), encoding="utf-8") as f:
+        return _json.load(f)
+
+
+def _read_csv(path):
+    """A CSV of a run (names row, units row, data) as {name: NumPy array}: float64 for numeric
+    columns (the CLI writes the shortest text that reads back exactly), str for word columns
+    (status); "units": {name: unit}."""
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = list(_csv.reader(f))
+    names, units, data = rows[0], rows[1], rows[2:]
+    out = {}
+    for j, name in enumerate(names):
+        cells = [r[j] for r in data]
+        try:
+            out[name] = _np.array([float(x) if x != "" else _np.nan for x in cells], dtype=float)
+        except ValueError:
+            out[name] = _np.array(cells, dtype=str)
+    out["units"] = dict(zip(names, units))
+    return out
+
+
+def _run_in(study, out, threads):
+    """Runs `study` into `out` (kept) or a temporary folder (removed). Returns (rc, summary, folder
+    reader): the reader is called with the folder while it still exists."""
+    if out is not None:
+        _os.makedirs(out, exist_ok=True)
+        rc = _core.run_study(study, _os.fspath(out), int(threads))
+        return rc, _read_summary(out), _os.fspath(out)
+    tmp = _tempfile.mkdtemp(prefix="ornithopter-")
+    rc = _core.run_study(study, tmp, int(threads))
+    return rc, _read_summary(tmp), tmp
+
+
+def _cleanup(folder, out):
+    if out is None:
+        import shutil
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def _section(**given):
+    return {k: v for k, v in given.items() if v is not None}
+
+
+def simulate(vehicle, mode="tethered", speed=None, freq=None, theta=None, tail=None, cycles=None,
+             histories=True, out=None, **options):
+    """Simulate the vehicle: ``ornithopter simulate`` (a study of kind "simulate").
+
+    Arguments (None = the vehicle's operating point / the CLI's default):
+      mode    "tethered" (wind tunnel: body held at speed and theta) or "free" (default tethered)
+      speed   U, m/s (key simulate.speed_mps)
+      freq    flapping frequency, Hz (simulate.freq_hz)
+      theta   body pitch attitude, deg (simulate.theta_deg)
+      tail    tail angle, deg (simulate.tail_angle_deg)
+      cycles  flapping cycles, default 10 (simulate.cycles)
+      histories  sample the run and return the histories (default True). False samples
+              nothing (the C++ benchmark's work): the integrator then takes its own steps
+              without stopping at the samples, so the means differ from the CLI's (which always
+              samples) within the integrator's tolerance (rel_tol), and the summary has no
+              "last_cycle" nor "constrained_flight_test" (they need the samples). Only the
+              default (True) equals the CLI's summary.json to the last bit.
+      out     also keep the CLI's files in this folder (runs the CLI's command; default None)
+      **options  any other [simulate] key in file units: rel_tol (default 1e-6), abs_tol,
+              samples_per_cycle (default 100), steady_tol, history_every (default 1),
+              wing_only (default False), at_trim (default False), free={...} ([simulate.free]).
+
+    Returns the summary.json dict (``status``, ``mean`` {FV_N, FH_N, M_Nm, power_W, ...}, ...)
+    with, when ``histories``, ``"histories"``: {column: NumPy array} in histories.csv's columns and
+    units (``"units"``: {column: unit}). Tethered runs fill one array in place (columns are views,
+    no copy per sample); free flight and at_trim runs go through the CLI's files.
+    A run that fails or does not converge is a status, not an exception; bad input raises
+    :class:`InputError`. The GIL is released; Ctrl-C stops a tethered run at the end of a cycle.
+    """
+    section = _section(mode=mode, speed_mps=speed, freq_hz=freq, theta_deg=theta,
+                       tail_angle_deg=tail, cycles=cycles, **options)
+    study = _core.make_study(vehicle, "simulate", _run_name(vehicle), section)
+    settings = _core.study_settings(study)
+    if out is None and settings["mode"] == "tethered" and not settings["at_trim"]:
+        text, rows = _core.simulate_tethered(vehicle, study, bool(histories))
+        summary = _json.loads(text)
+        if histories:
+            every = settings["history_every"]
+            names = [n for n, _ in _core.history_columns()]
+            kept = rows[::every] if every > 1 else rows
+            h = {n: kept[:, j] for j, n in enumerate(names)}
+            h["units"] = dict(_core.history_columns())
+            summary["histories"] = h
+        return summary
+    rc, summary, folder = _run_in(study, out, 1)
+    try:
+        path = _os.path.join(folder, "histories.csv")
+        if histories and _os.path.exists(path):
+            summary["histories"] = _read_csv(path)
+    finally:
+        _cleanup(folder, out)
+    return summary
+
+
+def _run_name(vehicle):
+    stem = _os.path.splitext(_os.path.basename(vehicle.source or "vehicle"))[0]
+    return stem or "vehicle"
+
+
+def modes(vehicle, out=None):
+    """Structural modes of the flexible wing: ``ornithopter modes``.
+
+    Returns the summary.json dict (``frequencies_hz`` ascending, ``wing_mass_kg``, ``elements``,
+    ...) with ``"table"``: modes.csv as {column: NumPy array}. ``out``: keep the CLI's files there.
+    """
+    study = _core.make_study(vehicle, "modes", _run_name(vehicle), {})
+    rc, summary, folder = _run_in(study, out, 1)
+    try:
+        path = _os.path.join(folder, "modes.csv")
+        if _os.path.exists(path):
+            summary["table"] = _read_csv(path)
+    finally:
+        _cleanup(folder, out)
+    return summary
+
+
+def aeromap(vehicle, speeds, freqs, thetas, tails=None, threads=1, out=None, **options):
+    """Aero map over a grid: ``ornithopter aeromap`` (paper Fig. 5).
+
+    speeds  U values, m/s (array-like; key aeromap.speed_mps)
+    freqs   flapping frequencies, Hz (aeromap.freq_hz)
+    thetas  pitch attitudes, deg (aeromap.theta_deg)
+    tails   tail angles, deg (default: the vehicle's operating-point tail angle)
+    threads worker threads (default 1; any number gives the same arrays)
+    **options  other [aeromap] keys: cycles (maximum per point, default 40), steady_tol, rel_tol,
+            abs_tol, wing_only (default False: the whole vehicle).
+
+    Returns {column of aeromap.csv: NumPy array} (``speed_mps``, ``freq_hz``, ``theta_deg``,
+    ``FV_mean_N``, ``FH_mean_N``, ``M_mean_Nm``, ``power_W``, ...; ``"units"``) with
+    ``"summary"``: the summary.json dict. The GIL is released during the run.
+    """
+    def values(x):
+        return [float(v) for v in _np.atleast_1d(_np.asarray(x, dtype=float))]
+    section = _section(speed_mps=values(speeds), freq_hz=values(freqs), theta_deg=values(thetas),
+                       tail_angle_deg=None if tails is None else values(tails), **options)
+    study = _core.make_study(vehicle, "aeromap", _run_name(vehicle) + "_aeromap", section)
+    rc, summary, folder = _run_in(study, out, threads)
+    try:
+        result = _read_csv(_os.path.join(folder, "aeromap.csv"))
+    finally:
+        _cleanup(folder, out)
+    result["summary"] = summary
+    return result
+
+
+def trim(vehicle, freq=None, out=None, **options):
+    """Trim the vehicle in level flight: ``ornithopter trim`` (paper Eq. 4, then free flight).
+
+    freq    flapping frequency, Hz (key trim.freq_hz; default the vehicle's operating point)
+    out     keep the CLI's files in this folder (default: none kept)
+    **options  any [trim] key in file units, checked like the file: unknowns (default
+            ["theta_mean_deg", "speed_mps", "tail_angle_deg"]), initial={theta_mean_deg,
+            speed_mps, tail_angle_deg} (default: the operating point), bounds={...},
+            max_iterations, residual_tol, function_tol, rel_tol, steady_tol, max_cycles,
+            derivative_cycles, refine_in_free_flight, refine_cycles, method ("two_stage" default,
+            or "periodic") and periodic={...}. See ``ornithopter keys trim`` for ranges/defaults.
+
+    Returns the summary.json dict: ``converged``, ``freq_hz``, ``theta_mean_deg``, ``speed_mps``,
+    ``tail_angle_deg``, ``residual`` {FV_N, FH_N, M_Nm}, ``free_flight`` {...}, ... A trim that
+    does not converge is ``status`` "not_converged", not an exception.
+    """
+    section = _section(freq_hz=freq, **options)
+    study = _core.make_study(vehicle, "trim", _run_name(vehicle), section)
+    rc, summary, folder = _run_in(study, out, 1)
+    _cleanup(folder, out)
+    return summary
+
+
+def optimize(study, threads=1, out=None):
+    """Run an optimize study (a :class:`Study` of kind "optimize" or its path): ``ornithopter
+    optimize STUDY -j threads``. Returns the summary.json dict (``converged``, ``objective``,
+    ``baseline_objective``, ``evaluations``, ``design`` {name: value},
+    ``constraints_satisfied``, ...). ``out``: keep the CLI's files (and its resumable journal)."""
+    if not isinstance(study, _core.Study):
+        study = load_study(study)
+    if study.kind != "optimize":
+        raise ValueError("%s: kind '%s' is not an optimize study" % (study.path, study.kind))
+    rc, summary, folder = _run_in(study, out, threads)
+    _cleanup(folder, out)
+    return summary
+
+
+def run(study_path, out=None, threads=1):
+    """``ornithopter run STUDY -o out -j threads``: any study, the CLI's files in ``out``
+    (default results/<study name>, as the CLI). Returns the summary.json dict."""
+    study = load_study(study_path)
+    if out is None:
+        out = _os.path.join("results", study.name)
+    rc, summary, folder = _run_in(study, out, threads)
+    return summary

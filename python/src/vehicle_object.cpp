@@ -1,0 +1,70 @@
+#include "vehicle_object.hpp"
+
+#include <utility>
+
+#include "studies/runner/config/input_error.hpp"
+#include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+#include "toml_python.hpp"
+
+namespace py = pybind11;
+
+namespace orni::python {
+
+namespace {
+
+/// The file named in messages about values set from Python (they have no file and no line).
+constexpr const char* kPythonSource = "<python>";
+
+}  // namespace
+
+VehicleObject VehicleObject::load(const std::string& path) {
+  VehicleObject v;
+  v.source_ = studies::displayPath(path);
+  v.adopt(studies::loadVehicleFile(path));
+  return v;
+}
+
+void VehicleObject::adopt(VehicleModel model) {
+  model_ = std::move(model);
+  // The resolved document: writeVehicleToml writes numbers that read back exactly, so the model
+  // re-read from it after a set is this one with only that value changed.
+  document_ = studies::parseTomlText(studies::vehicleToToml(model_), kPythonSource);
+  keys_ = leafKeys(document_);
+  const std::lock_guard<std::mutex> lock(*core_mutex_);
+  core_.reset();
+}
+
+py::object VehicleObject::get(const std::string& key) const {
+  const toml::node* n = findNode(document_, parseDottedKey(key));
+  if (!n) throw py::key_error("no vehicle key '" + key + "' (see Vehicle.keys())");
+  return toPython(*n);
+}
+
+bool VehicleObject::contains(const std::string& key) const {
+  return findNode(document_, parseDottedKey(key)) != nullptr;
+}
+
+void VehicleObject::set(const std::string& key, const py::handle& value) {
+  toml::table changed = document_;
+  setNode(changed, parseDottedKey(key), key, value);
+  studies::ReadContext context;
+  context.file = kPythonSource;
+  // The file reader, exactly: the field table's type and range, the cross-checks, unknown keys.
+  VehicleModel model = studies::parseVehicleTable(changed, context, std::string());
+  document_ = std::move(changed);
+  keys_ = leafKeys(document_);
+  const std::lock_guard<std::mutex> lock(*core_mutex_);  // coreModel() reads model_ without the GIL
+  model_ = std::move(model);
+  core_.reset();
+}
+
+std::string VehicleObject::toToml() const { return studies::vehicleToToml(model_); }
+
+std::shared_ptr<const FlightCoreModel> VehicleObject::coreModel() const {
+  const std::lock_guard<std::mutex> lock(*core_mutex_);
+  if (!core_) core_ = std::make_shared<const FlightCoreModel>(model_);
+  return core_;
+}
+
+}  // namespace orni::python

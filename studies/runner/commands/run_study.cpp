@@ -1,0 +1,85 @@
+#include "studies/runner/commands/run_study.hpp"
+
+#include <iostream>
+
+#include "core/model/invalid_model_error.hpp"
+#include "studies/runner/commands/aeromap_command.hpp"
+#include "studies/runner/commands/calibrate_command.hpp"
+#include "studies/runner/commands/continuation_command.hpp"
+#include "studies/runner/commands/modes_command.hpp"
+#include "studies/runner/commands/optimize_command.hpp"
+#include "studies/runner/commands/sensitivity_command.hpp"
+#include "studies/runner/commands/simulate_command.hpp"
+#include "studies/runner/commands/sweep_command.hpp"
+#include "studies/runner/commands/trim_command.hpp"
+#include "studies/runner/config/input_error.hpp"
+#include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/output/folder_lock.hpp"
+
+namespace fs = std::filesystem;
+
+namespace orni::studies {
+
+std::string inputFileOf(const Study& study) {
+  return displayPath(study.study_path.empty() ? study.vehicle_path : study.study_path);
+}
+
+namespace {
+
+int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
+  switch (study.kind) {
+    case StudyKind::kSimulate:
+      return runSimulateStudy(study, out_dir);
+    case StudyKind::kAeromap: {
+      AeromapRunOptions opts;
+      opts.threads = jobs;
+      return runAeromapStudy(study, out_dir, opts);
+    }
+    case StudyKind::kModes:
+      return runModesStudy(study, out_dir);
+    case StudyKind::kTrim:
+      return runTrimStudy(study, out_dir);
+    case StudyKind::kCalibrate:
+      return runCalibrateStudy(study, out_dir);
+    case StudyKind::kSweep: {
+      SweepRunOptions opts;
+      opts.threads = jobs;
+      return runSweepStudy(study, out_dir, opts);
+    }
+    case StudyKind::kContinuation:
+      return runContinuationStudy(study, out_dir);
+    case StudyKind::kSensitivity: {
+      SensitivityRunOptions opts;
+      opts.threads = jobs;
+      return runSensitivityStudy(study, out_dir, opts);
+    }
+    case StudyKind::kOptimize: {
+      OptimizeRunOptions opts;
+      opts.threads = jobs;
+      return runOptimizeStudy(study, out_dir, opts);
+    }
+    default:
+      std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
+                << toString(study.kind)
+                << "' is not available in this version yet (see the open issues)\n";
+      return 1;
+  }
+}
+
+}  // namespace
+
+int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
+  try {
+    return runStudyKind(study, out_dir, jobs);
+  } catch (const InvalidModelError& e) {
+    throw InputError(inputFileOf(study), 0, std::string(), std::string("invalid model: ") +
+                                                               e.what());
+  }
+}
+
+int runStudyLocked(const Study& study, const fs::path& out_dir, int jobs) {
+  const OutputFolderLock lock(out_dir);
+  return runStudy(study, out_dir, jobs);
+}
+
+}  // namespace orni::studies

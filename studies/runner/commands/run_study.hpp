@@ -1,0 +1,24 @@
+// Running a loaded study of any kind into an output folder: the one path behind `ornithopter run`,
+// `simulate`, `trim`, `optimize` and the Python module's ornithopter.run (python/).
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "studies/runner/config/study_file.hpp"
+
+namespace orni::studies {
+
+/// The file a study came from, for messages: the study file, or the vehicle file it was made of.
+std::string inputFileOf(const Study& study);
+
+/// Runs `study` into `out_dir`, which the caller holds locked; `jobs` threads for the kinds that
+/// use them (aeromap, sweep, sensitivity, optimize). Returns the exit code: 0 finished (whatever
+/// the physics verdict, which is in summary.json), 1 failed. Bad input throws InputError; a model
+/// check of core (InvalidModelError) is rethrown as InputError naming the study's file.
+int runStudy(const Study& study, const std::filesystem::path& out_dir, int jobs);
+
+/// Locks `out_dir` (FolderBusyError at once when another run holds it) and runs `study` into it.
+int runStudyLocked(const Study& study, const std::filesystem::path& out_dir, int jobs);
+
+}  // namespace orni::studies
