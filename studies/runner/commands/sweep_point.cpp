@@ -81,6 +81,18 @@ std::string oneLine(std::string s) {
   return s;
 }
 
+/// The free-flight check's cells of a trim row (free_flight ... dominant_freq_hz).
+void appendFreeFlightCells(const FreeFlightVerification& f, std::vector<std::string>* cells) {
+  const bool verdict =
+      f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded;
+  for (std::string c : {std::string(toString(f.status)),
+                        std::string(verdict ? (f.bounded ? "1" : "0") : ""),
+                        num(f.norm_ratio_max), num(f.theta_min_rad * kRadToDeg),
+                        num(f.theta_max_rad * kRadToDeg), num(f.altitude_p2p_m),
+                        num(f.dominant_freq_hz)})
+    cells->push_back(std::move(c));
+}
+
 SweepPointResult trimPoint(const Study& point) {
   const FlightCoreModel model(point.vehicle);
   const TrimSummary s = solveTrim(model, point.trim);
@@ -90,8 +102,6 @@ SweepPointResult trimPoint(const Study& point) {
   r.cells.assign(trimColumns().size(), std::string());
   if (!s.converged) return r;
   const FreeFlightVerification& f = s.free_flight;
-  const bool verdict =
-      f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded;
   r.cells = {num(s.solution.theta_rad * kRadToDeg),
              num(s.solution.speed_mps),
              num(s.solution.tail_angle_rad * kRadToDeg),
@@ -104,13 +114,8 @@ SweepPointResult trimPoint(const Study& point) {
              num(s.scaled_residual_max),
              std::to_string(s.iterations),
              std::to_string(s.evaluations),
-             toString(f.status),
-             verdict ? (f.bounded ? "1" : "0") : "",
-             num(f.norm_ratio_max),
-             num(f.theta_min_rad * kRadToDeg),
-             num(f.theta_max_rad * kRadToDeg),
-             num(f.altitude_p2p_m),
-             num(f.dominant_freq_hz)};
+};
+  appendFreeFlightCells(f, &r.cells);
   if (f.status != FreeFlightStatus::kSkipped) r.message += "; free flight: " + f.message;
   return r;
 }
@@ -124,8 +129,6 @@ SweepPointResult periodicTrimPoint(const Study& point) {
   r.cells.assign(periodicTrimColumns().size(), std::string());
   if (!s.converged) return r;
   const FreeFlightVerification& f = s.free_flight;
-  const bool verdict =
-      f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded;
   const double W = point.vehicle.body.mass_kg * point.vehicle.air.gravity_mps2;
   r.cells = {num(s.solution.theta_rad * kRadToDeg),
              num(s.solution.speed_mps),
@@ -138,16 +141,10 @@ SweepPointResult periodicTrimPoint(const Study& point) {
              num(s.mean.M_Nm),
              num(s.shooting.residual_max),
              std::to_string(s.shooting.iterations),
-             std::to_string(s.shooting.period_maps),
-             toString(f.status),
-             verdict ? (f.bounded ? "1" : "0") : "",
-             num(f.norm_ratio_max),
-             num(f.theta_min_rad * kRadToDeg),
-             num(f.theta_max_rad * kRadToDeg),
-             num(f.altitude_p2p_m),
-             num(f.dominant_freq_hz),
-             s.floquet_valid ? num(s.floquet.max_modulus) : "",
-             s.floquet_valid ? (s.floquet.stable ? "1" : "0") : ""};
+             std::to_string(s.shooting.period_maps)};
+  appendFreeFlightCells(f, &r.cells);
+  r.cells.push_back(s.floquet_valid ? num(s.floquet.max_modulus) : "");
+  r.cells.push_back(s.floquet_valid ? (s.floquet.stable ? "1" : "0") : "");
   if (s.floquet_valid) r.message += "; Floquet: " + s.floquet.BriefReport();
   if (f.status != FreeFlightStatus::kSkipped) r.message += "; free flight: " + f.message;
   return r;

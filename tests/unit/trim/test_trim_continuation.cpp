@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/model/frames.hpp"
-#include "studies/runner/config/vehicle_file.hpp"
+#include "tests/support/magpie_vehicle.hpp"
 #include "trim/periodic_trim.hpp"
 #include "trim/trim_continuation.hpp"
 
@@ -23,10 +23,7 @@ namespace {
 constexpr double kStartHz = 12.0;
 constexpr double kEndHz = 12.6;
 
-VehicleModel magpie() {
-  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
-}
+VehicleModel magpie() { return testing::magpieVehicle(); }
 
 TrimOptions periodicAt(const VehicleModel& v, double f_hz) {
   TrimOptions o = defaultTrimOptions(v);
