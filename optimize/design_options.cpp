@@ -4,14 +4,10 @@
 
 namespace orni::opt {
 
-namespace {
-
-bool usesFreeFlight(const DesignProblemOptions& o) {
-  return o.objective != DesignObjective::kPower || o.constraints.bounded ||
-         o.constraints.pitch_amplitude_max_rad > 0.0;
+bool DesignProblemOptions::usesFreeFlight() const {
+  return objective != DesignObjective::kPower || constraints.bounded ||
+         constraints.pitch_amplitude_max_rad > 0.0;
 }
-
-}  // namespace
 
 const char* toString(DesignObjective o) {
   switch (o) {
@@ -45,10 +41,14 @@ bool DesignProblemOptions::IsValid(std::string* why) const {
       weights.power_per_W + weights.pitch_amplitude_per_deg <= 0.0)
     return fail("the weighted objective needs a positive weight");
   for (double limit : {constraints.pitch_amplitude_max_rad, constraints.tip_deflection_max_m,
-                       constraints.structural_mass_max_kg})
+                       constraints.structural_mass_max_kg, constraints.floquet_max_modulus})
     if (!(limit >= 0.0 && std::isfinite(limit)))
       return fail("constraint limits must be finite and >= 0 (0 = off)");
-  if (usesFreeFlight(*this) && !trim.verify_free_flight)
+  if (constraints.floquet_max_modulus > 0.0 &&
+      !(trim.method == TrimMethod::kPeriodic && trim.periodic.floquet))
+    return fail("the floquet_max_modulus constraint needs the periodic trim (trim method "
+                "\"periodic\") with its Floquet analysis on (trim.periodic.floquet)");
+  if (usesFreeFlight() && !trim.verify_free_flight)
     return fail("the objective or constraints use the free flight, but the trim's free-flight "
                 "check is off");
   return true;

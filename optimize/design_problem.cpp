@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <optional>
 #include <stdexcept>
 #include <utility>
@@ -12,6 +13,7 @@
 #include "core/model/invalid_model_error.hpp"
 #include "core/model/vehicle_validation.hpp"
 #include "core/model/wing_inertia.hpp"
+#include "trim/periodic_trim.hpp"
 
 namespace orni::opt {
 
@@ -50,6 +52,51 @@ double tipDeflectionAmplitude(const FlightCoreModel& model, const OperatingPoint
   return m;
 }
 
+/// Cycle means of the tethered periodic run at `point` with the two-stage trim's default run
+/// tolerances (the periodic trim loosens its own: usePeriodicMethod): the power of a periodic
+/// trim's design, defined as the two-stage trim's (its final tethered periodic run). NaN when the
+/// run fails.
+CycleMeans tetheredMeansAt(const FlightCoreModel& model, const OperatingPoint& point,
+                           const SimulationOptions& trim_simulation) {
+  SimulationOptions o = trim_simulation;
+  const SimulationOptions defaults = TrimOptions{}.simulation;
+  o.mode = FlightMode::kTethered;
+  o.rel_tol = std::min(o.rel_tol, defaults.rel_tol);
+  o.steady_tol = std::min(o.steady_tol, defaults.steady_tol);
+  o.stop_when_steady = true;
+  o.record_history = false;
+  const SimulationSummary r = simulateTethered(model, point, o, nullptr);
+  if (r.status == SimulationStatus::kOk || r.status == SimulationStatus::kNotConverged)
+    return r.mean;
+  return CycleMeans{kNaN, kNaN, kNaN, kNaN, kNaN};
+}
+
+/// The periodic trim (trim/periodic_trim.hpp) of the design, reported in e->trim as described at
+/// DesignEvaluation.
+void solvePeriodicDesignTrim(const FlightCoreModel& model, const TrimOptions& t,
+                             DesignEvaluation* e) {
+  const PeriodicTrimSummary p = solvePeriodicTrim(model, t);
+  e->periodic = true;
+  TrimSummary& s = e->trim;
+  s = p.stage1;  // unknowns, reference, termination, evaluation counts of the Eq. (4) start
+  s.status = p.status;
+  s.converged = p.converged;
+  s.message = p.message;
+  s.solution = p.solution;
+  s.free_flight = p.free_flight;
+  s.evaluations = static_cast<int>(p.shooting.period_maps + p.floquet_maps);
+  e->residual_tol = t.residual_tol;
+  if (p.stage1.converged) {  // the orbit was sought: its residual says how far from trim
+    s.scaled_residual_max = p.shooting.residual_max;
+    e->residual_tol = t.periodic.residual_tol;
+    e->periodic_residual = p.shooting.residual_max;
+  }
+  if (p.converged) s.mean = tetheredMeansAt(model, p.solution, t.simulation);
+  e->equation4 = p.stage1.solution;
+  e->floquet_valid = p.floquet_valid;
+  if (p.floquet_valid) e->floquet_max_modulus = p.floquet.max_modulus;
+}
+
 }  // namespace
 
 DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblemOptions& options,
@@ -63,7 +110,14 @@ DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblem
     const FlightCoreModel model(vehicle);
     TrimOptions t = options.trim;
     for (TrimUnknown u : t.unknowns) setUnknownValue(&t.initial, u, unknownValue(initial_guess, u));
-    e.trim = solveTrim(model, t);
+    if (t.method == TrimMethod::kPeriodic) {
+      // The orbit's stability is in its multipliers: the bounded-norm flight only when used.
+      if (!options.usesFreeFlight()) t.verify_free_flight = false;
+      solvePeriodicDesignTrim(model, t, &e);
+    } else {
+      e.trim = solveTrim(model, t);
+      e.residual_tol = t.residual_tol;
+    }
     e.trim_attempted = true;
     const TrimSummary& s = e.trim;
     if (!s.converged) {
@@ -84,6 +138,15 @@ DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblem
         break;
       case FreeFlightStatus::kFailed: e.message = "trimmed; free flight failed: " + f.message; break;
       default: e.message = "trimmed; free flight not checked"; break;
+    }
+    if (e.periodic) {
+      char buf[160];
+      if (e.floquet_valid)
+        std::snprintf(buf, sizeof buf, "periodic orbit, Floquet max |mu| %.6g (%s)",
+                      e.floquet_max_modulus, e.floquet_max_modulus < 1.0 ? "stable" : "unstable");
+      else
+        std::snprintf(buf, sizeof buf, "periodic orbit, no Floquet analysis");
+      e.message.replace(0, 7, std::string("trimmed (") + buf + ")");
     }
   } catch (const std::exception& ex) {
     e.trim_attempted = false;
@@ -123,10 +186,8 @@ DesignProblem::DesignProblem(VehicleModel base, DesignSpace space, DesignProblem
   if (c.pitch_amplitude_max_rad > 0.0) constraint_names_.push_back("pitch_amplitude");
   if (c.tip_deflection_max_m > 0.0) constraint_names_.push_back("tip_deflection");
   if (c.structural_mass_max_kg > 0.0) constraint_names_.push_back("structural_mass");
-}
-
-const std::vector<DesignValueInfo>& DesignProblem::valueInfo() {
-  static const std::vector<DesignValueInfo> k = {
+  if (c.floquet_max_modulus > 0.0) constraint_names_.push_back("floquet_max_modulus");
+  value_info_ = {
       {"trim_converged", "-", 1.0},       {"theta_mean_deg", "deg", kDegToRad},
       {"speed_mps", "m/s", 1.0},          {"tail_angle_deg", "deg", kDegToRad},
       {"freq_hz", "Hz", 1.0},             {"residual_scaled_max", "-", 1.0},
@@ -137,7 +198,13 @@ const std::vector<DesignValueInfo>& DesignProblem::valueInfo() {
       {"tip_deflection_m", "m", 1.0},     {"structural_mass_kg", "kg", 1.0},
       {"periodic_runs", "-", 1.0},
   };
-  return k;
+  if (options_.trim.method == TrimMethod::kPeriodic)
+    value_info_.insert(value_info_.end(), {{"floquet_max_modulus", "-", 1.0},
+                                           {"floquet_stable", "-", 1.0},
+                                           {"periodic_residual", "-", 1.0},
+                                           {"equation4_theta_mean_deg", "deg", kDegToRad},
+                                           {"equation4_speed_mps", "m/s", 1.0},
+                                           {"equation4_tail_angle_deg", "deg", kDegToRad}});
 }
 
 std::unique_ptr<ProblemWorkspace> DesignProblem::makeWorkspace() const {
@@ -163,7 +230,7 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
 
   Evaluation e;
   e.message = d.message;
-  e.values.assign(kDesignValueCount, kNaN);
+  e.values.assign(value_info_.size(), kNaN);
   e.values[kStructuralMass] = d.structural_mass_kg;
   if (!d.trim_attempted) {
     e.status = EvaluationStatus::kFailed;
@@ -192,6 +259,16 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
   v[kPitchAmplitude] = d.pitch_amplitude_rad;
   v[kTipDeflection] = d.tip_deflection_m;
   v[kPeriodicRuns] = s.evaluations;
+  if (d.periodic) {
+    v[kFloquetMaxModulus] = d.floquet_max_modulus;
+    v[kFloquetStable] = d.floquet_valid ? (d.floquet_max_modulus < 1.0 ? 1.0 : 0.0) : kNaN;
+    v[kPeriodicResidual] = d.periodic_residual;
+    if (s.converged) {  // the warm start of the next evaluation (observe)
+      v[kEquation4Theta] = d.equation4.theta_rad;
+      v[kEquation4Speed] = d.equation4.speed_mps;
+      v[kEquation4TailAngle] = d.equation4.tail_angle_rad;
+    }
+  }
 
   const double amplitude_deg = d.pitch_amplitude_rad / kDegToRad;
   switch (options_.objective) {
@@ -210,8 +287,7 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
   double g_trim = kTrimmedFeasible;
   if (!s.converged)
     g_trim = have_means && s.scaled_residual_max > 0.0
-                 ? std::max(std::log10(s.scaled_residual_max / options_.trim.residual_tol),
-                            kViolatedFloor)
+                 ? std::max(std::log10(s.scaled_residual_max / d.residual_tol), kViolatedFloor)
                  : kNaN;
   e.constraints.push_back(g_trim);
 
@@ -252,6 +328,9 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
                                         : untrimmed);
   if (c.structural_mass_max_kg > 0.0)
     e.constraints.push_back(d.structural_mass_kg / c.structural_mass_max_kg - 1.0);
+  if (c.floquet_max_modulus > 0.0)  // no Floquet analysis at an orbit: NaN, the failure penalty
+    e.constraints.push_back(s.converged ? d.floquet_max_modulus / c.floquet_max_modulus - 1.0
+                                        : untrimmed);
   return e;
 }
 
@@ -259,13 +338,16 @@ void DesignProblem::observe(const std::vector<double>& /*x*/, const Evaluation& 
                             ProblemWorkspace& workspace) const {
   auto& ws = static_cast<DesignWorkspace&>(workspace);
   const std::vector<double>& v = result.values;
-  if (result.status != EvaluationStatus::kOk || v.size() != kDesignValueCount ||
+  if (result.status != EvaluationStatus::kOk || v.size() != value_info_.size() ||
       v[kTrimConverged] != 1.0)
     return;
+  // The warm start: the trim point, or with the periodic trim its Eq. (4) start (the orbit's
+  // cycle means are not an Eq. (4) solution; stage 1 would walk from them again).
+  const bool periodic = v.size() == kPeriodicDesignValueCount;
   OperatingPoint p;
-  p.theta_rad = v[kTrimTheta];
-  p.speed_mps = v[kTrimSpeed];
-  p.tail_angle_rad = v[kTrimTailAngle];
+  p.theta_rad = v[periodic ? kEquation4Theta : kTrimTheta];
+  p.speed_mps = v[periodic ? kEquation4Speed : kTrimSpeed];
+  p.tail_angle_rad = v[periodic ? kEquation4TailAngle : kTrimTailAngle];
   p.freq_hz = v[kTrimFreq];
   ws.last_trim = p;
 }
@@ -274,7 +356,7 @@ VehicleModel DesignProblem::designVehicle(const std::vector<double>& x,
                                           const Evaluation& result) const {
   VehicleModel v = applyDesign(base_, space_, x);
   const std::vector<double>& r = result.values;
-  if (result.status == EvaluationStatus::kOk && r.size() == kDesignValueCount &&
+  if (result.status == EvaluationStatus::kOk && r.size() == value_info_.size() &&
       r[kTrimConverged] == 1.0) {
     v.operating_point.theta_rad = r[kTrimTheta];
     v.operating_point.speed_mps = r[kTrimSpeed];

@@ -28,7 +28,15 @@
 //   pitch_amplitude  (optional) amplitude / limit - 1 (a diverged flight: as for bounded);
 //   tip_deflection   (optional, flexible wing) max |tip deflection| over one periodic cycle of the
 //                    tethered run at the trim point / limit - 1;
-//   structural_mass  (optional) mass of both wings (members + skin) / limit - 1.
+//   structural_mass  (optional) mass of both wings (members + skin) / limit - 1;
+//   floquet_max_modulus (optional, periodic trim) largest Floquet multiplier modulus of the
+//                    trimmed orbit / limit - 1 (the orbit's stability, issue 16; a limit < 1
+//                    demands a stable orbit with that margin).
+// The trim: options.trim.method two-stage (solveTrim) or periodic (solvePeriodicTrim: the orbit
+// of free flight, its Floquet multipliers, and the bounded-norm check when verify_free_flight).
+// With the periodic trim the power is that of the tethered periodic run at the orbit's cycle-mean
+// point (theta, airspeed, tail angle, frequency), with the two-stage trim's default run
+// tolerances: the same definition as the two-stage trim's power, at the periodic trim's point.
 // Without a converged trim the trim-point quantities do not exist: bounded, pitch_amplitude and
 // tip_deflection are then trimmed + 2 divergence_ratio, worse than any flown value and
 // following the trim constraint, so that the largest violation (which COBYLA reduces first) still
@@ -54,9 +62,21 @@ namespace orni::opt {
 
 /// The physical outcome of one design evaluation.
 struct DesignEvaluation {
-  bool trim_attempted = false;  ///< the model was built and solveTrim ran
+  bool trim_attempted = false;  ///< the model was built and the trim ran
   std::string message;          ///< failure reason, or the trim / free-flight verdict
-  TrimSummary trim;             ///< valid when trim_attempted
+  /// Valid when trim_attempted. With the periodic trim: status, message, solution (the orbit's
+  /// cycle means), free_flight from the periodic trim; scaled_residual_max = its periodic
+  /// residual (or the Eq. (4) start's when that did not converge); evaluations = period maps;
+  /// mean = the tethered periodic run at the solution (the hinge power, as the two-stage trim's).
+  TrimSummary trim;
+  /// The tolerance trim.scaled_residual_max is measured against (the constraint "trimmed"):
+  /// Eq. (4)'s residual_tol, or the periodic residual_tol once the Eq. (4) start converged.
+  double residual_tol = 0.0;
+  bool periodic = false;        ///< the periodic trim ran (options.trim.method)
+  bool floquet_valid = false;   ///< the periodic orbit's Floquet analysis exists
+  double floquet_max_modulus = std::numeric_limits<double>::quiet_NaN();
+  double periodic_residual = std::numeric_limits<double>::quiet_NaN();  ///< scaled states
+  OperatingPoint equation4;     ///< the periodic trim's Eq. (4) start (its final iterate)
   double pitch_amplitude_rad = std::numeric_limits<double>::quiet_NaN();
   double tip_deflection_m = std::numeric_limits<double>::quiet_NaN();
   double structural_mass_kg = std::numeric_limits<double>::quiet_NaN();  ///< both wings
@@ -76,7 +96,8 @@ struct DesignValueInfo {
   double si_per_unit;
 };
 
-/// Indices of Evaluation::values of the design problem.
+/// Indices of Evaluation::values of the design problem: kDesignValueCount of them, and with the
+/// periodic trim six more (kFloquetMaxModulus .. kEquation4TailAngle).
 enum DesignValue : int {
   kTrimConverged = 0,  ///< 1 / 0
   kTrimTheta,          ///< rad
@@ -93,8 +114,15 @@ enum DesignValue : int {
   kPitchAmplitude,     ///< rad
   kTipDeflection,      ///< m
   kStructuralMass,     ///< kg, both wings
-  kPeriodicRuns,       ///< periodic runs of the trim
-  kDesignValueCount
+  kPeriodicRuns,       ///< periodic runs of the trim (two-stage) or period maps (periodic)
+  kDesignValueCount,
+  kFloquetMaxModulus = kDesignValueCount,  ///< largest |mu| of the orbit (periodic trim only)
+  kFloquetStable,      ///< 1 / 0 (NaN: no Floquet analysis)
+  kPeriodicResidual,   ///< max |x(T) - x(0)| in state scales
+  kEquation4Theta,     ///< rad: the Eq. (4) start of the periodic trim (its warm start)
+  kEquation4Speed,     ///< m/s
+  kEquation4TailAngle, ///< rad
+  kPeriodicDesignValueCount
 };
 
 class DesignProblem final : public Problem {
@@ -105,16 +133,18 @@ class DesignProblem final : public Problem {
 
   int variableCount() const override { return space_.size(); }
   int constraintCount() const override { return static_cast<int>(constraint_names_.size()); }
-  int valueCount() const override { return kDesignValueCount; }
+  int valueCount() const override { return static_cast<int>(value_info_.size()); }
   std::unique_ptr<ProblemWorkspace> makeWorkspace() const override;
   Evaluation evaluate(const std::vector<double>& x, ProblemWorkspace& workspace) const override;
   void observe(const std::vector<double>& x, const Evaluation& result,
                ProblemWorkspace& workspace) const override;
 
   /// Names of the constraints in order: "trimmed", then the enabled ones of "bounded",
-  /// "pitch_amplitude", "tip_deflection", "structural_mass".
+  /// "pitch_amplitude", "tip_deflection", "structural_mass", "floquet_max_modulus".
   const std::vector<std::string>& constraintNames() const { return constraint_names_; }
-  static const std::vector<DesignValueInfo>& valueInfo();
+  /// The reported values (Evaluation::values), in DesignValue order: the two-stage trim's, and
+  /// with the periodic trim the Floquet ones after them.
+  const std::vector<DesignValueInfo>& valueInfo() const { return value_info_; }
 
   const VehicleModel& baseVehicle() const { return base_; }
   const DesignSpace& space() const { return space_; }
@@ -130,6 +160,7 @@ class DesignProblem final : public Problem {
   DesignSpace space_;
   DesignProblemOptions options_;
   std::vector<std::string> constraint_names_;
+  std::vector<DesignValueInfo> value_info_;
 };
 
 }  // namespace orni::opt

@@ -418,6 +418,10 @@ std::vector<FieldSpec> makeTable() {
              "0", "limit of the tip deflection (flexible wing); 0 = off"),
       number("optimize.constraints.structural_mass_max_kg", "kg", 1.0, R::closed(0.0, 1000.0), "0",
              "limit of the mass of both wings; 0 = off"),
+      // Moduli above 10 mean an orbit that grows tenfold per flapping period: no design limit.
+      number("optimize.constraints.floquet_max_modulus", "-", 1.0, R::closed(0.0, 10.0), "0",
+             "limit of the largest Floquet multiplier modulus of the trimmed orbit (trim method "
+             "\"periodic\"; < 1 = stable); 0 = off"),
       // 1e6 per unit: weights beyond it only rescale the objective.
       number("optimize.weights.power_per_W", "1/W", 1.0, R::closed(0.0, 1e6), "1",
              "weight of the power (objective \"weighted\")"),

@@ -5,7 +5,8 @@
 # rows and one row per evaluation, the best design as a vehicle file and the convergence figure;
 # history.csv is byte-identical for -j 1 and -j 2, through `run` and for the resolved study; the
 # best vehicle re-runs through `ornithopter trim` with the reported objective (issue acceptance 3);
-# a kill -9 followed by a resume gives the same bytes; bad input exits 2.
+# a kill -9 followed by a resume gives the same bytes; the periodic trim with the Floquet constraint
+# (issue 16) reports the orbit's multipliers; bad input exits 2.
 #   usage: bash cli_optimize.sh <ornithopter-binary> <repo-root> <scratch-dir>
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
@@ -115,6 +116,43 @@ if [ -f "$journal" ]; then
 else
   echo "skip kill-and-resume: the run finished before it could be killed"
 fi
+
+# The periodic trim and the Floquet constraint (issue 16): the flexible magpie, tail area only, 3
+# evaluations. The baseline design's largest multiplier is the one `trim --method periodic` reports
+# for the same vehicle and frequency (the same code path: the same digits).
+periodic="$scratch/periodic.toml"
+cat > "$periodic" <<EOF
+kind = "optimize"
+name = "periodic"
+vehicle = "$efw"
+[optimize]
+freq_hz = 12.0
+max_evaluations = 3
+starts = 1
+variables = [ { name = "tail.area_m2", lower = 0.006, upper = 0.009 } ]
+[optimize.constraints]
+bounded = false
+floquet_max_modulus = 0.99
+[optimize.trim]
+method = "periodic"
+EOF
+p="$scratch/periodic_out"
+check "periodic-trim optimisation exits 0" "$bin" optimize "$periodic" -o "$p"
+check "history.csv has g_floquet_max_modulus" bash -c "head -1 '$p/history.csv' | grep -q ',g_floquet_max_modulus,'"
+check "history.csv has floquet_max_modulus, floquet_stable, periodic_residual" \
+  bash -c "head -1 '$p/history.csv' | grep -q ',floquet_max_modulus,floquet_stable,periodic_residual,'"
+check "resolved study keeps the method and the limit" \
+  bash -c "grep -q 'method = \"periodic\"' '$p/study.resolved.toml' && grep -q 'floquet_max_modulus = 0.99' '$p/study.resolved.toml'"
+"$bin" trim "$efw" --freq 12 --method periodic -o "$scratch/periodic_trim" > /dev/null 2>&1
+mu_opt=$(python3 -c "import json,sys; print(repr(json.load(open(sys.argv[1]))['baseline']['floquet_max_modulus']))" "$p/summary.json")
+mu_trim=$(python3 -c "import json,sys; print(repr(json.load(open(sys.argv[1]))['floquet']['max_modulus']))" "$scratch/periodic_trim/summary.json")
+check "baseline max |mu| equals trim --method periodic's ($mu_opt vs $mu_trim)" test "$mu_opt" = "$mu_trim"
+g=$(python3 -c "import json,sys; d=json.load(open(sys.argv[1]))['baseline']; print(abs(d['constraints']['floquet_max_modulus'] - (d['floquet_max_modulus'] / 0.99 - 1)) < 1e-15)" "$p/summary.json")
+check "g_floquet_max_modulus = max |mu| / limit - 1" test "$g" = True
+sed -e 's/^method = "periodic"$//' "$periodic" > "$scratch/floquet_two_stage.toml"
+"$bin" optimize "$scratch/floquet_two_stage.toml" -o "$scratch/bad" 2> "$scratch/bad.txt"
+check "floquet_max_modulus with the two-stage trim exits 2" test $? -eq 2
+check "... naming the key" grep -q 'optimize.constraints.floquet_max_modulus' "$scratch/bad.txt"
 
 # Exit codes for bad input.
 "$bin" optimize "$root/studies/examples/efw_trim.toml" -o "$scratch/bad" 2> "$scratch/bad.txt"

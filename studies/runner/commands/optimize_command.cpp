@@ -79,7 +79,7 @@ HistoryColumns historyColumns(const DesignProblem& p) {
 
 CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
   const auto& vars = p.space().variables;
-  const std::vector<DesignValueInfo>& info = DesignProblem::valueInfo();
+  const std::vector<DesignValueInfo>& info = p.valueInfo();
   const std::size_t n = vars.size(), m = p.constraintNames().size(), k = info.size();
   std::vector<double> evaluation, start, index, objective, feasible, failed, violation;
   std::vector<std::string> stage, status, repeat, best_col, message;
@@ -134,7 +134,7 @@ JsonObject designObject(const DesignProblem& p, const std::vector<double>& x) {
 /// The physical results of one evaluation (file units; null where there is none).
 JsonObject resultObject(const DesignProblem& p, const OptimizerSummary& s, int h) {
   const EvaluationRecord& r = s.history[static_cast<std::size_t>(h)];
-  const std::vector<DesignValueInfo>& info = DesignProblem::valueInfo();
+  const std::vector<DesignValueInfo>& info = p.valueInfo();
   JsonObject o;
   o.set("evaluation", h).set("start", r.start).set("start_evaluation", r.index);
   o.set("design", designObject(p, r.x));
@@ -147,7 +147,7 @@ JsonObject resultObject(const DesignProblem& p, const OptimizerSummary& s, int h
   for (std::size_t j = 0; j < info.size(); ++j) {
     const double v = r.result.values[j] / info[j].si_per_unit;
     const std::string name = info[j].name;
-    if (name == "trim_converged" || name == "bounded") {
+    if (name == "trim_converged" || name == "bounded" || name == "floquet_stable") {
       if (std::isfinite(v))
         o.set(name, v == 1.0);
       else

@@ -32,7 +32,8 @@ const std::vector<std::pair<std::string, DesignObjective>> kObjectives = {
 
 const std::vector<std::string> kVariableKeys = {"name", "fields", "lower", "upper", "initial"};
 const std::vector<std::string> kConstraintKeys = {"bounded", "pitch_amplitude_max_deg",
-                                                  "tip_deflection_max_m", "structural_mass_max_kg"};
+                                                  "tip_deflection_max_m", "structural_mass_max_kg",
+                                                  "floquet_max_modulus"};
 const std::vector<std::string> kWeightKeys = {"power_per_W", "pitch_amplitude_per_deg"};
 
 bool isVariableNameChar(char c) {
@@ -210,6 +211,8 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
                                                k.tip_deflection_max_m);
     k.structural_mass_max_kg = c->optionalDouble(
         field("optimize.constraints.structural_mass_max_kg"), k.structural_mass_max_kg);
+    k.floquet_max_modulus = c->optionalDouble(field("optimize.constraints.floquet_max_modulus"),
+                                              k.floquet_max_modulus);
     if (k.tip_deflection_max_m > 0.0 && vehicle.wing.structure != orni::StructureLevel::kFlexible)
       throw c->valueError("tip_deflection_max_m",
                           "0 (off) for a rigid wing (set wing.structure = \"flexible\")",
@@ -240,7 +243,6 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
                                  trim->keyPath("freq_hz"),
                                  "the trim frequency of an optimisation is optimize.freq_hz");
   if (trim) {
-    rejectPeriodicMethod(*trim, "an optimisation");
     p.trim = readTrimSection(*trim, at_freq);
   } else {
     toml::table empty;
@@ -250,6 +252,14 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
   }
   r.finish();
 
+  if (p.constraints.floquet_max_modulus > 0.0 &&
+      !(p.trim.method == orni::TrimMethod::kPeriodic && p.trim.periodic.floquet)) {
+    TableReader c = r.requiredTable("constraints", kConstraintKeys);
+    throw c.valueError("floquet_max_modulus",
+                       "0 (off) unless [optimize.trim] has method = \"periodic\" with its Floquet "
+                       "analysis on (the multipliers come from the periodic orbit)",
+                       sourceText(*c.table().get("floquet_max_modulus")));
+  }
   std::string why;
   if (!p.IsValid(&why)) throw r.valueError("objective", "a consistent design problem", why);
   o.threads = 1;
@@ -284,6 +294,9 @@ void writeOptimizeSection(const OptimizeSettings& s, TomlWriter& out) {
   out.scaled("pitch_amplitude_max_deg", c.pitch_amplitude_max_rad, orni::kDegToRad, "0 = off");
   out.number("tip_deflection_max_m", c.tip_deflection_max_m, "0 = off");
   out.number("structural_mass_max_kg", c.structural_mass_max_kg, "0 = off; both wings");
+  if (c.floquet_max_modulus > 0.0)  // written only when on: the resolved files of earlier runs hold
+    out.number("floquet_max_modulus", c.floquet_max_modulus,
+               "largest |mu| of the trimmed orbit (trim method \"periodic\")");
   if (p.objective == DesignObjective::kWeighted) {
     out.header({"optimize", "weights"});
     out.number("power_per_W", p.weights.power_per_W);

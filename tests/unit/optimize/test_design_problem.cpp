@@ -3,7 +3,8 @@
 // efw_magpie maps its trim and free flight to the objective and constraints: a converged trim is
 // trimmed (g = -1) with the hinge power as the objective, a trim without equilibrium is a finite
 // violation (how far from trim), a design that is not a valid vehicle is a failed evaluation
-// (never an exception), and the warm start follows the last converged trim of the start.
+// (never an exception), and the warm start follows the last converged trim of the start. With the
+// periodic trim: the Floquet constraint and values are the orbit's (issue 16).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,7 +13,10 @@
 #include <vector>
 
 #include "core/model/frames.hpp"
+#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/tethered_simulation.hpp"
 #include "optimize/design_problem.hpp"
+#include "trim/periodic_trim.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
 namespace orni::opt {
@@ -205,6 +209,75 @@ TEST(OptimizeDesignProblem, RejectsInconsistentSetups) {
   o.constraints.tip_deflection_max_m = 0.0;
   o.trim.verify_free_flight = false;  // bounded needs the free flight
   EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+  o.trim.verify_free_flight = true;
+  o.constraints.floquet_max_modulus = 0.98;  // the multipliers need the periodic trim
+  EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+  usePeriodicMethod(&o.trim);
+  o.trim.periodic.floquet = false;  // ... with its Floquet analysis on
+  EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+  o.trim.periodic.floquet = true;
+  o.constraints.floquet_max_modulus = -0.5;
+  EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
+}
+
+// The periodic trim as the trim of a design evaluation (issue 16): the flexible magpie at 12 Hz
+// with the floquet_max_modulus constraint and no bounded-norm flight. The orbit and multipliers
+// are solvePeriodicTrim's (the same code path, so equal to the last bit), the constraint is
+// max |mu| / limit - 1, and the objective is the hinge power of the tethered periodic run at the
+// orbit's cycle-mean point with the two-stage trim's default run tolerances.
+TEST(OptimizeDesignProblem, PeriodicTrimGivesTheFloquetConstraint) {
+  const VehicleModel v = magpie();
+  DesignSpace s;
+  DesignVariable area;
+  area.name = "tail.area_m2";
+  area.fields = resolve("tail.area_m2", v);
+  area.initial = fieldValue(v, area.fields.front());
+  area.lower = 0.5 * area.initial;
+  area.upper = 2.0 * area.initial;
+  s.variables = {area};
+  DesignProblemOptions o;
+  o.trim = defaultTrimOptions(v);
+  o.trim.initial.freq_hz = 12.0;
+  usePeriodicMethod(&o.trim);
+  o.constraints.bounded = false;
+  o.constraints.floquet_max_modulus = 0.98;
+  const DesignProblem p(v, s, o);
+  ASSERT_EQ(p.constraintNames(), (std::vector<std::string>{"trimmed", "floquet_max_modulus"}));
+  ASSERT_EQ(p.valueCount(), static_cast<int>(kPeriodicDesignValueCount));
+  EXPECT_EQ(p.valueInfo()[kFloquetMaxModulus].name, std::string("floquet_max_modulus"));
+  auto ws = p.makeWorkspace();
+  const Evaluation e = p.evaluate(p.box().initial, *ws);
+  SCOPED_TRACE(e.message);
+  ASSERT_EQ(e.status, EvaluationStatus::kOk);
+  ASSERT_EQ(e.values.size(), static_cast<std::size_t>(kPeriodicDesignValueCount));
+  ASSERT_EQ(e.values[kTrimConverged], 1.0);
+  EXPECT_EQ(e.constraints[0], -1.0);
+
+  const FlightCoreModel model(v);
+  TrimOptions t = o.trim;
+  t.verify_free_flight = false;
+  const PeriodicTrimSummary ref = solvePeriodicTrim(model, t);
+  ASSERT_TRUE(ref.converged && ref.floquet_valid) << ref.message;
+  EXPECT_EQ(e.values[kFloquetMaxModulus], ref.floquet.max_modulus);
+  EXPECT_EQ(e.values[kFloquetStable], ref.floquet.max_modulus < 1.0 ? 1.0 : 0.0);
+  EXPECT_EQ(e.values[kPeriodicResidual], ref.shooting.residual_max);
+  EXPECT_LE(e.values[kPeriodicResidual], o.trim.periodic.residual_tol);
+  EXPECT_EQ(e.constraints[1], ref.floquet.max_modulus / 0.98 - 1.0);
+  EXPECT_EQ(e.values[kTrimTheta], ref.solution.theta_rad);
+  EXPECT_EQ(e.values[kTrimSpeed], ref.solution.speed_mps);
+  EXPECT_EQ(e.values[kTrimTailAngle], ref.solution.tail_angle_rad);
+  EXPECT_TRUE(std::isnan(e.values[kBounded]));  // no bounded-norm flight was asked for
+  EXPECT_NE(e.message.find("Floquet max |mu|"), std::string::npos);
+
+  SimulationOptions run = defaultTrimOptions(v).simulation;
+  run.mode = FlightMode::kTethered;
+  run.stop_when_steady = true;
+  const SimulationSummary tethered = simulateTethered(model, ref.solution, run, nullptr);
+  EXPECT_EQ(e.objective, tethered.mean.power_hinge_W);
+  EXPECT_EQ(e.values[kPowerAero], tethered.mean.power_aero_W);
+  // The power at the orbit's mean point is near the Eq. (4) start's (the points differ by the
+  // settling of the free flight: tenths of a degree and of a m/s).
+  EXPECT_NEAR(e.objective, ref.stage1.mean.power_hinge_W, 0.05 * ref.stage1.mean.power_hinge_W);
 }
 
 }  // namespace
