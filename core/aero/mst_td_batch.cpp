@@ -103,8 +103,13 @@ void prepareStripBatch(const StripContext& context, StripBatch& b) {
   b.two_over_c = 2.0 / c;
 }
 
-void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* states,
-                    double* state_derivatives) {
+namespace {
+
+// kUniformFrame: e_c, n, w_s and wdot_s are the same for every strip (a rigid wing) and read from
+// element 0 only, so that the compiler hoists what depends on them alone out of the strip loops.
+template <bool kUniformFrame>
+void evalBatch(const StripContext& context, StripBatch& b, const double* states,
+               double* state_derivatives) {
   const AeroParameters& params = *context.params;
   const Eigen::Index n = b.size();
   const double alpha0 = params.zero_lift_angle_rad;
@@ -165,21 +170,22 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
   // Pass 1: kinematics (2.3), lag (9.3 option A), angles of the stall criterion (9.4).
 #pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
   for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Index k = kUniformFrame ? 0 : j;  // frame index
     // q = v_air - v_P, a_pitch = e_c x n, thetadot, thetaddot, V_t, Vn(x), vdot2.
     const double qx = airx[j] - vx[j], qy = airy[j] - vy[j], qz = airz[j] - vz[j];
-    const double ax = ecy[j] * nz[j] - ecz[j] * ny[j];
-    const double ay = ecz[j] * nx[j] - ecx[j] * nz[j];
-    const double az = ecx[j] * ny[j] - ecy[j] * nx[j];
-    const double wx = wsx[j], wy = wsy[j], wz = wsz[j];
+    const double ax = ecy[k] * nz[k] - ecz[k] * ny[k];
+    const double ay = ecz[k] * nx[k] - ecx[k] * nz[k];
+    const double az = ecx[k] * ny[k] - ecy[k] * nx[k];
+    const double wx = wsx[k], wy = wsy[k], wz = wsz[k];
     const double thd = wx * ax + wy * ay + wz * az;
-    const double thdd = wdx[j] * ax + wdy[j] * ay + wdz[j] * az;
-    const double Vt = -(qx * ecx[j] + qy * ecy[j] + qz * ecz[j]);
-    const double qn = qx * nx[j] + qy * ny[j] + qz * nz[j];
+    const double thdd = wdx[k] * ax + wdy[k] * ay + wdz[k] * az;
+    const double Vt = -(qx * ecx[k] + qy * ecy[k] + qz * ecz[k]);
+    const double qn = qx * nx[k] + qy * ny[k] + qz * nz[k];
     const double Vn34 = qn + thd * lever75[j];
     // vdot2 = -a_P.n + q.(w_s x n) + thetaddot (c/2 - x_P)
-    const double vdot2 = -(aPx[j] * nx[j] + aPy[j] * ny[j] + aPz[j] * nz[j]) +
-                         qx * (wy * nz[j] - wz * ny[j]) + qy * (wz * nx[j] - wx * nz[j]) +
-                         qz * (wx * ny[j] - wy * nx[j]) + thdd * lever50[j];
+    const double vdot2 = -(aPx[j] * nx[k] + aPy[j] * ny[k] + aPz[j] * nz[k]) +
+                         qx * (wy * nz[k] - wz * ny[k]) + qy * (wz * nx[k] - wx * nz[k]) +
+                         qz * (wx * ny[k] - wy * nx[k]) + thdd * lever50[j];
     // 9.5 steps 2-3: V_r floored; resultant 3/4-chord angle clipped to +-pi/2.
     const double Vr = std::max(std::sqrt(Vt * Vt + Vn34 * Vn34), min_speed);
     const double alpha34 = std::max(std::min(atan2Poly(Vn34, Vt), kHalfPi), -kHalfPi);
@@ -234,6 +240,7 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
   const double* __restrict chord = b.chord_m.data();
 #pragma GCC ivdep
   for (Eigen::Index j = 0; j < n; ++j) {
+    const Eigen::Index k = kUniformFrame ? 0 : j;  // frame index
     const double f = separation_lag ? std::max(std::min(f_state_a[j], 1.0), 0.0) : fst[j];
     const double Vr = Vr_a[j], Vt = Vt_a[j], Vn50 = Vn50_a[j], thd = thd_a[j];
     const double angle_b = angle_b_a[j];
@@ -254,9 +261,9 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
         f * (cm_ac * qrcdy * chord[j] - k_couple1[j] * Vr * thd - k_couple2[j] * thdd_a[j]);
     // 6.3: F = dN n + dFx e_c; moment about P along a_pitch.
     const double dN = dN4 + dN2;
-    Fx[j] = dN * nx[j] + dFx * ecx[j];
-    Fy[j] = dN * ny[j] + dFx * ecy[j];
-    Fz[j] = dN * nz[j] + dFx * ecz[j];
+    Fx[j] = dN * nx[k] + dFx * ecx[k];
+    Fy[j] = dN * ny[k] + dFx * ecy[k];
+    Fz[j] = dN * nz[k] + dFx * ecz[k];
     const double m = -lever25[j] * dN4 - lever50[j] * dN2 + couple;
     Mx[j] = m * apx[j];
     My[j] = m * apy[j];
@@ -269,6 +276,18 @@ void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* st
     state_derivatives[2 * j + 1] =
         separation_lag ? (fst[j] - f_state_a[j]) * (Vr_a[j] * two_over_c[j] * inv_tf0) : 0.0;
   }
+}
+
+}  // namespace
+
+void evalMstTdBatch(const StripContext& context, StripBatch& b, const double* states,
+                    double* state_derivatives) {
+  evalBatch<false>(context, b, states, state_derivatives);
+}
+
+void evalMstTdBatchUniformFrame(const StripContext& context, StripBatch& b, const double* states,
+                                double* state_derivatives) {
+  evalBatch<true>(context, b, states, state_derivatives);
 }
 
 }  // namespace orni::aero

@@ -61,4 +61,9 @@ void prepareStripBatch(const StripContext& context, StripBatch& batch);
 void evalMstTdBatch(const StripContext& context, StripBatch& batch, const double* states,
                     double* state_derivatives);
 
+/// The same for strips that share one frame (a rigid wing): e_c, n, w_s and wdot_s are read from
+/// element 0 of ecx..nz, wx..wz, wdx..wdz only (the other elements are not read).
+void evalMstTdBatchUniformFrame(const StripContext& context, StripBatch& batch,
+                                const double* states, double* state_derivatives);
+
 }  // namespace orni::aero

@@ -210,19 +210,23 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
     // Vectorised MST-TD over all strips (same equations as the scalar loop below).
     aero::StripBatch& b = data.batch;
     const Eigen::ArrayXd& y = data.y_strip_m;
-    b.ecx.setConstant(fr.e_c_B.x()); b.ecy.setConstant(fr.e_c_B.y()); b.ecz.setConstant(fr.e_c_B.z());
-    b.nx.setConstant(fr.n_B.x()); b.ny.setConstant(fr.n_B.y()); b.nz.setConstant(fr.n_B.z());
+    // One frame for all strips: element 0 (evalMstTdBatchUniformFrame).
+    b.ecx[0] = fr.e_c_B.x(); b.ecy[0] = fr.e_c_B.y(); b.ecz[0] = fr.e_c_B.z();
+    b.nx[0] = fr.n_B.x(); b.ny[0] = fr.n_B.y(); b.nz[0] = fr.n_B.z();
     b.vx = v0.x() + y * v1.x(); b.vy = v0.y() + y * v1.y(); b.vz = v0.z() + y * v1.z();
     b.ax = a0.x() + y * a1.x(); b.ay = a0.y() + y * a1.y(); b.az = a0.z() + y * a1.z();
-    b.wx.setConstant(fr.omega_B.x()); b.wy.setConstant(fr.omega_B.y()); b.wz.setConstant(fr.omega_B.z());
-    b.wdx.setConstant(fr.alpha_B.x()); b.wdy.setConstant(fr.alpha_B.y()); b.wdz.setConstant(fr.alpha_B.z());
-    aero::evalMstTdBatch(model.aero_context, b, aero_states, aero_state_derivatives);
+    b.wx[0] = fr.omega_B.x(); b.wy[0] = fr.omega_B.y(); b.wz[0] = fr.omega_B.z();
+    b.wdx[0] = fr.alpha_B.x(); b.wdy[0] = fr.alpha_B.y(); b.wdz[0] = fr.alpha_B.z();
+    aero::evalMstTdBatchUniformFrame(model.aero_context, b, aero_states, aero_state_derivatives);
     sum_F = Vec3(b.Fx.sum(), b.Fy.sum(), b.Fz.sum());
     sum_yF = Vec3((y * b.Fx).sum(), (y * b.Fy).sum(), (y * b.Fz).sum());
     sum_M_P = Vec3(b.Mx.sum(), b.My.sum(), b.Mz.sum());
-    area = (b.chord_m * b.width_m).sum();
-    separated_area = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum();
-    Eigen::Map<Eigen::ArrayXd>(data.separation_f.data(), y.size()) = b.separation_f;
+    if (!aero_state_derivatives) {  // a sample: the separated fraction, a diagnostic the
+                                    // right-hand side does not need
+      area = (b.chord_m * b.width_m).sum();
+      separated_area = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum();
+      Eigen::Map<Eigen::ArrayXd>(data.separation_f.data(), y.size()) = b.separation_f;
+    }
   } else {
     for (std::size_t j = 0; j < model.strips.size(); ++j) {
       const aero::StripGeometry& g = model.strip_geometry[j];

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "core/aero/mst_td_batch.hpp"
@@ -99,6 +100,69 @@ TEST(AeroMstTdBatch, MatchesScalarKernelStripByStrip) {
     EXPECT_NEAR(b.separation_f[i], L.separation_f, 1e-14) << i;
     EXPECT_NEAR(d_batch[2 * i], d_scalar[2 * i], kBatchRelTol * std::max(1.0, std::abs(d_scalar[2 * i]))) << i;
     EXPECT_NEAR(d_batch[2 * i + 1], d_scalar[2 * i + 1], kBatchRelTol * std::max(1.0, std::abs(d_scalar[2 * i + 1]))) << i;
+  }
+}
+
+// The rigid wing's kernel (one frame for all strips, read from element 0) against the general one
+// with that frame copied into every element: the same equations with the frame-only terms hoisted
+// out of the loop, so equal to round-off (kBatchRelTol, the general kernel's own tolerance).
+TEST(AeroMstTdBatch, UniformFrameMatchesGeneralKernel) {
+  AeroParameters params;
+  params.zero_lift_angle_rad = 0.03;
+  StripContext ctx;
+  ctx.params = &params;
+  ctx.constants = MstConstants::fromAspectRatio(5.58);
+  const int n = 27;
+  StripBatch general(n), uniform(n);
+  std::vector<double> states(2 * n), d_general(2 * n), d_uniform(2 * n);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const Vec3 e_c = Vec3(0.95, 0.1, -0.3).normalized();
+  const Vec3 nrm = (Vec3(-0.3, 0.0, -0.95) - Vec3(-0.3, 0.0, -0.95).dot(e_c) * e_c).normalized();
+  const Vec3 w(3.0, 25.0, -4.0), wd(900.0, -2000.0, 150.0);
+  for (StripBatch* b : {&general, &uniform}) {
+    std::mt19937_64 r(5);
+    for (int i = 0; i < n; ++i) {
+      b->chord_m[i] = 0.05 + 0.1 * std::abs(u(r));
+      b->width_m[i] = 0.01;
+      b->ref_aft_of_le_m[i] = 0.0;
+      b->friction_coefficient[i] = 0.01;
+      b->vx[i] = 6.0 + u(r); b->vy[i] = u(r); b->vz[i] = 5.0 * u(r);
+      b->ax[i] = 300.0 * u(r); b->ay[i] = 30.0 * u(r); b->az[i] = 300.0 * u(r);
+      b->airx[i] = 0.0; b->airy[i] = 0.0; b->airz[i] = 0.0;
+    }
+    const int m = b == &general ? n : 1;  // the uniform kernel reads element 0 only
+    for (int i = 0; i < m; ++i) {
+      b->ecx[i] = e_c.x(); b->ecy[i] = e_c.y(); b->ecz[i] = e_c.z();
+      b->nx[i] = nrm.x(); b->ny[i] = nrm.y(); b->nz[i] = nrm.z();
+      b->wx[i] = w.x(); b->wy[i] = w.y(); b->wz[i] = w.z();
+      b->wdx[i] = wd.x(); b->wdy[i] = wd.y(); b->wdz[i] = wd.z();
+    }
+    for (int i = m; i < n; ++i) {  // garbage where the uniform kernel must not read
+      b->ecx[i] = b->ecy[i] = b->ecz[i] = b->nx[i] = b->ny[i] = b->nz[i] =
+          std::numeric_limits<double>::quiet_NaN();
+      b->wx[i] = b->wy[i] = b->wz[i] = b->wdx[i] = b->wdy[i] = b->wdz[i] =
+          std::numeric_limits<double>::quiet_NaN();
+    }
+    prepareStripBatch(ctx, *b);
+  }
+  for (int i = 0; i < n; ++i) {
+    states[2 * i] = 0.5 * u(rng);
+    states[2 * i + 1] = 0.5 + 0.5 * u(rng);
+  }
+  evalMstTdBatch(ctx, general, states.data(), d_general.data());
+  evalMstTdBatchUniformFrame(ctx, uniform, states.data(), d_uniform.data());
+  for (int i = 0; i < n; ++i) {
+    const double scale = std::max(1e-6, std::abs(general.Fx[i]) + std::abs(general.Fz[i]));
+    EXPECT_NEAR(uniform.Fx[i], general.Fx[i], kBatchRelTol * scale) << i;
+    EXPECT_NEAR(uniform.Fy[i], general.Fy[i], kBatchRelTol * scale) << i;
+    EXPECT_NEAR(uniform.Fz[i], general.Fz[i], kBatchRelTol * scale) << i;
+    EXPECT_NEAR(uniform.My[i], general.My[i], kBatchRelTol * std::max(1e-9, std::abs(general.My[i]))) << i;
+    EXPECT_EQ(std::isfinite(uniform.Fx[i]), true) << i;
+    EXPECT_NEAR(uniform.separation_f[i], general.separation_f[i], 1e-14) << i;
+    for (int k = 0; k < 2; ++k)
+      EXPECT_NEAR(d_uniform[2 * i + k], d_general[2 * i + k],
+                  kBatchRelTol * std::max(1.0, std::abs(d_general[2 * i + k]))) << i;
   }
 }
 
