@@ -270,7 +270,9 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   // and join the replay set. minimize() below then replays every evaluation, as a resumed run
   // does from a complete journal: the outputs are the bytes of a single-process run.
   int farm_computed = 0;
+  double farm_s = 0.0;
   if (farmDistributed()) {
+    const auto t_farm = std::chrono::steady_clock::now();
     std::optional<ProgressLine> starts_done;
     if (run.progress)
       starts_done.emplace("optimize starts", static_cast<std::size_t>(options.starts), 0);
@@ -305,6 +307,7 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
     };
     runFarm(job);
     if (starts_done) starts_done->finish();
+    farm_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_farm).count();
   }
 
   std::mutex progress_mutex;
@@ -330,6 +333,7 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   if (progress) progress->finish();
   s.computed += farm_computed;  // computed by the worker ranks of this run, replayed here
   s.replayed -= farm_computed;
+  s.wall_time_s += farm_s;
 
   const EvaluationRecord* best = s.bestRecord();
   if (!best) throw std::runtime_error("optimize: no evaluation was made");
