@@ -15,6 +15,7 @@
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/aeromap_figures.hpp"
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/distributed/farm_schedule.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
 #include "studies/runner/output/atomic_file.hpp"
@@ -29,6 +30,9 @@ namespace orni::studies {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Largest chunks a worker may be ahead of the first point not yet journaled (distributed runs).
+constexpr std::size_t kAeromapFarmChunksAhead = 4;
 
 trim::AeroMapGrid gridOf(const AeromapSettings& a) {
   trim::AeroMapGrid g;
@@ -187,7 +191,11 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
     for (std::size_t i = resume.records; i < grid.size(); ++i) job.todo.push_back(i);
     job.threads = run.threads;
     job.ordered = true;
-    job.ahead_limit = trim::kAeroMapLookaheadPerThread * static_cast<std::size_t>(run.threads) *
+    // The finished points waiting for an earlier one are bounded like the threads' lookahead,
+    // but by whole chunks: a window of a few chunks per worker (a window smaller than a chunk
+    // would let one worker at a time compute).
+    job.ahead_limit = kAeromapFarmChunksAhead * kFarmMaxChunkPerThread *
+                      static_cast<std::size_t>(run.threads) *
                       static_cast<std::size_t>(farmRanks() - 1);
     job.on_result = [&](std::size_t index, std::string record) {
       std::size_t parsed = 0;
