@@ -22,6 +22,8 @@ packages=(
   pybind11-dev python3-numpy python3-pytest python3-matplotlib
   # the readers' libFuzzer target (.ci/run); flock and unshare of the CLI tests
   clang-14 libclang-rt-14-dev util-linux
+  # distributed runs (mpirun -n N ornithopter run STUDY) and their test cli.mpi_runs
+  libopenmpi-dev openmpi-bin
 )
 
 install_packages() {

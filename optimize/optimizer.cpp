@@ -401,9 +401,9 @@ std::string OptimizerSummary::BriefReport() const {
   return s;
 }
 
-OptimizerSummary minimize(const Problem& problem, const VariableBox& box,
-                          const OptimizerOptions& options, const OptimizerHooks& hooks) {
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+
+void checkInputs(const Problem& problem, const VariableBox& box, const OptimizerOptions& options) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("optimizer options: " + why);
   if (!box.IsValid(&why)) throw std::invalid_argument("variable box: " + why);
@@ -413,6 +413,29 @@ OptimizerSummary minimize(const Problem& problem, const VariableBox& box,
   if (problem.constraintCount() < 0) throw std::invalid_argument("negative constraint count");
   if (options.algorithm == Algorithm::kBobyqa && box.size() < 2)
     throw std::invalid_argument("bobyqa needs at least 2 variables");
+}
+
+}  // namespace
+
+std::vector<EvaluationRecord> runStart(const Problem& problem, const VariableBox& box,
+                                       const OptimizerOptions& options,
+                                       const OptimizerHooks& hooks, int start) {
+  checkInputs(problem, box, options);
+  if (start < 0 || start >= options.starts)
+    throw std::invalid_argument("runStart: expected a start in [0, " +
+                                std::to_string(options.starts) + "), got " +
+                                std::to_string(start));
+  std::atomic<bool> abort{false};
+  StartRun run(problem, box, options, hooks, start, &abort);
+  run.run();
+  if (run.error()) std::rethrow_exception(run.error());
+  return std::move(run.records());
+}
+
+OptimizerSummary minimize(const Problem& problem, const VariableBox& box,
+                          const OptimizerOptions& options, const OptimizerHooks& hooks) {
+  const auto t0 = std::chrono::steady_clock::now();
+  checkInputs(problem, box, options);
 
   const int starts = options.starts;
   std::vector<std::unique_ptr<StartRun>> runs(static_cast<std::size_t>(starts));

@@ -111,6 +111,14 @@ struct OptimizerHooks {
 /// Halton sequence (bases 2, 3, 5, ...) in the box.
 std::vector<double> startPoint(const VariableBox& box, int start);
 
+/// Runs start `start` alone, exactly as minimize() runs it (start point, seed, cache, hooks), and
+/// returns its records in call order: a distributed run's worker computes one start of a multi-start
+/// run (studies/runner/distributed/point_farm.hpp). Throws like minimize(), and rethrows an
+/// exception thrown by a hook; std::invalid_argument when start is outside [0, options.starts).
+std::vector<EvaluationRecord> runStart(const Problem& problem, const VariableBox& box,
+                                       const OptimizerOptions& options,
+                                       const OptimizerHooks& hooks, int start);
+
 /// Run the optimisation. Throws std::invalid_argument for invalid options, box or problem sizes.
 OptimizerSummary minimize(const Problem& problem, const VariableBox& box,
                           const OptimizerOptions& options, const OptimizerHooks& hooks = {});

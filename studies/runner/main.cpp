@@ -34,10 +34,15 @@
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/folder_lock.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 #include "trim/grid_spec.hpp"
+
+#ifdef ORNI_HAVE_MPI
+#include "studies/runner/mpi/mpi_farm.hpp"
+#endif
 
 namespace fs = std::filesystem;
 using namespace orni;
@@ -136,7 +141,8 @@ void requireBodyForFreeFlight(const Study& study) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+/// The command line of one process (every rank of a distributed run parses and loads the same).
+int runCommandLine(int argc, char** argv) {
   CLI::App app{"ornithopter: flexible flapping-wing flight simulation, aero maps, trim and design"};
   app.require_subcommand(1);
   app.add_flag_callback(
@@ -301,6 +307,10 @@ int main(int argc, char** argv) {
     return rc == 0 ? kExitOk : kExitBadInput;
   }
 
+  // A worker rank of a distributed run takes part in the commands that spread points (run,
+  // aeromap, optimize) and does nothing else (rank 0 runs the rest alone).
+  if (!farmWriter() && !run->parsed() && !am->parsed() && !opt->parsed()) return kExitOk;
+
   try {
     if (sim->parsed()) {
       Study study = studyFromVehicle(sim_vehicle);
@@ -336,8 +346,9 @@ int main(int argc, char** argv) {
                            inputFileOf(s) + " both write into " + outs.back().string() +
                            " (give them different names, `name = ...`)");
       }
-      std::vector<std::unique_ptr<OutputFolderLock>> locks;
-      for (const fs::path& out : outs) locks.push_back(std::make_unique<OutputFolderLock>(out));
+      std::vector<std::unique_ptr<OutputFolderLock>> locks;  // the writer's (rank 0's) only
+      if (farmWriter())
+        for (const fs::path& out : outs) locks.push_back(std::make_unique<OutputFolderLock>(out));
       int rc = kExitOk;
       for (std::size_t i = 0; i < studies.size(); ++i) {
         const int r = runStudy(studies[i], outs[i], jobs);
@@ -365,7 +376,8 @@ int main(int argc, char** argv) {
       AeromapRunOptions opts;
       opts.threads = jobsOption(am_jobs);
       const fs::path out = outputFolder(am_out, study, false);
-      const OutputFolderLock lock(out);
+      std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
+      if (farmWriter()) lock.emplace(out);
       return runAeromapStudy(study, out, opts);
     }
     if (modes->parsed()) {
@@ -481,4 +493,19 @@ int main(int argc, char** argv) {
     std::cerr << "ornithopter: failed: " << e.what() << "\n";
     return kExitFailed;
   }
+}
+
+int main(int argc, char** argv) {
+#ifdef ORNI_HAVE_MPI
+  // Started by mpirun/srun: rank 0 is the master, the others compute (studies/runner/mpi/).
+  // Otherwise no MPI function is called: the program runs as a build without MPI.
+  if (launchedByMpi()) {
+    MpiFarm mpi(&argc, &argv);
+    setFarmBackend(&mpi);
+    const int rc = runCommandLine(argc, argv);
+    setFarmBackend(nullptr);
+    return mpi.finish(rc);
+  }
+#endif
+  return runCommandLine(argc, argv);
 }

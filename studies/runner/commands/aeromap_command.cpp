@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <string>
+#include <string_view>
 #include <stdexcept>
 #include <vector>
 
@@ -13,6 +15,8 @@
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/aeromap_figures.hpp"
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/distributed/farm_schedule.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_stream.hpp"
@@ -26,6 +30,9 @@ namespace orni::studies {
 namespace {
 
 namespace fs = std::filesystem;
+
+/// Largest chunks a worker may be ahead of the first point not yet journaled (distributed runs).
+constexpr std::size_t kAeromapFarmChunksAhead = 4;
 
 trim::AeroMapGrid gridOf(const AeromapSettings& a) {
   trim::AeroMapGrid g;
@@ -143,6 +150,15 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   // shared read-only by every point.
   const FlightCoreModel model(study.aeromap.wing_only ? study.vehicle.mainWingAlone()
                                                       : study.vehicle);
+  if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing
+    FarmJob job;
+    job.threads = run.threads;
+    job.work = [&](std::size_t index, const std::string&) {
+      return journalRecord(index, trim::computeAeroMapPoint(model, grid.point(index), options));
+    };
+    runFarm(job);
+    return 0;
+  }
   const std::string resolved = resolvedStudyToml(study);
   const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
 
@@ -163,12 +179,39 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   std::optional<ProgressLine> progress;
   if (run.progress) progress.emplace("aeromap", grid.size(), resume.records);
   const auto t_map = std::chrono::steady_clock::now();
-  trim::streamAeroMap(model, grid, options, resume.records,
-                      [&](std::size_t index, const trim::AeroMapPoint& point) {
-                        journal.append(index, point);
-                        if (progress) progress->pointDone();
-                        if (run.on_point) run.on_point(index, point);
-                      });
+  auto on_point = [&](std::size_t index, const trim::AeroMapPoint& point) {
+    journal.append(index, point);
+    if (progress) progress->pointDone();
+    if (run.on_point) run.on_point(index, point);
+  };
+  if (farmDistributed()) {
+    // Rank 0 of a distributed run: the workers return each point as its journal record, which
+    // is parsed and journaled in point order as a single process does.
+    FarmJob job;
+    for (std::size_t i = resume.records; i < grid.size(); ++i) job.todo.push_back(i);
+    job.threads = run.threads;
+    job.ordered = true;
+    // The finished points waiting for an earlier one are bounded like the threads' lookahead,
+    // but by whole chunks: a window of a few chunks per worker (a window smaller than a chunk
+    // would let one worker at a time compute).
+    job.ahead_limit = kAeromapFarmChunksAhead * kFarmMaxChunkPerThread *
+                      static_cast<std::size_t>(run.threads) *
+                      static_cast<std::size_t>(farmRanks() - 1);
+    job.on_result = [&](std::size_t index, std::string record) {
+      std::size_t parsed = 0;
+      trim::AeroMapPoint point;
+      if (record.empty() || record.back() != '\n' ||
+          !parseJournalRecord(std::string_view(record).substr(0, record.size() - 1),
+                              grid.size(), &parsed, &point) ||
+          parsed != index)
+        throw std::runtime_error("aeromap: point " + std::to_string(index) +
+                                 ": a worker rank returned an invalid record");
+      on_point(index, point);
+    };
+    runFarm(job);
+  } else {
+    trim::streamAeroMap(model, grid, options, resume.records, on_point);
+  }
   if (progress) progress->finish();
   const std::size_t computed = grid.size() - resume.records;
   const double map_s =

@@ -1,6 +1,7 @@
 #include "studies/runner/commands/run_study.hpp"
 
 #include <iostream>
+#include <optional>
 
 #include "core/model/invalid_model_error.hpp"
 #include "studies/runner/commands/aeromap_command.hpp"
@@ -14,6 +15,7 @@
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
 
 namespace fs = std::filesystem;
@@ -26,7 +28,15 @@ std::string inputFileOf(const Study& study) {
 
 namespace {
 
+/// The kinds whose points a distributed run spreads over the ranks (point_farm.hpp).
+bool spreadsPoints(StudyKind kind) {
+  return kind == StudyKind::kAeromap || kind == StudyKind::kSweep ||
+         kind == StudyKind::kSensitivity || kind == StudyKind::kOptimize;
+}
+
 int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
+  // A worker rank of a distributed run: the sequential kinds are rank 0's alone.
+  if (!farmWriter() && !spreadsPoints(study.kind)) return 0;
   switch (study.kind) {
     case StudyKind::kSimulate:
       return runSimulateStudy(study, out_dir);
@@ -78,7 +88,8 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
 }
 
 int runStudyLocked(const Study& study, const fs::path& out_dir, int jobs) {
-  const OutputFolderLock lock(out_dir);
+  std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
+  if (farmWriter()) lock.emplace(out_dir);
   return runStudy(study, out_dir, jobs);
 }
 

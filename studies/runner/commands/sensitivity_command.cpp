@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/commands/sensitivity_figures.hpp"
 #include "studies/runner/commands/sensitivity_point.hpp"
 #include "studies/runner/commands/sensitivity_ranking.hpp"
@@ -176,11 +177,20 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
   const std::size_t columns = sensitivityResultColumns().size();
 
   for (const SensitivityParameter& p : s.parameters)
-    if (std::isfinite(p.base) && (p.base < p.low || p.base > p.high))
+    if (farmWriter() && std::isfinite(p.base) && (p.base < p.low || p.base > p.high))
       std::cerr << "sensitivity: note: the base vehicle's " << p.key << " = "
                 << formatShortest(p.base) << " lies outside its range [" << formatShortest(p.low)
                 << ", " << formatShortest(p.high) << "]: both ends move it the same way\n";
 
+  if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing
+    FarmJob job;
+    job.threads = run.threads;
+    job.work = [&](std::size_t i, const std::string&) {
+      return encodeSweepPoint(runSensitivityPoint(s.points[i], s));
+    };
+    runFarm(job);
+    return 0;
+  }
   const std::string resolved = resolvedStudyToml(study);
   const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
   fs::create_directories(out_dir);
@@ -214,13 +224,30 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
 
   std::optional<ProgressLine> progress;
   if (run.progress) progress.emplace("sensitivity", n, resume.records);
-  trim::runPoints(
-      todo, run.threads, [&](std::size_t i) { rows[i] = runSensitivityPoint(s.points[i], s); },
-      [&](std::size_t i) {
-        journal.append(i, encodeSweepPoint(rows[i]));
-        if (progress) progress->pointDone();
-        if (run.on_point) run.on_point(i, rows[i]);
-      });
+  if (farmDistributed()) {
+    // Rank 0 of a distributed run: the workers return each point as its journal payload, read
+    // back as a resumed run reads it.
+    FarmJob job;
+    job.todo = todo;
+    job.threads = run.threads;
+    job.on_result = [&](std::size_t i, std::string payload) {
+      if (!decodeSweepPoint(payload, columns, &rows[i]))
+        throw std::runtime_error("sensitivity: point " + std::to_string(i) +
+                                 ": a worker rank returned an invalid result");
+      journal.append(i, payload);
+      if (progress) progress->pointDone();
+      if (run.on_point) run.on_point(i, rows[i]);
+    };
+    runFarm(job);
+  } else {
+    trim::runPoints(
+        todo, run.threads, [&](std::size_t i) { rows[i] = runSensitivityPoint(s.points[i], s); },
+        [&](std::size_t i) {
+          journal.append(i, encodeSweepPoint(rows[i]));
+          if (progress) progress->pointDone();
+          if (run.on_point) run.on_point(i, rows[i]);
+        });
+  }
   if (progress) progress->finish();
 
   const std::vector<PredictionRanking> rankings = rankSensitivity(s.parameters.size(), rows);

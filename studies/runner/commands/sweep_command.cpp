@@ -8,10 +8,12 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
@@ -198,6 +200,15 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   const std::vector<SweepColumn> columns = sweepResultColumns(study);
   const std::size_t n = grid.size();
 
+  if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing
+    FarmJob job;
+    job.threads = run.threads;
+    job.work = [&](std::size_t i, const std::string&) {
+      return encodeSweepPoint(runSweepPoint(s.points[i], s.run));
+    };
+    runFarm(job);
+    return 0;
+  }
   const std::string resolved = resolvedStudyToml(study);
   const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
   fs::create_directories(out_dir);
@@ -231,13 +242,30 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
 
   std::optional<ProgressLine> progress;
   if (run.progress) progress.emplace("sweep", n, resume.records);
-  trim::runPoints(
-      todo, run.threads, [&](std::size_t i) { rows[i] = runSweepPoint(s.points[i], s.run); },
-      [&](std::size_t i) {
-        journal.append(i, encodeSweepPoint(rows[i]));
-        if (progress) progress->pointDone();
-        if (run.on_point) run.on_point(i, rows[i]);
-      });
+  if (farmDistributed()) {
+    // Rank 0 of a distributed run: the workers return each point as its journal payload, read
+    // back as a resumed run reads it.
+    FarmJob job;
+    job.todo = todo;
+    job.threads = run.threads;
+    job.on_result = [&](std::size_t i, std::string payload) {
+      if (!decodeSweepPoint(payload, columns.size(), &rows[i]))
+        throw std::runtime_error("sweep: point " + std::to_string(i) +
+                                 ": a worker rank returned an invalid result");
+      journal.append(i, payload);
+      if (progress) progress->pointDone();
+      if (run.on_point) run.on_point(i, rows[i]);
+    };
+    runFarm(job);
+  } else {
+    trim::runPoints(
+        todo, run.threads, [&](std::size_t i) { rows[i] = runSweepPoint(s.points[i], s.run); },
+        [&](std::size_t i) {
+          journal.append(i, encodeSweepPoint(rows[i]));
+          if (progress) progress->pointDone();
+          if (run.on_point) run.on_point(i, rows[i]);
+        });
+  }
   if (progress) progress->finish();
 
   writeFileAtomic(out_dir / "sweep.csv", sweepTable(s, grid, columns, rows).toString());

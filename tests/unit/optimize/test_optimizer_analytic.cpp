@@ -259,6 +259,25 @@ TEST(OptimizeDriver, JournalReplayReproducesTheHistory) {
   EXPECT_EQ(checked.computed, 1);
 }
 
+// A distributed run's worker computes one start alone (runStart); its records, journaled and
+// replayed by minimize(), give the history of a single-process run.
+TEST(OptimizeDriver, StartsRunAloneReplayIntoTheSameHistory) {
+  const Quadratic p;
+  const OptimizerSummary fresh = minimize(p, box(), multiStart(1));
+  MemoryJournal journal;
+  for (int k = 4; k >= 0; --k) {  // in any order, each start on its own
+    const std::vector<EvaluationRecord> records =
+        runStart(p, box(), multiStart(1), journal.writer(), k);
+    ASSERT_FALSE(records.empty());
+    for (const EvaluationRecord& r : records) EXPECT_EQ(r.start, k);
+  }
+  const OptimizerSummary replay = minimize(p, box(), multiStart(2), journal.reader());
+  expectSameHistory(fresh, replay);
+  EXPECT_EQ(replay.computed, 0);
+  EXPECT_THROW(runStart(p, box(), multiStart(1), {}, 5), std::invalid_argument);
+  EXPECT_THROW(runStart(p, box(), multiStart(1), {}, -1), std::invalid_argument);
+}
+
 TEST(OptimizeDriver, HookExceptionStopsTheRunAndIsRethrown) {
   const Quadratic p;
   OptimizerHooks h;
