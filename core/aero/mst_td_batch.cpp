@@ -110,6 +110,8 @@ namespace {
 template <bool kUniformFrame>
 void evalBatch(const StripContext& context, StripBatch& b, const double* states,
                double* state_derivatives) {
+  // Index of strip j's frame.
+  const auto F = [](Eigen::Index j) { return kUniformFrame ? Eigen::Index{0} : j; };
   const AeroParameters& params = *context.params;
   const Eigen::Index n = b.size();
   const double alpha0 = params.zero_lift_angle_rad;
@@ -170,22 +172,21 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
   // Pass 1: kinematics (2.3), lag (9.3 option A), angles of the stall criterion (9.4).
 #pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
   for (Eigen::Index j = 0; j < n; ++j) {
-    const Eigen::Index k = kUniformFrame ? 0 : j;  // frame index
     // q = v_air - v_P, a_pitch = e_c x n, thetadot, thetaddot, V_t, Vn(x), vdot2.
     const double qx = airx[j] - vx[j], qy = airy[j] - vy[j], qz = airz[j] - vz[j];
-    const double ax = ecy[k] * nz[k] - ecz[k] * ny[k];
-    const double ay = ecz[k] * nx[k] - ecx[k] * nz[k];
-    const double az = ecx[k] * ny[k] - ecy[k] * nx[k];
-    const double wx = wsx[k], wy = wsy[k], wz = wsz[k];
+    const double ax = ecy[F(j)] * nz[F(j)] - ecz[F(j)] * ny[F(j)];
+    const double ay = ecz[F(j)] * nx[F(j)] - ecx[F(j)] * nz[F(j)];
+    const double az = ecx[F(j)] * ny[F(j)] - ecy[F(j)] * nx[F(j)];
+    const double wx = wsx[F(j)], wy = wsy[F(j)], wz = wsz[F(j)];
     const double thd = wx * ax + wy * ay + wz * az;
-    const double thdd = wdx[k] * ax + wdy[k] * ay + wdz[k] * az;
-    const double Vt = -(qx * ecx[k] + qy * ecy[k] + qz * ecz[k]);
-    const double qn = qx * nx[k] + qy * ny[k] + qz * nz[k];
+    const double thdd = wdx[F(j)] * ax + wdy[F(j)] * ay + wdz[F(j)] * az;
+    const double Vt = -(qx * ecx[F(j)] + qy * ecy[F(j)] + qz * ecz[F(j)]);
+    const double qn = qx * nx[F(j)] + qy * ny[F(j)] + qz * nz[F(j)];
     const double Vn34 = qn + thd * lever75[j];
     // vdot2 = -a_P.n + q.(w_s x n) + thetaddot (c/2 - x_P)
-    const double vdot2 = -(aPx[j] * nx[k] + aPy[j] * ny[k] + aPz[j] * nz[k]) +
-                         qx * (wy * nz[k] - wz * ny[k]) + qy * (wz * nx[k] - wx * nz[k]) +
-                         qz * (wx * ny[k] - wy * nx[k]) + thdd * lever50[j];
+    const double vdot2 = -(aPx[j] * nx[F(j)] + aPy[j] * ny[F(j)] + aPz[j] * nz[F(j)]) +
+                         qx * (wy * nz[F(j)] - wz * ny[F(j)]) + qy * (wz * nx[F(j)] - wx * nz[F(j)]) +
+                         qz * (wx * ny[F(j)] - wy * nx[F(j)]) + thdd * lever50[j];
     // 9.5 steps 2-3: V_r floored; resultant 3/4-chord angle clipped to +-pi/2.
     const double Vr = std::max(std::sqrt(Vt * Vt + Vn34 * Vn34), min_speed);
     const double alpha34 = std::max(std::min(atan2Poly(Vn34, Vt), kHalfPi), -kHalfPi);
@@ -240,7 +241,6 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
   const double* __restrict chord = b.chord_m.data();
 #pragma GCC ivdep
   for (Eigen::Index j = 0; j < n; ++j) {
-    const Eigen::Index k = kUniformFrame ? 0 : j;  // frame index
     const double f = separation_lag ? std::max(std::min(f_state_a[j], 1.0), 0.0) : fst[j];
     const double Vr = Vr_a[j], Vt = Vt_a[j], Vn50 = Vn50_a[j], thd = thd_a[j];
     const double angle_b = angle_b_a[j];
@@ -261,9 +261,9 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
         f * (cm_ac * qrcdy * chord[j] - k_couple1[j] * Vr * thd - k_couple2[j] * thdd_a[j]);
     // 6.3: F = dN n + dFx e_c; moment about P along a_pitch.
     const double dN = dN4 + dN2;
-    Fx[j] = dN * nx[k] + dFx * ecx[k];
-    Fy[j] = dN * ny[k] + dFx * ecy[k];
-    Fz[j] = dN * nz[k] + dFx * ecz[k];
+    Fx[j] = dN * nx[F(j)] + dFx * ecx[F(j)];
+    Fy[j] = dN * ny[F(j)] + dFx * ecy[F(j)];
+    Fz[j] = dN * nz[F(j)] + dFx * ecz[F(j)];
     const double m = -lever25[j] * dN4 - lever50[j] * dN2 + couple;
     Mx[j] = m * apx[j];
     My[j] = m * apy[j];
