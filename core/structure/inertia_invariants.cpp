@@ -13,7 +13,9 @@ using SlotMap = Eigen::Map<const Eigen::MatrixXd, 0, Eigen::Stride<Eigen::Dynami
 // Rows 6p + slot (p = 0 .. n-1) of a column-major 6n x M matrix, without a copy.
 SlotMap slotRows(const Eigen::MatrixXd& a, int slot) {
   const Eigen::Index n = a.rows() / kDofsPerNode;
-  return SlotMap(a.data() + slot, n, a.cols(),
+  // No shapes (M = 0 columns): data() is null and null + slot undefined behaviour; the map is empty.
+  const double* first = a.size() > 0 ? a.data() + slot : a.data();
+  return SlotMap(first, n, a.cols(),
                  Eigen::Stride<Eigen::Dynamic, Eigen::Dynamic>(a.rows(), kDofsPerNode));
 }
 
@@ -94,11 +96,15 @@ InertiaInvariants invariantsNodalSums(const Eigen::VectorXd& nodal_mass_kg,
   for (Eigen::Index p = 0; p < n; ++p) {
     const double m = nodal_mass_kg(p);
     const Vec3 x = nodes_W_m[static_cast<std::size_t>(p)] - origin_W_m;
-    const auto phi = shapes.middleRows<3>(kDofsPerNode * p);
-    const auto psi = shapes.middleRows<3>(kDofsPerNode * p + 3);
     inv.mass_kg += m;
     inv.first_moment_W_kgm += m * x;
     inv.inertia_P2_W_kgm2 += m * (x.squaredNorm() * Mat3::Identity() - x * x.transpose());
+    if (rotary) inv.inertia_P2_W_kgm2 += nodal_rotary_W_kgm2[static_cast<std::size_t>(p)];
+    // No modes: the rigid-body sums only (a row block of a 0-column matrix would offset its null
+    // data pointer, undefined behaviour).
+    if (modes == 0) continue;
+    const auto phi = shapes.middleRows<3>(kDofsPerNode * p);
+    const auto psi = shapes.middleRows<3>(kDofsPerNode * p + 3);
     inv.translational_participation += m * phi;
     Mat3 skew_x;
     skew_x << 0, -x.z(), x.y(), x.z(), 0, -x.x(), -x.y(), x.x(), 0;
@@ -111,7 +117,6 @@ InertiaInvariants invariantsNodalSums(const Eigen::VectorXd& nodal_mass_kg,
       }
     if (rotary) {
       const Mat3& jp = nodal_rotary_W_kgm2[static_cast<std::size_t>(p)];
-      inv.inertia_P2_W_kgm2 += jp;
       inv.rotational_participation += jp * psi;
       inv.generalized_mass += psi.transpose() * jp * psi;
     }
