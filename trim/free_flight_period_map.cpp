@@ -71,6 +71,32 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FlightCoreModel& model,
 
 FreeFlightPeriodMap::~FreeFlightPeriodMap() = default;
 
+FreeFlightPeriodMap::FreeFlightPeriodMap(const FreeFlightPeriodMap& other, CloneTag)
+    : base_(other.base_),
+      options_(other.options_),
+      n_(other.n_),
+      modes_(other.modes_),
+      full_(other.full_),
+      power_(other.power_),
+      scale_(other.scale_),
+      info_(other.info_),
+      units_(other.units_),
+      shifted_(other.shifted_),
+      shift_m_(other.shift_m_),
+      control_(other.control_),
+      grid_(other.grid_),
+      y0_(other.y0_.size(), 0.0),
+      y1_(other.y1_.size(), 0.0) {}
+
+std::unique_ptr<PeriodMap> FreeFlightPeriodMap::clone() const {
+  return std::unique_ptr<PeriodMap>(new FreeFlightPeriodMap(*this, CloneTag{}));
+}
+
+void FreeFlightPeriodMap::addWorkOf(const PeriodMap& clone) {
+  if (const auto* c = dynamic_cast<const FreeFlightPeriodMap*>(&clone))
+    rhs_evaluations_ += c->rhs_evaluations_;
+}
+
 double FreeFlightPeriodMap::parameterScale(int j) const {
   switch (j) {
     case kPeriodTailAngle: return 0.1;
@@ -99,7 +125,7 @@ const FlightCoreModel& FreeFlightPeriodMap::modelAt(const double* p) {
     VehicleModel v = base_.vehicle;
     v.flapping.hinge_x_B_m -= shift;
     v.tail.arm_m += shift;
-    shifted_ = std::make_unique<FlightCoreModel>(v);
+    shifted_ = std::make_shared<const FlightCoreModel>(v);
     shift_m_ = shift;
   }
   return *shifted_;

@@ -73,6 +73,11 @@ class FreeFlightPeriodMap final : public PeriodMap {
   double period_s(const double* p) const override { return 1.0 / p[kPeriodFrequency]; }
   bool flow(const double* x, const double* p, double* x_T, double* g, std::string* why) override;
   bool refreshDiscretisation(const double* x, const double* p, std::string* why) override;
+  /// A copy with this map's step grid, friction speed and CG-shifted vehicle (shared, read only);
+  /// its system is built at its first flow. Thread-compatible with this map.
+  std::unique_ptr<PeriodMap> clone() const override;
+  /// Adds the clone's right-hand-side evaluations to rhsEvaluations().
+  void addWorkOf(const PeriodMap& clone) override;
 
   /// Names and kinds of the states (Floquet labels, CSV columns) and their units.
   const std::vector<FloquetStateInfo>& stateInfo() const { return info_; }
@@ -104,6 +109,8 @@ class FreeFlightPeriodMap final : public PeriodMap {
   std::string methodName() const;
 
  private:
+  struct CloneTag {};
+  FreeFlightPeriodMap(const FreeFlightPeriodMap& other, CloneTag);
   // Build the system and integrator for p when p changed.
   void prepare(const double* p);
   void fullState(const double* x, double* y) const;
@@ -114,7 +121,7 @@ class FreeFlightPeriodMap final : public PeriodMap {
   std::vector<double> scale_;
   std::vector<FloquetStateInfo> info_;
   std::vector<std::string> units_;
-  std::unique_ptr<FlightCoreModel> shifted_;  // CG-shifted vehicle (null: base_)
+  std::shared_ptr<const FlightCoreModel> shifted_;  // CG-shifted vehicle (null: base_)
   double shift_m_ = 0.0;
   std::unique_ptr<FreeFlightSystem> sys_;
   std::unique_ptr<GridRungeKutta> rk_;

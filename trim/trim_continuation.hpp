@@ -39,6 +39,9 @@ struct TrimContinuationOptions {
   bool locate_events = true;    ///< bisection on folds and stability changes
   double locate_tol = 1e-6;     ///< events located to this in the parameter (its units)
   int samples = 32;             ///< samples of a period for the cycle means, [8, 100000]
+  /// Threads for the finite-difference columns of each point's Jacobian
+  /// (ShootingOptions::jacobian_threads), [1, 64]; the branch has the same bits for any count.
+  int threads = 1;
 
   bool IsValid(std::string* why) const;
 };

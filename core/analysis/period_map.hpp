@@ -13,6 +13,7 @@
 // differences of it are clean (grid_runge_kutta.hpp).
 #pragma once
 
+#include <memory>
 #include <string>
 
 namespace orni {
@@ -46,6 +47,14 @@ class PeriodMap {
                                      std::string* /*why*/) {
     return true;
   }
+
+  /// An independent copy with the same discretisation (step grid) and settings, so that flow()
+  /// of the copy gives the bits flow() of this map gives; used to difference the map on several
+  /// threads (ShootingOptions::jacobian_threads). Null (the default) when the map cannot be
+  /// copied: the differences then run on this map, one after the other.
+  virtual std::unique_ptr<PeriodMap> clone() const { return nullptr; }
+  /// Add the work counters of a clone that has run flows (after a parallel Jacobian).
+  virtual void addWorkOf(const PeriodMap& /*clone*/) {}
 };
 
 }  // namespace orni

@@ -86,7 +86,9 @@ class Curve {
         sys_(map, so.free_parameters, so.conditions, p),
         parameter_(parameter),
         scale_(map.parameterScale(parameter)),
-        N_(sys_.unknownCount()) {}
+        N_(sys_.unknownCount()) {
+    sys_.setJacobianThreads(so.jacobian_threads);
+  }
 
   int N() const { return N_; }
   int n() const { return sys_.stateCount(); }

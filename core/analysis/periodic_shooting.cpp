@@ -3,9 +3,13 @@
 #include <Eigen/LU>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <memory>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 namespace orni {
@@ -42,6 +46,8 @@ bool ShootingOptions::IsValid(int parameter_count, int condition_count, std::str
   if (!(refresh_below >= 0.0)) return fail("refresh_below must be >= 0");
   if (!(slow_contraction > 0.0 && slow_contraction < 1.0))
     return fail("slow_contraction must be in (0, 1)");
+  if (jacobian_threads < 1 || jacobian_threads > 64)
+    return fail("jacobian_threads must be in [1, 64]");
   return true;
 }
 
@@ -80,25 +86,29 @@ Eigen::VectorXd ShootingSystem::pack(const double* x) const {
   return z;
 }
 
-void ShootingSystem::unpack(const Eigen::VectorXd& z, double* x) {
+void ShootingSystem::unpackInto(const Eigen::VectorXd& z, double* x, std::vector<double>* p) const {
   for (int i = 0; i < n_; ++i) x[i] = z[i] * map_.stateScale(i);
   for (std::size_t a = 0; a < free_.size(); ++a)
-    p_[static_cast<std::size_t>(free_[a])] =
+    (*p)[static_cast<std::size_t>(free_[a])] =
         z[n_ + static_cast<Eigen::Index>(a)] * map_.parameterScale(free_[a]);
 }
 
-bool ShootingSystem::evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why) {
-  unpack(z, x_.data());
-  ++maps_;
-  if (!map_.flow(x_.data(), p_.data(), x_T_.data(), g_.empty() ? nullptr : g_.data(), why))
+void ShootingSystem::unpack(const Eigen::VectorXd& z, double* x) { unpackInto(z, x, &p_); }
+
+bool ShootingSystem::evaluate(Run& run, const Eigen::VectorXd& z, Eigen::VectorXd* R,
+                              std::string* why) const {
+  unpackInto(z, run.x.data(), &run.p);
+  ++run.maps;
+  if (!run.map.flow(run.x.data(), run.p.data(), run.x_T.data(),
+                    run.g.empty() ? nullptr : run.g.data(), why))
     return false;
   R->resize(unknownCount());
   for (int i = 0; i < n_; ++i)
-    (*R)[i] = (x_T_[static_cast<std::size_t>(i)] - x_[static_cast<std::size_t>(i)]) /
+    (*R)[i] = (run.x_T[static_cast<std::size_t>(i)] - run.x[static_cast<std::size_t>(i)]) /
               map_.stateScale(i);
   for (std::size_t a = 0; a < cond_.size(); ++a)
     (*R)[n_ + static_cast<Eigen::Index>(a)] =
-        g_[static_cast<std::size_t>(cond_[a])] / map_.conditionScale(cond_[a]);
+        run.g[static_cast<std::size_t>(cond_[a])] / map_.conditionScale(cond_[a]);
   for (Eigen::Index i = 0; i < R->size(); ++i)
     if (!std::isfinite((*R)[i])) {
       if (why) *why = "non-finite period map";
@@ -107,24 +117,50 @@ bool ShootingSystem::evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* R, std:
   return true;
 }
 
+bool ShootingSystem::evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why) {
+  Run run = own();
+  return evaluate(run, z, R, why);
+}
+
 bool ShootingSystem::residual(const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why) {
   return evaluate(z, R, why);
 }
 
-bool ShootingSystem::column(const Eigen::VectorXd& z, const Eigen::VectorXd& R, Eigen::Index j,
-                            double step, bool central, Eigen::MatrixXd* J, std::string* why) {
+bool ShootingSystem::column(Run& run, const Eigen::VectorXd& z, const Eigen::VectorXd& R,
+                            Eigen::Index j, double step, bool central, Eigen::MatrixXd* J,
+                            std::string* why) const {
   const double h = step * std::max(1.0, std::abs(z[j]));
   Eigen::VectorXd zp = z, Rp, Rm;
   zp[j] += h;
-  if (!evaluate(zp, &Rp, why)) return false;
+  if (!evaluate(run, zp, &Rp, why)) return false;
   if (!central) {
     J->col(j) = (Rp - R) / h;
     return true;
   }
   zp[j] = z[j] - h;
-  if (!evaluate(zp, &Rm, why)) return false;
+  if (!evaluate(run, zp, &Rm, why)) return false;
   J->col(j) = (Rp - Rm) / (2.0 * h);
   return true;
+}
+
+bool ShootingSystem::parameterColumn(Run& run, const Eigen::VectorXd& z, const Eigen::VectorXd& R,
+                                     int j, Eigen::Index e, double step, bool central,
+                                     Eigen::MatrixXd* J_extra, std::string* why) const {
+  const double s = map_.parameterScale(j);
+  const double v = run.p[static_cast<std::size_t>(j)];
+  const double h = step * std::max(1.0, std::abs(v / s));
+  Eigen::VectorXd Rp, Rm;
+  run.p[static_cast<std::size_t>(j)] = v + h * s;
+  bool ok = evaluate(run, z, &Rp, why);
+  if (ok && central) {
+    run.p[static_cast<std::size_t>(j)] = v - h * s;
+    ok = evaluate(run, z, &Rm, why);
+    if (ok) J_extra->col(e) = (Rp - Rm) / (2.0 * h);
+  } else if (ok) {
+    J_extra->col(e) = (Rp - R) / h;
+  }
+  run.p[static_cast<std::size_t>(j)] = v;
+  return ok;
 }
 
 bool ShootingSystem::partialJacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R,
@@ -134,14 +170,87 @@ bool ShootingSystem::partialJacobian(const Eigen::VectorXd& z, const Eigen::Vect
   const Eigen::Index N = unknownCount();
   J->setZero(N, N);
   for (int i = 0; i < n_; ++i) (*J)(i, i) = -1.0;
+  Run run = own();
   bool ok = true;
   for (int i : states)
-    if (ok && i >= 0 && i < n_) ok = column(z, R, i, step, false, J, why);
-  for (Eigen::Index j = n_; j < N && ok; ++j) ok = column(z, R, j, step, false, J, why);
+    if (ok && i >= 0 && i < n_) ok = column(run, z, R, i, step, false, J, why);
+  for (Eigen::Index j = n_; j < N && ok; ++j) ok = column(run, z, R, j, step, false, J, why);
   unpack(z, x_.data());
   x_T_ = x_T;
   g_ = g;
   return ok;
+}
+
+bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R,
+                                      double step, bool central, Eigen::MatrixXd* J,
+                                      std::string* why, const std::vector<int>& extra,
+                                      Eigen::MatrixXd* J_extra, bool* cloned) {
+  const Eigen::Index N = unknownCount();
+  const int columns = static_cast<int>(N) + (J_extra ? static_cast<int>(extra.size()) : 0);
+  const int workers = std::min(threads_, columns);
+  // Each worker: a copy of the map (same grid), the system's parameters and its own buffers.
+  struct Worker {
+    std::unique_ptr<PeriodMap> map;
+    std::vector<double> p, x, x_T, g;
+    long maps = 0;
+  };
+  std::vector<Worker> pool(static_cast<std::size_t>(workers));
+  for (Worker& w : pool) {
+    w.map = map_.clone();
+    if (!w.map) {
+      *cloned = false;
+      return false;
+    }
+    w.p = p_;
+    w.x.assign(x_.size(), 0.0);
+    w.x_T.assign(x_T_.size(), 0.0);
+    w.g.assign(g_.size(), 0.0);
+  }
+  *cloned = true;
+  J->resize(N, N);
+  if (J_extra) J_extra->resize(N, static_cast<Eigen::Index>(extra.size()));
+  // Per column: success, its reason, the maps it used, an exception it threw. Every column writes
+  // only its own column of J or J_extra.
+  struct Outcome {
+    bool ok = false;
+    std::string why;
+    long maps = 0;
+    std::exception_ptr error;
+  };
+  std::vector<Outcome> out(static_cast<std::size_t>(columns));
+  std::atomic<int> next{0};
+  auto work = [&](Worker& w) {
+    for (int k = next.fetch_add(1); k < columns; k = next.fetch_add(1)) {
+      Outcome& o = out[static_cast<std::size_t>(k)];
+      long maps = 0;
+      Run run{*w.map, w.p, w.x, w.x_T, w.g, maps};
+      w.p = p_;  // the parameter columns move one entry: start every column from the same values
+      try {
+        o.ok = k < N ? column(run, z, R, k, step, central, J, &o.why)
+                     : parameterColumn(run, z, R, extra[static_cast<std::size_t>(k - N)], k - N,
+                                       step, central, J_extra, &o.why);
+      } catch (...) {
+        o.error = std::current_exception();
+      }
+      o.maps = maps;
+      w.maps += maps;
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t t = 1; t < pool.size(); ++t) threads.emplace_back(work, std::ref(pool[t]));
+  work(pool[0]);
+  for (std::thread& t : threads) t.join();
+  for (Worker& w : pool) map_.addWorkOf(*w.map);
+  // As the serial loop: the maps up to the first column that failed, its reason or exception.
+  for (const Outcome& o : out) {
+    maps_ += o.maps;
+    if (o.error) std::rethrow_exception(o.error);
+    if (!o.ok) {
+      if (why) *why = o.why;
+      return false;
+    }
+  }
+  return true;
 }
 
 bool ShootingSystem::jacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R, double step,
@@ -149,27 +258,21 @@ bool ShootingSystem::jacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R
                               const std::vector<int>& extra, Eigen::MatrixXd* J_extra) {
   const std::vector<double> x_T = x_T_, g = g_;  // the caller's last residual run
   const Eigen::Index N = unknownCount();
-  J->resize(N, N);
-  Eigen::VectorXd Rp, Rm;
-  bool ok = true;
-  for (Eigen::Index j = 0; j < N && ok; ++j) ok = column(z, R, j, step, central, J, why);
-  if (ok && !extra.empty() && J_extra) {
-    J_extra->resize(N, static_cast<Eigen::Index>(extra.size()));
-    for (std::size_t e = 0; e < extra.size() && ok; ++e) {
-      const int j = extra[e];
-      const double s = map_.parameterScale(j);
-      const double v = p_[static_cast<std::size_t>(j)];
-      const double h = step * std::max(1.0, std::abs(v / s));
-      p_[static_cast<std::size_t>(j)] = v + h * s;
-      ok = evaluate(z, &Rp, why);
-      if (ok && central) {
-        p_[static_cast<std::size_t>(j)] = v - h * s;
-        ok = evaluate(z, &Rm, why);
-        if (ok) J_extra->col(static_cast<Eigen::Index>(e)) = (Rp - Rm) / (2.0 * h);
-      } else if (ok) {
-        J_extra->col(static_cast<Eigen::Index>(e)) = (Rp - R) / h;
-      }
-      p_[static_cast<std::size_t>(j)] = v;
+  const bool want_extra = !extra.empty() && J_extra;
+  bool ok = true, cloned = false;
+  if (threads_ > 1)
+    ok = parallelJacobian(z, R, step, central, J, why, extra, want_extra ? J_extra : nullptr,
+                          &cloned);
+  if (!cloned) {
+    J->resize(N, N);
+    Run run = own();
+    ok = true;
+    for (Eigen::Index j = 0; j < N && ok; ++j) ok = column(run, z, R, j, step, central, J, why);
+    if (ok && want_extra) {
+      J_extra->resize(N, static_cast<Eigen::Index>(extra.size()));
+      for (std::size_t e = 0; e < extra.size() && ok; ++e)
+        ok = parameterColumn(run, z, R, extra[e], static_cast<Eigen::Index>(e), step, central,
+                             J_extra, why);
     }
   }
   unpack(z, x_.data());
@@ -195,6 +298,7 @@ ShootingSummary solveShooting(PeriodMap& map, const std::vector<double>& x0,
     throw std::invalid_argument("solveShooting: one initial value per state needed");
   ShootingSummary s;
   ShootingSystem sys(map, options.free_parameters, options.conditions, p0);
+  sys.setJacobianThreads(options.jacobian_threads);
   const int n = sys.stateCount();
   Eigen::VectorXd z = sys.pack(x0.data());
   Eigen::VectorXd R, R_new, z_new, dz;

@@ -58,6 +58,10 @@ struct ShootingOptions {
   /// A Jacobian to start from instead of the first finite-difference one ((n + m)^2, scaled; e.g.
   /// the last one of a neighbouring solve); empty = none.
   Eigen::MatrixXd initial_jacobian;
+  /// Threads that take the finite-difference columns of a full Jacobian, [1, 64], each on its own
+  /// copy of the map (PeriodMap::clone; a map without copies runs serially). Every column is the
+  /// same function of (z, j) on every thread: the Jacobian has the same bits for any count.
+  int jacobian_threads = 1;
 
   bool IsValid(int parameter_count, int condition_count, std::string* why) const;
 };
@@ -116,6 +120,8 @@ class ShootingSystem {
   /// Every parameter; the free ones as last unpacked.
   const std::vector<double>& parameters() const { return p_; }
   void setParameter(int j, double value) { p_[static_cast<std::size_t>(j)] = value; }
+  /// Threads for the columns of jacobian() (ShootingOptions::jacobian_threads), >= 1.
+  void setJacobianThreads(int threads) { threads_ = threads < 1 ? 1 : threads; }
 
   /// z = [x / s_x; p_free / s_p].
   Eigen::VectorXd pack(const double* x) const;
@@ -139,12 +145,32 @@ class ShootingSystem {
   long periodMaps() const { return maps_; }
 
  private:
-  bool column(const Eigen::VectorXd& z, const Eigen::VectorXd& R, Eigen::Index j, double step,
-              bool central, Eigen::MatrixXd* J, std::string* why);
+  /// The map runs go to, with their parameters, buffers and count (this system's own members,
+  /// or a worker thread's).
+  struct Run {
+    PeriodMap& map;
+    std::vector<double>&p, &x, &x_T, &g;
+    long& maps;
+  };
+  Run own() { return Run{map_, p_, x_, x_T_, g_, maps_}; }
+  bool column(Run& run, const Eigen::VectorXd& z, const Eigen::VectorXd& R, Eigen::Index j,
+              double step, bool central, Eigen::MatrixXd* J, std::string* why) const;
+  /// dR/d(p_j / s_p) of a parameter that is not an unknown into column e of *J_extra.
+  bool parameterColumn(Run& run, const Eigen::VectorXd& z, const Eigen::VectorXd& R, int j,
+                       Eigen::Index e, double step, bool central, Eigen::MatrixXd* J_extra,
+                       std::string* why) const;
+  bool evaluate(Run& run, const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why) const;
   bool evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why);
+  void unpackInto(const Eigen::VectorXd& z, double* x, std::vector<double>* p) const;
+  /// The columns of jacobian() on threads_ copies of the map; false (with *cloned = false) when
+  /// the map has no copies.
+  bool parallelJacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R, double step,
+                        bool central, Eigen::MatrixXd* J, std::string* why,
+                        const std::vector<int>& extra, Eigen::MatrixXd* J_extra, bool* cloned);
 
   PeriodMap& map_;
   int n_;
+  int threads_ = 1;
   std::vector<int> free_, cond_;
   std::vector<double> p_, x_, x_T_, g_;
   long maps_ = 0;

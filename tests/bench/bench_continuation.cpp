@@ -1,10 +1,11 @@
 // Speed of the continuation of trimmed flight (issue 16 target: the magpie's trim branch over
-// 10-16 Hz with 30 points in at most 10 s on one core).
+// 10-16 Hz with 30 points in at most 10 s).
 //   BM_ContinuationEfw : `ornithopter run` of a continuation study without I/O: the periodic trim
 //                        at the start, then the branch with all multipliers at every point (the
 //                        full monodromy by forward differences of the period map: one map per
 //                        state) and the cycle means. Arguments: start and end frequency (Hz),
-//                        points; counters: points, period maps, events, stable points.
+//                        points asked for (the first step is the range over them; the steps
+//                        adapt, capped at twice as many), threads of the Jacobian columns; counters: points, period maps, events, stable points.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -25,8 +26,11 @@ void BM_ContinuationEfw(benchmark::State& state) {
   TrimContinuationOptions co;
   co.parameter = PeriodicControl::kFrequency;
   co.to = static_cast<double>(state.range(1));
-  co.max_points = static_cast<int>(state.range(2));
-  co.step = (co.to - o.initial.freq_hz) / co.max_points;
+  // The first step asks for range / points; the steps adapt from there, so the cap on points is
+  // twice that (the counters say how many the branch took and whether it reached the end).
+  co.step = (co.to - o.initial.freq_hz) / static_cast<double>(state.range(2));
+  co.max_points = 2 * static_cast<int>(state.range(2));
+  co.threads = static_cast<int>(state.range(3));
   TrimContinuationSummary s;
   for (auto _ : state) {
     s = continueTrim(model, o, co);
@@ -38,11 +42,14 @@ void BM_ContinuationEfw(benchmark::State& state) {
   state.counters["period_maps"] = static_cast<double>(s.period_maps);
   state.counters["events"] = s.events;
   state.counters["stable"] = stable;
+  state.counters["last_hz"] = s.points.empty() ? 0.0 : s.points.back().solution.freq_hz;
   state.counters["completed"] = s.status == ContinuationStatus::kCompleted ? 1.0 : 0.0;
 }
 BENCHMARK(BM_ContinuationEfw)
-    ->Args({12, 16, 30})
-    ->Args({10, 16, 30})
+    ->Args({12, 16, 30, 1})
+    ->Args({12, 16, 30, 2})
+    ->Args({10, 16, 30, 1})
+    ->Args({10, 16, 30, 2})
     ->Unit(benchmark::kMillisecond)
     ->Iterations(1);
 

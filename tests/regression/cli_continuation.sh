@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # CLI and output contract of studies of kind "continuation" (issue 16, part B): the branch of
 # periodic trims of the magpie over the flapping frequency, its CSV and summary keys, the figure,
-# the resolved study as a fixed point, the same bytes after a kill and a resume, and exit 2 with
+# the resolved study as a fixed point, the same bytes with -j 2 and after a kill and a resume, and exit 2 with
 # file, line and key for bad input.
 #   usage: bash cli_continuation.sh <ornithopter-binary> <repo-root> <scratch-dir>
 set -u
@@ -48,9 +48,10 @@ check "ends at 12.4 Hz ($last)" awk_true "($last - 12.4) ^ 2 < 1e-20"
 check "every point stable here (max |mu| < 1)" bash -c "tail -n +3 '$out/continuation.csv' | awk -F, '\$10 != 1 { exit 1 }'"
 check "every periodic residual <= 1e-8" bash -c "tail -n +3 '$out/continuation.csv' | awk -F, '\$13 > 1e-8 { exit 1 }'"
 check "no NaN in the table" bash -c "! grep -qiw nan '$out/continuation.csv'"
-check "resolved study re-runs" "$bin" run "$out/study.resolved.toml" -o "$scratch/resolved" > /dev/null 2>&1
+# Again from the resolved study, with the Jacobian columns on two threads: the same bytes.
+check "resolved study re-runs (-j 2)" "$bin" run "$out/study.resolved.toml" -o "$scratch/resolved" -j 2 > /dev/null 2>&1
 check "resolved study is a fixed point" cmp -s "$out/study.resolved.toml" "$scratch/resolved/study.resolved.toml"
-check "same inputs give the same branch" cmp -s "$out/continuation.csv" "$scratch/resolved/continuation.csv"
+check "same inputs give the same branch on two threads" cmp -s "$out/continuation.csv" "$scratch/resolved/continuation.csv"
 
 # Killed mid-run, then run again: the same bytes (the journal keeps every accepted point).
 killed="$scratch/killed"

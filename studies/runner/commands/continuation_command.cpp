@@ -297,9 +297,10 @@ JsonObject startObject(const PeriodicTrimSummary& s) {
 
 }  // namespace
 
-int runContinuationStudy(const Study& study, const fs::path& out_dir) {
+int runContinuationStudy(const Study& study, const fs::path& out_dir, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
-  const TrimContinuationOptions& co = study.continuation;
+  TrimContinuationOptions co = study.continuation;
+  co.threads = threads;
   const FlightCoreModel model(study.vehicle);
   const std::string resolved = resolvedStudyToml(study);
   const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);

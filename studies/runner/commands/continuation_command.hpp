@@ -26,7 +26,8 @@ inline constexpr const char* kContinuationJournalName = "continuation.journal";
 
 /// Run the continuation study into `out_dir`. Returns 0 when the run finished (completed or not:
 /// the status and reason are in summary.json), 1 when the start trim failed. Bad input throws
-/// InputError (exit 2).
-int runContinuationStudy(const Study& study, const std::filesystem::path& out_dir);
+/// InputError (exit 2). `threads` difference each point's Jacobian (the same bytes for any count).
+int runContinuationStudy(const Study& study, const std::filesystem::path& out_dir,
+                         int threads = 1);
 
 }  // namespace orni::studies

@@ -57,7 +57,7 @@ int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
       return runSweepStudy(study, out_dir, opts);
     }
     case StudyKind::kContinuation:
-      return runContinuationStudy(study, out_dir);
+      return runContinuationStudy(study, out_dir, jobs);
     case StudyKind::kSensitivity: {
       SensitivityRunOptions opts;
       opts.threads = jobs;

@@ -5,7 +5,9 @@
 //   - the branch's last point, landed exactly on 12.6 Hz, agrees with a periodic trim solved
 //     there directly (both freeze the skin friction at an orbit's airspeed in two passes; measured
 //     below);
-//   - every point is an orbit (residual within the tolerance), in order along the parameter.
+//   - every point is an orbit (residual within the tolerance), in order along the parameter;
+//   - the Jacobian columns on two threads (each on a copy of the period map) give the same
+//     branch to the last bit as on one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -68,6 +70,32 @@ TEST_F(TrimContinuationEfw, FollowsTheBranchToTheEndOfTheRange) {
     previous = p.solution.freq_hz;
     EXPECT_EQ(p.orbit.multipliers.size(), static_cast<Eigen::Index>(p.orbit.x.size()));
     EXPECT_FALSE(p.leading_label.empty());
+  }
+}
+
+TEST_F(TrimContinuationEfw, TwoJacobianThreadsGiveTheSameBits) {
+  const TrimContinuationSummary& one = *branch_;
+  TrimContinuationOptions co;
+  co.parameter = PeriodicControl::kFrequency;
+  co.to = kEndHz;
+  co.step = 0.2;
+  co.max_points = 10;
+  co.threads = 2;
+  const TrimContinuationSummary two =
+      continueTrim(*model_, periodicAt(model_->vehicle, kStartHz), co);
+  ASSERT_EQ(two.status, one.status) << two.message;
+  EXPECT_EQ(two.period_maps, one.period_maps);
+  ASSERT_EQ(two.points.size(), one.points.size());
+  for (std::size_t i = 0; i < one.points.size(); ++i) {
+    const ContinuationPoint& a = one.points[i].orbit;
+    const ContinuationPoint& b = two.points[i].orbit;
+    EXPECT_EQ(a.x, b.x) << i;  // exact: the same columns, whichever thread took them
+    EXPECT_EQ(a.p, b.p) << i;
+    EXPECT_EQ(a.tangent, b.tangent) << i;
+    ASSERT_EQ(a.multipliers.size(), b.multipliers.size());
+    for (Eigen::Index k = 0; k < a.multipliers.size(); ++k)
+      EXPECT_EQ(a.multipliers[k], b.multipliers[k]) << i << " " << k;
+    EXPECT_EQ(one.points[i].mean.power_aero_W, two.points[i].mean.power_aero_W) << i;
   }
 }
 
