@@ -16,6 +16,8 @@
 #include <thread>
 #include <utility>
 
+#include "core/model/cancellation.hpp"
+
 namespace orni::opt {
 
 const char* toString(EvaluationStatus s) {
@@ -262,7 +264,19 @@ class StartRun {
       rec.source = EvaluationSource::kReplayed;
     } else {
       try {
+        throwIfCancelled();  // a cancellation point per evaluation (core/model/cancellation.hpp)
         rec.result = problem_.evaluate(rec.x, *workspace_);
+      } catch (const Cancelled&) {
+        // Like a kill: nothing journaled for this point; the run rethrows it after NLopt returns.
+        if (!error_) error_ = std::current_exception();
+        abort_->store(true);
+        if (current_) nlopt_force_stop(current_);
+        rec.result = Evaluation{};
+        rec.result.status = EvaluationStatus::kFailed;
+        rec.result.message = "run cancelled";
+        finish(&rec);
+        records_.push_back(std::move(rec));
+        return records_.back();
       } catch (const std::exception& e) {
         rec.result = Evaluation{};
         rec.result.status = EvaluationStatus::kFailed;

@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/cancellation.hpp"
+
 namespace orni::trim {
 
 void streamAeroMap(const FlightCoreModel& model, const AeroMapGrid& grid,
@@ -45,6 +47,7 @@ void streamAeroMap(const FlightCoreModel& model, const AeroMapGrid& grid,
       lock.unlock();
       AeroMapPoint result;
       try {
+        throwIfCancelled();  // a cancellation point per point (core/model/cancellation.hpp)
         result = computeAeroMapPoint(model, grid.point(index), options);
       } catch (...) {  // computeAeroMapPoint reports std::exception as a status; anything else stops
         lock.lock();

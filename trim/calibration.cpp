@@ -10,6 +10,7 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/field_table.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
+#include "core/model/cancellation.hpp"
 
 namespace orni {
 
@@ -93,6 +94,7 @@ class ToleranceCallback : public ceres::IterationCallback {
  public:
   explicit ToleranceCallback(double tolerance) : tol_(tolerance) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (cancellationRequested()) return ceres::SOLVER_ABORT;  // the caller throws Cancelled
     if (s.step_is_successful || s.iteration == 0)
       if (2.0 * s.cost <= tol_ * tol_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     return ceres::SOLVER_CONTINUE;
@@ -104,7 +106,13 @@ class ToleranceCallback : public ceres::IterationCallback {
 
 struct Functor {
   const CalibrationContext* c;
-  bool operator()(const double* const x, double* r) const { return evaluate(*c, x, r); }
+  bool operator()(const double* const x, double* r) const {
+    try {
+      return evaluate(*c, x, r);
+    } catch (const Cancelled&) {  // Ceres is not left by an exception: the caller throws after
+      return false;
+    }
+  }
 };
 }  // namespace
 
@@ -228,6 +236,7 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
     so.callbacks.push_back(&stop);
     ceres::Solver::Summary cs;
     ceres::Solve(so, &problem, &cs);
+    throwIfCancelled();  // core/model/cancellation.hpp
     s.iterations += static_cast<int>(cs.iterations.size()) - 1;
     s.ceres_report += (s.ceres_report.empty() ? "" : " | ") + cs.BriefReport();
     return cs.message;

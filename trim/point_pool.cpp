@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <thread>
 
+#include "core/model/cancellation.hpp"
+
 namespace orni::trim {
 
 void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWork& work,
@@ -34,6 +36,7 @@ void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWor
       if (k >= todo.size()) return;
       const std::size_t index = todo[k];
       try {
+        throwIfCancelled();  // a cancellation point per point (core/model/cancellation.hpp)
         work(index);
       } catch (...) {
         fail(std::current_exception());

@@ -12,6 +12,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/model/cancellation.hpp"
 #include "core/model/frames.hpp"
 
 namespace orni {
@@ -72,9 +73,14 @@ class TrimCostFunction final : public ceres::CostFunction {
   }
   bool Evaluate(double const* const* parameters, double* residuals,
                 double** jacobians) const override {
-    // A failed periodic run makes the point infeasible: Ceres shrinks the trust region.
-    if (!problem_->residual(parameters[0], residuals)) return false;
-    if (jacobians && jacobians[0]) return problem_->jacobian(parameters[0], jacobians[0]);
+    // A failed periodic run makes the point infeasible: Ceres shrinks the trust region. A
+    // cancelled one too (Ceres is not left by an exception); solveTrim throws after Solve.
+    try {
+      if (!problem_->residual(parameters[0], residuals)) return false;
+      if (jacobians && jacobians[0]) return problem_->jacobian(parameters[0], jacobians[0]);
+    } catch (const Cancelled&) {
+      return false;
+    }
     return true;
   }
 
@@ -98,6 +104,7 @@ class TrimCallback final : public ceres::IterationCallback {
         log_(log) {}
   bool stalled() const { return stalled_; }
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
+    if (cancellationRequested()) return ceres::SOLVER_ABORT;  // solveTrim throws Cancelled
     TrimIterationRecord r;
     r.iteration = s.iteration;
     r.point = problem_->pointAt(x_);
@@ -187,6 +194,7 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
 
   ceres::Solver::Summary cs;
   ceres::Solve(so, &ceres_problem, &cs);
+  throwIfCancelled();  // core/model/cancellation.hpp: the solve above stopped early for it
 
   summary.ceres_message = cs.message;
   summary.ceres_report = cs.BriefReport();

@@ -9,6 +9,7 @@
 #include "core/dynamics/flapping.hpp"
 #include "core/dynamics/history_window.hpp"
 #include "core/integrate/ode_integrator.hpp"
+#include "core/model/cancellation.hpp"
 
 namespace orni {
 
@@ -257,6 +258,7 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   double power_prev = 0.0;
   char buf[320];
   for (int k = 1; k <= options.cycles && summary.status == SimulationStatus::kOk; ++k) {
+    throwIfCancelled();  // a cancellation point per cycle (core/model/cancellation.hpp)
     for (int i = 1; i <= spc; ++i) {
       const double t = ((k - 1) * spc + i) * period_s / spc;
       if (integrator.advanceTo(t) != IntegratorStatus::kOk) {

@@ -9,6 +9,7 @@
 #include "core/dynamics/flexible_tethered.hpp"
 #include "core/dynamics/history_window.hpp"
 #include "core/integrate/ode_integrator.hpp"
+#include "core/model/cancellation.hpp"
 
 namespace orni {
 
@@ -172,6 +173,7 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
   std::vector<double> prev_states(integrator.state() + n_aero0, integrator.state() + n_aero1);
   summary.status = SimulationStatus::kNotConverged;
   for (int k = 1; k <= options.cycles; ++k) {
+    throwIfCancelled();  // a cancellation point per cycle (core/model/cancellation.hpp)
     for (int i = 1; i <= spc; ++i) {
       const double t = ((k - 1) * spc + i) * period_s / spc;
       if (integrator.advanceTo(t) != IntegratorStatus::kOk) {

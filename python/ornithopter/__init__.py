@@ -4,8 +4,9 @@ The same readers, checks, runs and summaries as the command line ``ornithopter``
 returns what the CLI writes into ``summary.json`` (as a dict; ``wall_time_s`` aside, to the last
 bit) and raises :class:`InputError` where the CLI exits with status 2. Units are in the key
 suffixes, as in the files (``speed_mps``, ``theta_deg``, ``arm_m``). Every computation releases the
-GIL; Ctrl-C stops a :func:`simulate` at the end of the current flapping cycle (the other runs have
-no cancellation point: it takes effect when they return).
+GIL, and Ctrl-C stops it within one short unit of work (a flapping cycle, an aero-map or sweep
+point, a design evaluation, a continuation point) with ``KeyboardInterrupt``; a run with ``out``
+keeps its journal, so the same call again resumes it.
 
 Functions: :func:`load_vehicle`, :func:`load_study`, :func:`simulate`, :func:`modes`,
 :func:`aeromap`, :func:`trim`, :func:`optimize`, :func:`run`.
@@ -85,7 +86,11 @@ def _run_in(study, out, threads):
         rc = _core.run_study(study, _os.fspath(out), int(threads))
         return rc, _read_summary(out), _os.fspath(out)
     tmp = _tempfile.mkdtemp(prefix="ornithopter-")
-    rc = _core.run_study(study, tmp, int(threads))
+    try:
+        rc = _core.run_study(study, tmp, int(threads))
+    except BaseException:  # an input error, Ctrl-C: nothing of the temporary folder is kept
+        _cleanup(tmp, None)
+        raise
     return rc, _read_summary(tmp), tmp
 
 

@@ -2,7 +2,7 @@
 // (python/ornithopter/__init__.py is the public face: docstrings, defaults, NumPy results).
 // Everything here calls the code of the command line: the same readers (study_file, vehicle_file),
 // the same runs (runStudy) and the same summaries, so results equal summary.json to the last bit.
-// Every computation releases the GIL.
+// Every computation releases the GIL and can be interrupted by Ctrl-C (interruptible.hpp).
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
@@ -19,6 +19,7 @@
 #include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "interruptible.hpp"
 #include "tethered_run.hpp"
 #include "toml_python.hpp"
 #include "vehicle_object.hpp"
@@ -58,9 +59,11 @@ Study makeStudy(const VehicleObject& vehicle, const std::string& kind, const std
   return orni::studies::readStudyRoot(root, "<python>");
 }
 
+/// The CLI's `run` of a study (every analysis but the tethered simulate goes through it),
+/// interruptible by Ctrl-C (interruptible.hpp).
 int runStudyInto(const Study& study, const std::string& out_dir, int threads) {
-  py::gil_scoped_release release;
-  return orni::studies::runStudyLocked(study, out_dir, threads);
+  return orni::python::interruptible(
+      [&] { return orni::studies::runStudyLocked(study, out_dir, threads); });
 }
 
 }  // namespace
@@ -87,6 +90,8 @@ PYBIND11_MODULE(_ornithopter, m) {
       raiseInputError(std::string("invalid model: ") + e.what(), "<python>", 0, "", "");
     } catch (const orni::studies::FolderBusyError& e) {
       PyErr_SetString(PyExc_RuntimeError, e.what());
+    } catch (const orni::Cancelled& e) {  // cancelled by another call's Ctrl-C (a process-wide request)
+      PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
     }
   });
 

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/model/cancellation.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/config/continuation_section.hpp"
@@ -337,6 +338,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
       model, study.trim, co,
       [&](const TrimContinuationPoint& p) {
         journal.append(points.size(), encodePoint(p));
+        throwIfCancelled();  // a cancellation point per point, after it is journaled
         // The point as the journal holds it, so that a resumed run writes the same bytes.
         TrimContinuationPoint exact;
         decodePoint(encodePoint(p), &exact);

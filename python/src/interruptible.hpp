@@ -1,0 +1,50 @@
+// Long computations called from Python, interruptible by Ctrl-C (issue 17).
+//
+// interruptible(work) runs `work` on a worker thread while the calling thread, with the GIL
+// released, checks Python's signal handlers every 20 ms (PyErr_CheckSignals needs the GIL and
+// runs handlers on the main thread only). When one raises (Ctrl-C: KeyboardInterrupt) it requests
+// cancellation (core/model/cancellation.hpp), waits for the worker to stop at its next
+// cancellation point (a flapping cycle, a point, an evaluation) and raises the Python exception.
+// A cancelled run leaves what a killed one leaves: its journal, no half-written file; started
+// again it resumes. An exception of `work` is re-thrown in the caller's thread.
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <chrono>
+#include <future>
+#include <thread>
+#include <utility>
+
+#include "core/model/cancellation.hpp"
+
+namespace orni::python {
+
+template <class Work>
+auto interruptible(Work&& work) -> decltype(work()) {
+  namespace py = pybind11;
+  using Result = decltype(work());
+  std::packaged_task<Result()> task(std::forward<Work>(work));
+  std::future<Result> done = task.get_future();
+  bool interrupted = false;
+  {
+    py::gil_scoped_release release;
+    std::thread worker(std::move(task));
+    while (done.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
+      if (interrupted) continue;
+      py::gil_scoped_acquire gil;
+      if (PyErr_CheckSignals() != 0) {  // the handler's exception is now set in this thread
+        interrupted = true;
+        requestCancellation();
+      }
+    }
+    worker.join();
+  }
+  if (interrupted) {
+    clearCancellation();  // the worker has stopped: the next call runs normally
+    throw py::error_already_set();
+  }
+  return done.get();
+}
+
+}  // namespace orni::python

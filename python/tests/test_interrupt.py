@@ -1,0 +1,76 @@
+"""Ctrl-C (SIGINT) stops every kind of run within one short unit of work, raises
+KeyboardInterrupt, leaves a resumable journal, and the next call runs normally."""
+import glob
+import os
+import signal
+import tempfile
+import threading
+import time
+
+import pytest
+
+import ornithopter
+from conftest import EFW, SOURCE_DIR
+
+# The bound on the time from the signal to the exception: one unit of work (an aero-map point of
+# the flexible wing ~0.1 s, a flapping cycle, a continuation point ~0.3 s) with a wide margin for
+# a loaded machine.
+STOP_WITHIN_S = 3.0
+
+
+def interrupted(call, after_s=0.5):
+    """Runs call() with SIGINT sent after `after_s`; returns the seconds from signal to raise."""
+    timer = threading.Timer(after_s, lambda: os.kill(os.getpid(), signal.SIGINT))
+    timer.start()
+    t0 = time.monotonic()
+    with pytest.raises(KeyboardInterrupt):
+        call()
+    timer.join()
+    late = time.monotonic() - t0 - after_s
+    print("stopped %.3f s after the signal" % late)
+    return late
+
+
+def temp_folders():
+    return set(glob.glob(os.path.join(tempfile.gettempdir(), "ornithopter-*")))
+
+
+def test_ctrl_c_stops_an_aeromap_and_the_next_call_runs():
+    v = ornithopter.load_vehicle(EFW)
+    before = temp_folders()
+    # 20 x 10 x 21 points on two threads: ~10 s uninterrupted.
+    late = interrupted(lambda: ornithopter.aeromap(v, range(6, 26), range(8, 18), range(0, 21),
+                                                   threads=2))
+    assert late < STOP_WITHIN_S
+    assert temp_folders() == before  # the temporary output folder is removed
+    small = ornithopter.aeromap(v, [12], [12], [0], threads=1)  # the request was withdrawn
+    assert small["summary"]["points"] == 1
+
+
+def test_ctrl_c_stops_a_trim():
+    v = ornithopter.load_vehicle(EFW)
+    # The two-stage trim: Ceres on tethered runs, then free flight; the cost function reports a
+    # cancelled run as failed and the solver's caller raises.
+    assert interrupted(lambda: ornithopter.trim(v, freq=12), after_s=0.2) < STOP_WITHIN_S
+
+
+def test_ctrl_c_stops_an_optimisation_and_keeps_its_journal(tmp_path):
+    study = os.path.join(SOURCE_DIR, "studies", "paper", "optimize_magpie.toml")
+    out = tmp_path / "opt"  # ~9 min uninterrupted
+    assert interrupted(lambda: ornithopter.optimize(study, out=str(out)), after_s=2.0) < \
+        STOP_WITHIN_S
+    assert (out / "optimize.journal").exists()
+    assert not (out / "summary.json").exists()
+
+
+def test_interrupted_continuation_resumes_to_the_same_bytes(tmp_path):
+    toml = tmp_path / "branch.toml"
+    toml.write_text('kind = "continuation"\nname = "branch"\nvehicle = "%s"\n[trim]\n'
+                    'freq_hz = 12.0\n[continuation]\nparameter = "freq_hz"\nto = 14.0\n'
+                    'step = 0.1\nmax_points = 40\n' % EFW)
+    whole, cut = tmp_path / "whole", tmp_path / "cut"
+    ornithopter.run(str(toml), out=str(whole))
+    interrupted(lambda: ornithopter.run(str(toml), out=str(cut)), after_s=1.5)
+    assert not (cut / "continuation.csv").exists()
+    ornithopter.run(str(toml), out=str(cut))  # resumes from the journal
+    assert (cut / "continuation.csv").read_bytes() == (whole / "continuation.csv").read_bytes()
