@@ -34,13 +34,19 @@ struct DesignWorkspace : ProblemWorkspace {
   std::optional<OperatingPoint> last_trim;  ///< last converged trim of this start
 };
 
+/// The options of one tethered periodic run at a trim point from the trim's run options.
+SimulationOptions tetheredRunAtTrim(const SimulationOptions& trim_simulation, bool record_history) {
+  SimulationOptions o = trim_simulation;
+  o.mode = FlightMode::kTethered;
+  o.stop_when_steady = true;
+  o.record_history = record_history;
+  return o;
+}
+
 /// Max |tip deflection| over the last cycle of a tethered periodic run at `point`.
 double tipDeflectionAmplitude(const FlightCoreModel& model, const OperatingPoint& point,
                               const SimulationOptions& trim_simulation) {
-  SimulationOptions o = trim_simulation;
-  o.mode = FlightMode::kTethered;
-  o.record_history = true;
-  o.stop_when_steady = true;
+  const SimulationOptions o = tetheredRunAtTrim(trim_simulation, true);
   TimeHistory h;
   const SimulationSummary s = simulateTethered(model, point, o, &h);
   if (s.status != SimulationStatus::kOk || h.loads.empty()) return kNaN;
@@ -58,13 +64,10 @@ double tipDeflectionAmplitude(const FlightCoreModel& model, const OperatingPoint
 /// run fails.
 CycleMeans tetheredMeansAt(const FlightCoreModel& model, const OperatingPoint& point,
                            const SimulationOptions& trim_simulation) {
-  SimulationOptions o = trim_simulation;
+  SimulationOptions o = tetheredRunAtTrim(trim_simulation, false);
   const SimulationOptions defaults = TrimOptions{}.simulation;
-  o.mode = FlightMode::kTethered;
   o.rel_tol = std::min(o.rel_tol, defaults.rel_tol);
   o.steady_tol = std::min(o.steady_tol, defaults.steady_tol);
-  o.stop_when_steady = true;
-  o.record_history = false;
   const SimulationSummary r = simulateTethered(model, point, o, nullptr);
   if (r.status == SimulationStatus::kOk || r.status == SimulationStatus::kNotConverged)
     return r.mean;

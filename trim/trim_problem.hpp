@@ -9,8 +9,8 @@
 // are the tethered core's cycle means (tethered_simulation.hpp): wings (aerodynamic + inertial)
 // plus tail, about P1 = the CG, in the flight-path frame of level flight (FV up, FH forward),
 // gravity not included. The weight acts at the CG, so it enters r_V only. Eq. (4) has no fuselage
-// term and neither has the vehicle model: there is no body drag (FH is the wings' mean thrust minus
-// the tail drag).
+// term; the vehicle model adds the fuselage's parasite drag (body.drag_area_m2, at the CG against
+// the flight path; issue 13), so FH is the wings' mean thrust minus the tail and body drag.
 //
 // The unknowns are a subset of (theta_mean, U, delta_T, f); the others are held at their given
 // values. The solver works in "solver units" (deg, m/s, deg, Hz), in which all four are O(1-10)

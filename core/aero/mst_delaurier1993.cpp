@@ -5,11 +5,11 @@
 #include <cmath>
 
 #include "core/aero/mst_strip.hpp"
+#include "core/model/frames.hpp"
 
 namespace orni::aero {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 }  // namespace
 
@@ -65,7 +65,7 @@ SectionLoads evalDeLaurier1993(const StripContext& context, const StripGeometry&
 
   // M8: apparent-mass normal force at c/2.
   const double vdot2 = U * alphadot - 0.25 * c * thetaddot;
-  const double apparent_mass_per_span = rho * kPi * c * c * 0.25;
+  const double apparent_mass_per_span = apparentMassPerSpan_kgpm(rho, c);
   const double dNa = apparent_mass_per_span * vdot2 * dy;
 
   // M9-M12: chordwise forces (+ towards the LE).

@@ -11,9 +11,18 @@
 
 #include <Eigen/Core>
 
+#include "core/model/frames.hpp"
 #include "core/model/vehicle_model.hpp"
 
 namespace orni::aero {
+
+/// Apparent (added) air mass per unit span of a section of chord c: rho pi c^2 / 4 (kg/m;
+/// DeLaurier 1993 M8, the air cylinder on the chord). The one definition for the strip kernels and
+/// the wing's equations of motion (the batch kernel, mst_td_batch.cpp, hoists rho pi / 4 out of
+/// its strip loop).
+inline double apparentMassPerSpan_kgpm(double density_kgpm3, double chord_m) {
+  return density_kgpm3 * kPi * chord_m * chord_m * 0.25;
+}
 
 using Vec3 = Eigen::Vector3d;
 

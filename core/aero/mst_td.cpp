@@ -8,12 +8,12 @@
 #include <Eigen/Geometry>
 
 #include "core/aero/mst_strip.hpp"
+#include "core/model/frames.hpp"
 
 namespace orni::aero {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kHalfPi = 0.5 * kPi;
 
@@ -181,7 +181,7 @@ SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometr
   const double q_ref_c_dy = 0.5 * rho * V_r * V_r * c * dy;
   const double q_K_c_dy = q_ref_c_dy * bounded.speed_ratio;
   const double dNc = kTwoPi * bounded.angle * q_K_c_dy;                          // M7
-  const double dNa = rho * kPi * c * c * 0.25 * flow.vdot2_mps2 * dy;              // M8
+  const double dNa = apparentMassPerSpan_kgpm(rho, c) * flow.vdot2_mps2 * dy;              // M8
   // M9 with the suction angle (bounded) - c thetadot/(4 V_r); off in reversed flow (pitfall 10).
   const double suction_angle = bounded.angle - alpha0 - 0.25 * c * thetadot * inv_V_r;
   const double dTs = flow.V_t_mps > 0.0

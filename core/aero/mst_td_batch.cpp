@@ -3,10 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/model/frames.hpp"
+
 namespace orni::aero {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kHalfPi = 0.5 * kPi;
 }  // namespace
@@ -92,7 +93,7 @@ void prepareStripBatch(const StripContext& context, StripBatch& b) {
   b.lever50 = 0.5 * c - b.ref_aft_of_le_m;
   b.lever75 = 0.75 * c - b.ref_aft_of_le_m;
   b.k_q = 0.5 * rho * c * dy;
-  b.k_apparent = (rho * kPi * 0.25) * c * c * dy;
+  b.k_apparent = (rho * kPi * 0.25) * c * c * dy;  // apparentMassPerSpan_kgpm (mst_strip.hpp) dy
   b.k_couple1 = (rho * kPi / 16.0) * c * c * c * dy;
   b.k_couple2 = (rho * kPi / 128.0) * c * c * c * c * dy;
   if (params.skin_friction)

@@ -2,11 +2,11 @@
 #include <cassert>
 
 #include "core/aero/tail.hpp"
+#include "core/model/frames.hpp"
 
 namespace orni::aero {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 /// Floor of the airspeed in the pitch-rate term Q l_T/V (avoids a division by zero at rest).
 constexpr double kMinTailSpeedMps = 0.5;
 }  // namespace

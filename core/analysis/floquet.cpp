@@ -7,11 +7,12 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/model/frames.hpp"
+
 namespace orni {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 bool isBody(FloquetStateKind k) {
   return k == FloquetStateKind::kBodyU || k == FloquetStateKind::kBodyW ||

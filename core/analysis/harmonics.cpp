@@ -1,5 +1,7 @@
 #include "core/analysis/harmonics.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "core/model/frames.hpp"
@@ -32,6 +34,16 @@ double peakPhase(const double* x, std::size_t n, std::size_t stride) {
   for (std::size_t i = 1; i < n; ++i)
     if (x[i * stride] > x[best * stride]) best = i;
   return n ? static_cast<double>(best) / static_cast<double>(n) : 0.0;
+}
+
+double periodHalfRange(const double* x, std::size_t n, std::size_t stride) {
+  if (n == 0) return 0.0;
+  double lo = x[0], hi = x[0];
+  for (std::size_t i = 1; i < n; ++i) {
+    lo = std::min(lo, x[i * stride]);
+    hi = std::max(hi, x[i * stride]);
+  }
+  return 0.5 * (hi - lo);
 }
 
 }  // namespace orni

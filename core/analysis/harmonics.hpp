@@ -21,4 +21,7 @@ Harmonic periodHarmonic(const double* x, std::size_t n, int order, std::size_t s
 /// Fraction of the period in [0, 1) at which the sampled signal peaks.
 double peakPhase(const double* x, std::size_t n, std::size_t stride = 1);
 
+/// Half of (max - min) of the n samples (0 for none).
+double periodHalfRange(const double* x, std::size_t n, std::size_t stride = 1);
+
 }  // namespace orni

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/aero/mst_strip.hpp"
 #include "core/dynamics/flapping.hpp"
 #include "core/model/invalid_model_error.hpp"
 
@@ -72,7 +73,8 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
     for (std::size_t j = 0; j < ns; ++j) {
       const double c = model.strip_geometry[j].chord_m;
       apparent_mass_kg_[static_cast<Eigen::Index>(j)] =
-          model.vehicle.air.density_kgpm3 * kPi * c * c / 4.0 * model.strip_geometry[j].width_m;
+          aero::apparentMassPerSpan_kgpm(model.vehicle.air.density_kgpm3, c) *
+          model.strip_geometry[j].width_m;
     }
     const RigidBodyInertia& wi = model.wing_mass.total;
     m_w_ = wi.mass_kg;

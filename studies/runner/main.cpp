@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <cmath>
 #include <filesystem>
+#include <stdexcept>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -474,9 +475,8 @@ int runCommandLine(int argc, char** argv) {
       std::cout << "redrew " << n << " figure(s) in " << plot_dir << "\n";
       return kExitOk;
     }
-    std::cerr << "ornithopter: " << app.get_subcommands().front()->get_name()
-              << " is not available in this version yet (see the open issues)\n";
-    return kExitFailed;
+    // Every subcommand returns above; CLI11 rejects any other name before this point.
+    throw std::logic_error("unhandled subcommand " + app.get_subcommands().front()->get_name());
   } catch (const InputError& e) {
     std::cerr << "ornithopter: error: " << e.what() << "\n";
     return kExitBadInput;

@@ -1,14 +1,14 @@
 // Outputs of the constrained flight test (paper section 4, Fig. 9) of a tethered simulate run:
 // zmp.csv (the last cycle), the "constrained_flight_test" object of summary.json and the figure
 // zmp.png/svg (top: C_F,V, C_F,H, C_M,CG over the last cycle; bottom: epsilon against delta_M,
-// upstroke and downstroke). Analysis in core/analysis/zero_moment_point.hpp.
+// upstroke and downstroke). Analysis in core/dynamics/zero_moment_point.hpp.
 #pragma once
 
 #include <filesystem>
 #include <optional>
 #include <string>
 
-#include "core/analysis/zero_moment_point.hpp"
+#include "core/dynamics/zero_moment_point.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/csv_table.hpp"

@@ -2,6 +2,7 @@
 
 #include <iostream>
 #include <optional>
+#include <stdexcept>
 
 #include "core/model/invalid_model_error.hpp"
 #include "studies/runner/commands/aeromap_command.hpp"
@@ -68,12 +69,8 @@ int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
       opts.threads = jobs;
       return runOptimizeStudy(study, out_dir, opts);
     }
-    default:
-      std::cerr << "ornithopter: " << study.study_path.string() << ": kind '"
-                << toString(study.kind)
-                << "' is not available in this version yet (see the open issues)\n";
-      return 1;
   }
+  throw std::logic_error("runStudyKind: a study kind without a runner");
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "studies/runner/commands/journaled_points.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/commands/sensitivity_figures.hpp"
@@ -21,9 +22,7 @@
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
-#include "studies/runner/output/progress_line.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
-#include "trim/point_pool.hpp"
 
 namespace orni::studies {
 
@@ -182,73 +181,20 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
                 << formatShortest(p.base) << " lies outside its range [" << formatShortest(p.low)
                 << ", " << formatShortest(p.high) << "]: both ends move it the same way\n";
 
-  if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing
-    FarmJob job;
-    job.threads = run.threads;
-    job.work = [&](std::size_t i, const std::string&) {
-      return encodeSweepPoint(runSensitivityPoint(s.points[i], s));
-    };
-    runFarm(job);
-    return 0;
-  }
   const std::string resolved = resolvedStudyToml(study);
-  const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
-  fs::create_directories(out_dir);
-  PointJournalResume resume;
-  PointJournal journal(
-      out_dir / kSensitivityJournalName, "sensitivity", fingerprint, n,
-      [&](std::size_t, std::string_view payload) {
-        SweepPointResult r;
-        return decodeSweepPoint(payload, columns, &r);
-      },
-      &resume);
-  if (resume.existed && !resume.fingerprint_matched)
-    std::cerr << "sensitivity: " << journal.path().string()
-              << " belongs to another study or version: starting afresh\n";
-  else if (resume.existed)
-    std::cerr << "sensitivity: resuming from " << journal.path().string() << ": " << resume.records
-              << " of " << n << " points already done"
-              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
-                                              " torn or corrupt line(s) dropped)"
-                                        : std::string())
-              << "\n";
-
-  std::vector<SweepPointResult> rows(n);
-  std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (resume.payloads[i])
-      decodeSweepPoint(*resume.payloads[i], columns, &rows[i]);
-    else
-      todo.push_back(i);
-  }
-
-  std::optional<ProgressLine> progress;
-  if (run.progress) progress.emplace("sensitivity", n, resume.records);
-  if (farmDistributed()) {
-    // Rank 0 of a distributed run: the workers return each point as its journal payload, read
-    // back as a resumed run reads it.
-    FarmJob job;
-    job.todo = todo;
-    job.threads = run.threads;
-    job.on_result = [&](std::size_t i, std::string payload) {
-      if (!decodeSweepPoint(payload, columns, &rows[i]))
-        throw std::runtime_error("sensitivity: point " + std::to_string(i) +
-                                 ": a worker rank returned an invalid result");
-      journal.append(i, payload);
-      if (progress) progress->pointDone();
-      if (run.on_point) run.on_point(i, rows[i]);
-    };
-    runFarm(job);
-  } else {
-    trim::runPoints(
-        todo, run.threads, [&](std::size_t i) { rows[i] = runSensitivityPoint(s.points[i], s); },
-        [&](std::size_t i) {
-          journal.append(i, encodeSweepPoint(rows[i]));
-          if (progress) progress->pointDone();
-          if (run.on_point) run.on_point(i, rows[i]);
-        });
-  }
-  if (progress) progress->finish();
+  JournaledPointsJob job;
+  job.kind = "sensitivity";
+  job.journal_path = out_dir / kSensitivityJournalName;
+  job.fingerprint = fnv1a64(versionString() + "\n" + resolved);
+  job.points = n;
+  job.columns = columns;
+  job.threads = run.threads;
+  job.progress = run.progress;
+  job.compute = [&](std::size_t i) { return runSensitivityPoint(s.points[i], s); };
+  job.on_point = run.on_point;
+  std::optional<JournaledPoints> done = runJournaledPoints(job);
+  if (!done) return 0;  // a worker rank of a distributed run
+  const std::vector<SweepPointResult>& rows = done->rows;
 
   const std::vector<PredictionRanking> rankings = rankSensitivity(s.parameters.size(), rows);
   writeFileAtomic(out_dir / "sensitivity.csv", sensitivityTable(s, rows).toString());
@@ -268,15 +214,15 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
       .set("points_not_converged", static_cast<long>(count.not_converged))
       .set("points_diverged", static_cast<long>(count.diverged))
       .set("points_failed", static_cast<long>(count.failed))
-      .set("points_computed", static_cast<long>(todo.size()))
-      .set("points_resumed", static_cast<long>(resume.records))
+      .set("points_computed", static_cast<long>(done->computed))
+      .set("points_resumed", static_cast<long>(done->resumed))
       .set("threads", run.threads)
       .set("free_flight_cycles", s.free_flight_cycles)
       .set("parameters", parametersJson(s))
       .set("base", baseJson(rows[0]))
       .set("predictions", predictionsJson(s, rankings));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  journal.remove();  // every result is in sensitivity.csv now
+  done->journal->remove();  // every result is in sensitivity.csv now
 
   int drawn = 0;
   if (run.figures) {
@@ -294,7 +240,7 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
     if (drawn == 0) std::cerr << "sensitivity: no prediction has a value to plot: no figure\n";
   }
   std::cout << study.name << ": sensitivity of " << rankings.size() << " predictions to "
-            << s.parameters.size() << " parameters, " << n << " points (" << todo.size()
+            << s.parameters.size() << " parameters, " << n << " points (" << done->computed
             << " computed): " << count.ok << " ok, " << count.not_converged << " not_converged, "
             << count.diverged << " diverged, " << count.failed << " failed\n  -> "
             << out_dir.string() << "\n";

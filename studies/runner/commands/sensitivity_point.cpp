@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/analysis/zero_moment_point.hpp"
+#include "core/dynamics/zero_moment_point.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/tethered_simulation.hpp"

@@ -12,7 +12,7 @@
 //   tethered   simulateTethered at the trim point with the trim's periodic-run options (rel_tol
 //              1e-6, stop at the periodic steady state, at most max_cycles): the hinge and
 //              aerodynamic power (cycle means) and the constrained flight test of its last cycle
-//              (core/analysis/zero_moment_point.hpp, paper Fig. 9), all at the trim point after
+//              (core/dynamics/zero_moment_point.hpp, paper Fig. 9), all at the trim point after
 //              the free-flight refinement. (The trim's own mean.hinge_power_W, which `trim` reports
 //              and `optimize` minimises, is at the stage-1 Eq. (4) point: hinge_power_eq4_W.)
 //

@@ -8,8 +8,8 @@
 #include <optional>
 #include <sstream>
 
-#include "core/analysis/harmonics.hpp"
 #include "core/dynamics/flexible_wing.hpp"
+#include "core/dynamics/last_cycle_harmonics.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
 #include "trim/trim_solver.hpp"
@@ -175,15 +175,6 @@ std::string loadsFigure(const Study& study, const SimulationSummary& s, std::siz
   return g.str();
 }
 
-double halfRange(const double* x, std::size_t n, std::size_t stride) {
-  double lo = x[0], hi = x[0];
-  for (std::size_t i = 1; i < n; ++i) {
-    lo = std::min(lo, x[i * stride]);
-    hi = std::max(hi, x[i * stride]);
-  }
-  return 0.5 * (hi - lo);
-}
-
 }  // namespace
 
 JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
@@ -228,33 +219,21 @@ JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
                                           : model.wing_mass.total.mass_kg);
   // Harmonic content of the last cycle (samples_per_cycle points, endpoint excluded); only when
   // the history holds a whole cycle (a run that failed early may not).
-  const std::size_t spc = static_cast<std::size_t>(opts.samples_per_cycle);
-  if (!failed && history.loads.size() >= spc + 1) {
-    const std::size_t start = history.loads.size() - 1 - spc;
-    const std::size_t stride = sizeof(LoadSample) / sizeof(double);
-    const double* fv = &history.loads[start].FV_N;
-    const double* fh = &history.loads[start].FH_N;
-    const double* mm = &history.loads[start].M_Nm;
-    const Harmonic fv1 = periodHarmonic(fv, spc, 1, stride);
-    const Harmonic fv2 = periodHarmonic(fv, spc, 2, stride);
-    const Harmonic fh1 = periodHarmonic(fh, spc, 1, stride);
-    const Harmonic fh2 = periodHarmonic(fh, spc, 2, stride);
-    const Harmonic m1 = periodHarmonic(mm, spc, 1, stride);
-    summary.set(
-        "last_cycle",
-        JsonObject()
-            .set("FV_amplitude_1f_N", fv1.amplitude)
-            .set("FV_amplitude_2f_N", fv2.amplitude)
-            .set("FH_amplitude_1f_N", fh1.amplitude)
-            .set("FH_amplitude_2f_N", fh2.amplitude)
-            .set("M_amplitude_1f_Nm", m1.amplitude)
-            .set("FV_peak_phase", peakPhase(fv, spc, stride))
-            .set("FH_peak_phase", peakPhase(fh, spc, stride))
-            .set("tip_deflection_amplitude_m",
-                 halfRange(&history.loads[start].tip_deflection_m, spc, stride))
-            .set("tip_twist_amplitude_deg",
-                 kRadToDeg * halfRange(&history.loads[start].tip_twist_rad, spc, stride)));
-  }
+  const std::optional<LastCycleHarmonics> last =
+      failed ? std::nullopt
+             : lastCycleHarmonics(history.loads, static_cast<std::size_t>(opts.samples_per_cycle));
+  if (last)
+    summary.set("last_cycle",
+                JsonObject()
+                    .set("FV_amplitude_1f_N", last->FV_1f.amplitude)
+                    .set("FV_amplitude_2f_N", last->FV_2f.amplitude)
+                    .set("FH_amplitude_1f_N", last->FH_1f.amplitude)
+                    .set("FH_amplitude_2f_N", last->FH_2f.amplitude)
+                    .set("M_amplitude_1f_Nm", last->M_1f.amplitude)
+                    .set("FV_peak_phase", last->FV_peak_phase)
+                    .set("FH_peak_phase", last->FH_peak_phase)
+                    .set("tip_deflection_amplitude_m", last->tip_deflection_amplitude_m)
+                    .set("tip_twist_amplitude_deg", kRadToDeg * last->tip_twist_amplitude_rad));
   if (cft) summary.set("constrained_flight_test", zmpSummary(*cft));
   summary.set("integrator", JsonObject()
                              .set("method", s.integrator_method)

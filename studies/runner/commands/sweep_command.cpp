@@ -12,15 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "studies/runner/commands/journaled_points.hpp"
 #include "studies/runner/commands/run_info.hpp"
-#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
-#include "studies/runner/output/progress_line.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
-#include "trim/point_pool.hpp"
 #include "trim/sweep_grid.hpp"
 
 namespace orni::studies {
@@ -200,73 +198,20 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   const std::vector<SweepColumn> columns = sweepResultColumns(study);
   const std::size_t n = grid.size();
 
-  if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing
-    FarmJob job;
-    job.threads = run.threads;
-    job.work = [&](std::size_t i, const std::string&) {
-      return encodeSweepPoint(runSweepPoint(s.points[i], s.run));
-    };
-    runFarm(job);
-    return 0;
-  }
   const std::string resolved = resolvedStudyToml(study);
-  const std::uint64_t fingerprint = fnv1a64(versionString() + "\n" + resolved);
-  fs::create_directories(out_dir);
-  PointJournalResume resume;
-  PointJournal journal(
-      out_dir / kSweepJournalName, "sweep", fingerprint, n,
-      [&](std::size_t, std::string_view payload) {
-        SweepPointResult r;
-        return decodeSweepPoint(payload, columns.size(), &r);
-      },
-      &resume);
-  if (resume.existed && !resume.fingerprint_matched)
-    std::cerr << "sweep: " << journal.path().string()
-              << " belongs to another study or version: starting afresh\n";
-  else if (resume.existed)
-    std::cerr << "sweep: resuming from " << journal.path().string() << ": " << resume.records
-              << " of " << n << " points already done"
-              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
-                                              " torn or corrupt line(s) dropped)"
-                                        : std::string())
-              << "\n";
-
-  std::vector<SweepPointResult> rows(n);
-  std::vector<std::size_t> todo;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (resume.payloads[i])
-      decodeSweepPoint(*resume.payloads[i], columns.size(), &rows[i]);
-    else
-      todo.push_back(i);
-  }
-
-  std::optional<ProgressLine> progress;
-  if (run.progress) progress.emplace("sweep", n, resume.records);
-  if (farmDistributed()) {
-    // Rank 0 of a distributed run: the workers return each point as its journal payload, read
-    // back as a resumed run reads it.
-    FarmJob job;
-    job.todo = todo;
-    job.threads = run.threads;
-    job.on_result = [&](std::size_t i, std::string payload) {
-      if (!decodeSweepPoint(payload, columns.size(), &rows[i]))
-        throw std::runtime_error("sweep: point " + std::to_string(i) +
-                                 ": a worker rank returned an invalid result");
-      journal.append(i, payload);
-      if (progress) progress->pointDone();
-      if (run.on_point) run.on_point(i, rows[i]);
-    };
-    runFarm(job);
-  } else {
-    trim::runPoints(
-        todo, run.threads, [&](std::size_t i) { rows[i] = runSweepPoint(s.points[i], s.run); },
-        [&](std::size_t i) {
-          journal.append(i, encodeSweepPoint(rows[i]));
-          if (progress) progress->pointDone();
-          if (run.on_point) run.on_point(i, rows[i]);
-        });
-  }
-  if (progress) progress->finish();
+  JournaledPointsJob job;
+  job.kind = "sweep";
+  job.journal_path = out_dir / kSweepJournalName;
+  job.fingerprint = fnv1a64(versionString() + "\n" + resolved);
+  job.points = n;
+  job.columns = columns.size();
+  job.threads = run.threads;
+  job.progress = run.progress;
+  job.compute = [&](std::size_t i) { return runSweepPoint(s.points[i], s.run); };
+  job.on_point = run.on_point;
+  std::optional<JournaledPoints> done = runJournaledPoints(job);
+  if (!done) return 0;  // a worker rank of a distributed run
+  const std::vector<SweepPointResult>& rows = done->rows;
 
   writeFileAtomic(out_dir / "sweep.csv", sweepTable(s, grid, columns, rows).toString());
   writeFileAtomic(out_dir / "study.resolved.toml", resolved);
@@ -291,8 +236,8 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
       .set("points_failed", static_cast<long>(count.failed));
   if (s.run == StudyKind::kTrim || study.simulate.mode == FlightMode::kFree)
     summary.set("points_bounded", static_cast<long>(count.bounded));
-  summary.set("points_computed", static_cast<long>(todo.size()))
-      .set("points_resumed", static_cast<long>(resume.records))
+  summary.set("points_computed", static_cast<long>(done->computed))
+      .set("points_resumed", static_cast<long>(done->resumed))
       .set("threads", run.threads)
       .set("axes", axes);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
@@ -306,9 +251,9 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   }
   // Every output is in place now: a run stopped before this line (in the figure too) resumes
   // from the journal and computes no point again.
-  journal.remove();
+  done->journal->remove();
   std::cout << study.name << ": sweep of " << toString(s.run) << ", " << n << " points ("
-            << todo.size() << " computed): " << count.ok << " ok, " << count.not_converged
+            << done->computed << " computed): " << count.ok << " ok, " << count.not_converged
             << " not_converged, " << count.diverged << " diverged, " << count.failed
             << " failed\n  -> " << out_dir.string() << "\n";
   return 0;

@@ -1,4 +1,4 @@
-#include "core/analysis/zero_moment_point.hpp"
+#include "core/dynamics/zero_moment_point.hpp"
 
 #include <algorithm>
 #include <cmath>

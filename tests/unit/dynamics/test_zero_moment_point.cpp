@@ -5,7 +5,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/analysis/zero_moment_point.hpp"
+#include "core/dynamics/zero_moment_point.hpp"
 #include "core/dynamics/flapping.hpp"
 #include "tests/support/test_vehicles.hpp"
 
