@@ -17,8 +17,8 @@ CsvStreamWriter::CsvStreamWriter(std::filesystem::path path, std::vector<CsvColu
       names += ',';
       units += ',';
     }
-    names += columns[c].name;
-    units += columns[c].unit;
+    names += csvTextCell(columns[c].name);  // as CsvTable writes its header rows
+    units += csvTextCell(columns[c].unit);
   }
   file_.write(names + '\n' + units + '\n');
 }

@@ -19,8 +19,10 @@ std::string csvTextCell(const std::string& text) {
 void CsvTable::add(std::string name, std::string unit, std::vector<std::string> cells) {
   if (!columns_.empty() && cells.size() != columns_.front().size())
     throw std::logic_error("CsvTable: column '" + name + "' has a different length");
-  names_.push_back(std::move(name));
-  units_.push_back(std::move(unit));
+  // Names and units are cells too: a comma or quote in them must not shift the header rows.
+  std::string name_cell = csvTextCell(name), unit_cell = csvTextCell(unit);
+  names_.push_back(std::move(name_cell));
+  units_.push_back(std::move(unit_cell));
   columns_.push_back(std::move(cells));
 }
 

@@ -10,6 +10,8 @@ namespace orni::studies {
 /// std::logic_error for a newline.
 std::string csvTextCell(const std::string& text);
 
+/// Column names and units are written like text cells (csvTextCell): quoted when they hold a
+/// comma or a double quote, std::logic_error for a newline.
 class CsvTable {
  public:
   /// Add a column of numbers (shortest round-trip formatting); every column must end up with the

@@ -43,7 +43,7 @@ class JournalFile {
   JournalFile& operator=(const JournalFile&) = delete;
 
   /// Appends `line` (which ends with its newline) in one write. Throws std::runtime_error on
-  /// failure or after remove().
+  /// failure, std::logic_error after remove().
   void append(const std::string& line);
   /// Closes and deletes the file.
   void remove();
