@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cstring>
+#include <list>
 #include <map>
 #include <mutex>
 #include <stdexcept>
@@ -134,8 +135,17 @@ void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
 
 namespace {
 
+// The cache: at most kModalWingCacheCapacity wings, the least recently used dropped first (a wing
+// still in use stays alive through its shared_ptr; dropping it only means a rebuild, with the same
+// bits, should it be asked for again). Without a bound an optimisation over the stiffeners would
+// keep one wing per design it ever tried.
+struct CacheEntry {
+  std::shared_ptr<const structure::ModalWing> wing;
+  std::list<std::string>::iterator recency;  // position in g_recency (front: most recent)
+};
 std::mutex g_cache_mutex;
-std::map<std::string, std::shared_ptr<const structure::ModalWing>> g_cache;
+std::map<std::string, CacheEntry> g_cache;
+std::list<std::string> g_recency;
 std::atomic<long> g_builds{0};
 
 void appendBytes(std::string* key, const void* p, std::size_t n) {
@@ -179,7 +189,10 @@ std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& 
   {
     std::lock_guard<std::mutex> lock(g_cache_mutex);
     auto it = g_cache.find(key);
-    if (it != g_cache.end()) return it->second;
+    if (it != g_cache.end()) {
+      g_recency.splice(g_recency.begin(), g_recency, it->second.recency);
+      return it->second.wing;
+    }
   }
   const structure::WingMesh mesh = structure::buildWingMesh(vehicle, vehicle.wing.fe.element_size_m);
   structure::ModalWingOptions opts;
@@ -191,9 +204,25 @@ std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& 
       structure::buildModalWing(vehicle, mesh, opts));
   g_builds.fetch_add(1);
   std::lock_guard<std::mutex> lock(g_cache_mutex);
-  return g_cache.emplace(key, built).first->second;
+  auto it = g_cache.find(key);  // another thread may have built it meanwhile: keep the first
+  if (it != g_cache.end()) {
+    g_recency.splice(g_recency.begin(), g_recency, it->second.recency);
+    return it->second.wing;
+  }
+  g_recency.push_front(key);
+  g_cache.emplace(key, CacheEntry{built, g_recency.begin()});
+  while (g_cache.size() > kModalWingCacheCapacity) {
+    g_cache.erase(g_recency.back());
+    g_recency.pop_back();
+  }
+  return built;
 }
 
 long modalWingBuildCount() { return g_builds.load(); }
+
+std::size_t modalWingCacheSize() {
+  std::lock_guard<std::mutex> lock(g_cache_mutex);
+  return g_cache.size();
+}
 
 }  // namespace orni

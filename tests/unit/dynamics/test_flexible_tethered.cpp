@@ -4,6 +4,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
+#include <fstream>
+
+#include <unistd.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -81,6 +85,43 @@ TEST(DynamicsFlexibleTethered, ModalWingIsBuiltOncePerStructure) {
   VehicleModel other = v;
   other.materials.front().youngs_modulus_pa *= 1.01;  // any structural change rebuilds
   EXPECT_NE(cachedModalWing(other).get(), a.get());
+  EXPECT_EQ(modalWingBuildCount(), builds + 1);
+}
+
+/// Resident memory of this process (kB), from /proc/self/statm (0 where there is none).
+long residentKb() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  if (!(statm >> pages >> resident)) return 0;
+  return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+TEST(DynamicsFlexibleTethered, ModalWingCacheIsBoundedAndRebuildsTheSameWing) {
+  VehicleModel v = efw(StructureLevel::kFlexible);
+  v.wing.fe.element_size_m *= 2.0;  // a coarse mesh: quick builds, same cache logic
+  const auto first = cachedModalWing(v);
+  const long rss0 = residentKb();
+  // More distinct wings than the cache keeps: the size stays at the bound.
+  for (std::size_t k = 1; k <= kModalWingCacheCapacity + 3; ++k) {
+    VehicleModel w = v;
+    w.wing.member_diameter_scale = 1.0 + 0.01 * static_cast<double>(k);
+    cachedModalWing(w);
+    EXPECT_LE(modalWingCacheSize(), kModalWingCacheCapacity);
+  }
+  std::printf("modal wing cache: %zu wings, resident memory +%ld kB for %zu coarse wings\n",
+              modalWingCacheSize(), residentKb() - rss0, kModalWingCacheCapacity + 3);
+  EXPECT_EQ(modalWingCacheSize(), kModalWingCacheCapacity);
+  // The first wing was dropped (least recently used): asked again it is built again, with the
+  // same data (the build is deterministic), while the copy we hold stays valid.
+  const long builds = modalWingBuildCount();
+  const auto again = cachedModalWing(v);
+  EXPECT_EQ(modalWingBuildCount(), builds + 1);
+  EXPECT_NE(again.get(), first.get());
+  ASSERT_EQ(again->frequencies_hz.size(), first->frequencies_hz.size());
+  for (Eigen::Index k = 0; k < first->frequencies_hz.size(); ++k)
+    EXPECT_EQ(again->frequencies_hz[k], first->frequencies_hz[k]) << k;
+  // The most recent one is kept: no build.
+  EXPECT_EQ(cachedModalWing(v).get(), again.get());
   EXPECT_EQ(modalWingBuildCount(), builds + 1);
 }
 
