@@ -245,14 +245,17 @@ class StartRun {
     rec.index = static_cast<int>(records_.size());
     rec.stage = stage_;
     rec.x = toPhysical(u);
-    if (abort_->load()) {  // another start failed: stop quickly, evaluate nothing
+    // A failed record for a point left unevaluated, and NLopt asked to stop.
+    auto stopped = [&](const char* message) -> const EvaluationRecord& {
+      rec.result = Evaluation{};
       rec.result.status = EvaluationStatus::kFailed;
-      rec.result.message = "run stopped";
+      rec.result.message = message;
       finish(&rec);
       if (current_) nlopt_force_stop(current_);
       records_.push_back(std::move(rec));
       return records_.back();
-    }
+    };
+    if (abort_->load()) return stopped("run stopped");  // another start failed: stop quickly
     const auto seen = cache_.find(rec.x);
     std::optional<Evaluation> replayed;
     if (seen != cache_.end()) {
@@ -270,13 +273,7 @@ class StartRun {
         // Like a kill: nothing journaled for this point; the run rethrows it after NLopt returns.
         if (!error_) error_ = std::current_exception();
         abort_->store(true);
-        if (current_) nlopt_force_stop(current_);
-        rec.result = Evaluation{};
-        rec.result.status = EvaluationStatus::kFailed;
-        rec.result.message = "run cancelled";
-        finish(&rec);
-        records_.push_back(std::move(rec));
-        return records_.back();
+        return stopped("run cancelled");
       } catch (const std::exception& e) {
         rec.result = Evaluation{};
         rec.result.status = EvaluationStatus::kFailed;

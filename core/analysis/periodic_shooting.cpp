@@ -188,11 +188,10 @@ bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::Vec
   const Eigen::Index N = unknownCount();
   const int columns = static_cast<int>(N) + (J_extra ? static_cast<int>(extra.size()) : 0);
   const int workers = std::min(threads_, columns);
-  // Each worker: a copy of the map (same grid), the system's parameters and its own buffers.
+  // Each worker: a copy of the map (same grid), the parameters and its own buffers.
   struct Worker {
     std::unique_ptr<PeriodMap> map;
     std::vector<double> p, x, x_T, g;
-    long maps = 0;
   };
   std::vector<Worker> pool(static_cast<std::size_t>(workers));
   for (Worker& w : pool) {
@@ -201,7 +200,6 @@ bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::Vec
       *cloned = false;
       return false;
     }
-    w.p = p_;
     w.x.assign(x_.size(), 0.0);
     w.x_T.assign(x_T_.size(), 0.0);
     w.g.assign(g_.size(), 0.0);
@@ -233,7 +231,6 @@ bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::Vec
         o.error = std::current_exception();
       }
       o.maps = maps;
-      w.maps += maps;
     }
   };
   std::vector<std::thread> threads;

@@ -41,7 +41,8 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
     s.psi_twist = -(n_W.transpose() * dphi) / s.lever_T_m;
     const double c = strip_chords_m[j];
     s.psi_mid = ((s.phi_L + (0.5 * c / s.lever_T_m) * dphi).transpose() * n_W);
-    apparent_mass_kg[static_cast<Eigen::Index>(j)] = aero::apparentMassPerSpan_kgpm(rho, c) * strip_widths_m[j];
+    apparent_mass_kg[static_cast<Eigen::Index>(j)] =
+        aero::apparentMassPerSpan_kgpm(rho, c) * strip_widths_m[j];
     apparent_rotary_kgm2[static_cast<Eigen::Index>(j)] =
         rho * kPi * c * c * c * c / 128.0 * strip_widths_m[j];
   }

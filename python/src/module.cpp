@@ -90,7 +90,7 @@ PYBIND11_MODULE(_ornithopter, m) {
       raiseInputError(std::string("invalid model: ") + e.what(), "<python>", 0, "", "");
     } catch (const orni::studies::FolderBusyError& e) {
       PyErr_SetString(PyExc_RuntimeError, e.what());
-    } catch (const orni::Cancelled& e) {  // cancelled by another call's Ctrl-C (a process-wide request)
+    } catch (const orni::Cancelled& e) {  // another call's Ctrl-C (the request is process-wide)
       PyErr_SetString(PyExc_KeyboardInterrupt, e.what());
     }
   });
