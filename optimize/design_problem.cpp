@@ -103,14 +103,14 @@ void solvePeriodicDesignTrim(const FlightCoreModel& model, const TrimOptions& t,
 }  // namespace
 
 DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblemOptions& options,
-                                const OperatingPoint& initial_guess) {
+                                const OperatingPoint& initial_guess, ModalWingCache* modal_wings) {
   DesignEvaluation e;
   try {
     // A design outside the vehicle's rules (core/model/vehicle_validation.hpp) fails here, with
     // the key at fault in the message.
     requireValidVehicle(vehicle);
     e.structural_mass_kg = 2.0 * computeWingInertia(vehicle).total.mass_kg;
-    const FlightCoreModel model(vehicle);
+    const FlightCoreModel model(vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
     TrimOptions t = options.trim;
     for (TrimUnknown u : t.unknowns) setUnknownValue(&t.initial, u, unknownValue(initial_guess, u));
     if (t.method == TrimMethod::kPeriodic) {
@@ -229,7 +229,7 @@ Evaluation DesignProblem::evaluate(const std::vector<double>& x, ProblemWorkspac
   const VehicleModel vehicle = applyDesign(base_, space_, x);
   const OperatingPoint guess =
       options_.warm_start && ws.last_trim ? *ws.last_trim : options_.trim.initial;
-  const DesignEvaluation d = evaluateDesign(vehicle, options_, guess);
+  const DesignEvaluation d = evaluateDesign(vehicle, options_, guess, modal_wings_.get());
 
   Evaluation e;
   e.message = d.message;

@@ -5,7 +5,7 @@
 // One evaluation (evaluateDesign): apply the design to a copy of the vehicle (design_space.hpp),
 // check it (core's model checks, core/model/vehicle_validation.hpp: the ranges of the field table
 // and the rules between fields, the same as the vehicle files'), build the FlightCoreModel (a flexible wing's modal model
-// comes from the structural cache, core/dynamics/flexible_wing.cpp), solve the trim with Ceres
+// comes from the problem's ModalWingCache, core/dynamics/modal_wing_cache.hpp), solve the trim with Ceres
 // (trim/trim_solver.hpp; initial guess: the last converged trim of this start, warm start, else
 // the study's initial guess) and, on a converged trim, the free-flight check that solveTrim runs.
 //
@@ -51,6 +51,7 @@
 #include <string>
 #include <vector>
 
+#include "core/dynamics/modal_wing_cache.hpp"
 #include "core/model/vehicle_model.hpp"
 #include "optimize/design_options.hpp"
 #include "optimize/design_space.hpp"
@@ -86,7 +87,8 @@ struct DesignEvaluation {
 /// other fields come from options.trim.initial) and check free flight. Never throws for a design
 /// that cannot be evaluated: trim_attempted is false and message says why.
 DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblemOptions& options,
-                                const OperatingPoint& initial_guess);
+                                const OperatingPoint& initial_guess,
+                                ModalWingCache* modal_wings = nullptr);
 
 /// Name, unit and scale of one reported value (Evaluation::values, SI): value_in_unit =
 /// value_si / si_per_unit.
@@ -161,6 +163,9 @@ class DesignProblem final : public Problem {
   DesignProblemOptions options_;
   std::vector<std::string> constraint_names_;
   std::vector<DesignValueInfo> value_info_;
+  /// The modal wings of the designs evaluated (one per stiffener design; every design of a
+  /// tail-only space shares the base's). Shared by the workspaces' threads.
+  std::shared_ptr<ModalWingCache> modal_wings_ = std::make_shared<ModalWingCache>();
 };
 
 }  // namespace orni::opt

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/modal_wing_cache.hpp"
 #include "core/model/field_table.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/cancellation.hpp"
@@ -34,12 +35,14 @@ struct CalibrationContext {
   const CalibrationOptions* options;
   std::vector<CalibrationEvaluation>* log;
   bool tethered = false;  ///< Eq. (4) residuals of the tethered means instead of settled flight
+  /// The modal wings of the evaluations (calibrated parameters rarely touch the structure).
+  std::shared_ptr<ModalWingCache> modal_wings = std::make_shared<ModalWingCache>();
 };
 
 // Eq. (4) at the target: (mean FV - W)/W, mean FH/W, mean M/(W c_mean), x 100 (percent of W).
 bool evaluateTethered(const CalibrationContext& c, const VehicleModel& v, double* r,
                       CalibrationEvaluation* e) {
-  const FlightCoreModel model(v);
+  const FlightCoreModel model(v, FlightCoreModel::Checks::kRequired, c.modal_wings.get());
   SimulationOptions o;
   o.cycles = 40;
   o.stop_when_steady = true;
@@ -72,7 +75,7 @@ bool evaluate(const CalibrationContext& c, const double* x, double* r) {
       c.log->push_back(e);
       return ok;
     }
-    const FlightCoreModel model(v);
+    const FlightCoreModel model(v, FlightCoreModel::Checks::kRequired, c.modal_wings.get());
     SimulationOptions sim;
     e.settled = settledFreeFlight(model, o.target, sim, o.settled);
   } catch (const std::exception& ex) {

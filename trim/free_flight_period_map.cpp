@@ -125,7 +125,13 @@ const FlightCoreModel& FreeFlightPeriodMap::modelAt(const double* p) {
     VehicleModel v = base_.vehicle;
     v.flapping.hinge_x_B_m -= shift;
     v.tail.arm_m += shift;
-    shifted_ = std::make_shared<const FlightCoreModel>(v);
+    // The shift moves the hinge and the tail, not the wing: the base's modal wing serves.
+    if (!shifted_wings_ && base_.flexible) {
+      shifted_wings_ = std::make_shared<ModalWingCache>(1);
+      shifted_wings_->insert(base_.vehicle, base_.flexible->modal);
+    }
+    shifted_ = std::make_shared<const FlightCoreModel>(v, FlightCoreModel::Checks::kRequired,
+                                                       shifted_wings_.get());
     shift_m_ = shift;
   }
   return *shifted_;

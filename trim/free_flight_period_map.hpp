@@ -29,6 +29,7 @@
 #include "core/analysis/floquet.hpp"
 #include "core/analysis/period_map.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/modal_wing_cache.hpp"
 #include "core/dynamics/free_flight_system.hpp"
 #include "core/integrate/grid_runge_kutta.hpp"
 
@@ -122,6 +123,7 @@ class FreeFlightPeriodMap final : public PeriodMap {
   std::vector<FloquetStateInfo> info_;
   std::vector<std::string> units_;
   std::shared_ptr<const FlightCoreModel> shifted_;  // CG-shifted vehicle (null: base_)
+  std::shared_ptr<ModalWingCache> shifted_wings_;    // holds base_'s modal wing (flexible)
   double shift_m_ = 0.0;
   std::unique_ptr<FreeFlightSystem> sys_;
   std::unique_ptr<GridRungeKutta> rk_;

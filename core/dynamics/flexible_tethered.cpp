@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "core/dynamics/flapping.hpp"
+#include "core/dynamics/flight_path_frame.hpp"
 #include "core/model/invalid_model_error.hpp"
 
 namespace orni {
@@ -123,17 +124,9 @@ void FlexibleTetheredSystem::fuselageLoads(const AeroResult& aero, const Vec3& F
   const Vec3 Fa = R_BW_ * aero.F_W, Fi = R_BW_ * F_inertial_W;
   const Vec3 Ma = R_BW_ * aero.M_P2_W + p2.cross(Fa);
   const Vec3 Mi = R_BW_ * M_inertial_P2_W + p2.cross(Fi);
-  const double U = body_.v_P1_B.norm();
-  const Vec3 e_v = body_.v_P1_B / U;
-  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
   LoadSample& o = *out;
   o = LoadSample{};
-  o.FV_wing_aero_N = 2.0 * Fa.dot(e_L);
-  o.FH_wing_aero_N = 2.0 * Fa.dot(e_v);
-  o.M_wing_aero_Nm = 2.0 * Ma.y();
-  o.FV_wing_inertial_N = 2.0 * Fi.dot(e_L);
-  o.FH_wing_inertial_N = 2.0 * Fi.dot(e_v);
-  o.M_wing_inertial_Nm = 2.0 * Mi.y();
+  setWingPairLoads(flightPathFrame(body_.v_P1_B), Fa, Ma, Fi, Mi, &o);
   o.power_aero_W = 2.0 * aero.power_aero_W;
   o.power_hinge_W = 2.0 * hinge_power_one_wing_W;
   o.separated_fraction = aero.separated_fraction;

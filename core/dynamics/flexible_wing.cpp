@@ -1,15 +1,8 @@
 #include "core/dynamics/flexible_wing.hpp"
 
-#include <atomic>
-#include <cstring>
-#include <list>
-#include <map>
-#include <mutex>
 #include <stdexcept>
-#include <string>
 
 #include "core/aero/mst_strip.hpp"
-#include "core/structure/wing_mesh.hpp"
 
 namespace orni {
 
@@ -132,98 +125,6 @@ void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
   g.noalias() += (wx * wx) * (flex.spin_stiffness_x * q);
   g.noalias() += ax * (flex.C1 * q);
   g += ax * flex.H_x + (wx * wx) * flex.h_x;
-}
-
-namespace {
-
-// The cache: at most kModalWingCacheCapacity wings, the least recently used dropped first (a wing
-// still in use stays alive through its shared_ptr; dropping it only means a rebuild, with the same
-// bits, should it be asked for again). Without a bound an optimisation over the stiffeners would
-// keep one wing per design it ever tried.
-struct CacheEntry {
-  std::shared_ptr<const structure::ModalWing> wing;
-  std::list<std::string>::iterator recency;  // position in g_recency (front: most recent)
-};
-std::mutex g_cache_mutex;
-std::map<std::string, CacheEntry> g_cache;
-std::list<std::string> g_recency;
-std::atomic<long> g_builds{0};
-
-void appendBytes(std::string* key, const void* p, std::size_t n) {
-  key->append(static_cast<const char*>(p), n);
-}
-void appendDouble(std::string* key, double v) { appendBytes(key, &v, sizeof v); }
-
-// Every input the FE model depends on, as exact bytes (no hashing collisions).
-std::string structuralKey(const VehicleModel& v) {
-  std::string k;
-  const WingModel& w = v.wing;
-  const int planform = static_cast<int>(w.planform);
-  appendBytes(&k, &planform, sizeof planform);
-  for (double d : {w.semispan_m, w.root_chord_m, w.p3_aft_of_le_m, w.skin.thickness_m,
-                   w.fe.element_size_m, w.fe.cutoff_hz, w.fe.damping_ratio,
-                   v.air.density_kgpm3})
-    appendDouble(&k, d);
-  appendBytes(&k, &w.strip_count, sizeof w.strip_count);
-  appendDouble(&k, w.member_diameter_scale);
-  appendBytes(&k, &w.fe.mode_count, sizeof w.fe.mode_count);
-  k.push_back(w.fe.p3_cross_axis_normal ? 'n' : 's');
-  k.push_back(static_cast<char>('0' + static_cast<int>(w.fe.p3_joint)));
-  k.push_back(w.fe.root_edge_pinned ? 'r' : '-');
-  k += w.skin.material + '\0';
-  for (const WingMember& m : w.members) {
-    k += m.name + '\0' + m.material + '\0';
-    for (double d : {m.diameter_m, m.start_x_W_m, m.start_y_W_m, m.end_x_W_m, m.end_y_W_m})
-      appendDouble(&k, d);
-  }
-  for (const Material& m : v.materials) {
-    k += m.name + '\0';
-    for (double d : {m.youngs_modulus_pa, m.poisson_ratio, m.density_kgpm3}) appendDouble(&k, d);
-  }
-  return k;
-}
-
-}  // namespace
-
-std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& vehicle) {
-  const std::string key = structuralKey(vehicle);
-  {
-    std::lock_guard<std::mutex> lock(g_cache_mutex);
-    auto it = g_cache.find(key);
-    if (it != g_cache.end()) {
-      g_recency.splice(g_recency.begin(), g_recency, it->second.recency);
-      return it->second.wing;
-    }
-  }
-  const structure::WingMesh mesh = structure::buildWingMesh(vehicle, vehicle.wing.fe.element_size_m);
-  structure::ModalWingOptions opts;
-  opts.selection.max_modes = vehicle.wing.fe.mode_count;
-  opts.selection.cutoff_hz = vehicle.wing.fe.cutoff_hz;
-  opts.damping_ratio = vehicle.wing.fe.damping_ratio;
-  opts.support = structure::WingSupport::of(vehicle.wing.fe);
-  auto built = std::make_shared<const structure::ModalWing>(
-      structure::buildModalWing(vehicle, mesh, opts));
-  g_builds.fetch_add(1);
-  std::lock_guard<std::mutex> lock(g_cache_mutex);
-  auto it = g_cache.find(key);  // another thread may have built it meanwhile: keep the first
-  if (it != g_cache.end()) {
-    g_recency.splice(g_recency.begin(), g_recency, it->second.recency);
-    return it->second.wing;
-  }
-  g_recency.push_front(key);
-  g_cache.emplace(key, CacheEntry{built, g_recency.begin()});
-  while (g_cache.size() > kModalWingCacheCapacity) {
-    g_cache.erase(g_recency.back());
-    g_recency.pop_back();
-  }
-  return built;
-}
-
-long modalWingBuildCount() { return g_builds.load(); }
-
-std::size_t modalWingCacheSize() {
-  std::lock_guard<std::mutex> lock(g_cache_mutex);
-  return g_cache.size();
 }
 
 }  // namespace orni

@@ -109,19 +109,4 @@ void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
                        const Eigen::VectorXd& qd, double phi_dot_radps, double phi_ddot_radps2,
                        Eigen::VectorXd* out);
 
-/// Wings the in-process cache of cachedModalWing() keeps at most (least recently used dropped
-/// first). A multi-start optimisation over the stiffeners needs the current design of each start
-/// and the baseline (tests/unit/dynamics/test_flexible_tethered.cpp prints what a wing costs).
-inline constexpr std::size_t kModalWingCacheCapacity = 16;
-
-/// Build (or fetch from the in-process cache, keyed by the exact structural inputs) the modal
-/// wing of a vehicle: mesh with wing.fe.element_size_m, modes per wing.fe. Thread-safe; the same
-/// inputs give the same wing, built again or not.
-std::shared_ptr<const structure::ModalWing> cachedModalWing(const VehicleModel& vehicle);
-
-/// Number of modal-wing model builds done by cachedModalWing() in this process (cache test).
-long modalWingBuildCount();
-/// Wings in the cache now, <= kModalWingCacheCapacity.
-std::size_t modalWingCacheSize();
-
 }  // namespace orni

@@ -5,6 +5,7 @@
 
 #include "core/aero/tail.hpp"
 #include "core/dynamics/flexible_wing.hpp"
+#include "core/dynamics/modal_wing_cache.hpp"
 #include "core/model/vehicle_validation.hpp"
 
 namespace orni {
@@ -19,8 +20,12 @@ const VehicleModel& checked(const VehicleModel& v, FlightCoreModel::Checks check
 
 }  // namespace
 
-FlightCoreModel::FlightCoreModel(const VehicleModel& v, Checks checks)
-    : vehicle(checked(v, checks)), strips(makeStrips(v.wing)), wing_mass(computeWingInertia(v)) {
+FlightCoreModel::FlightCoreModel(const VehicleModel& v, Checks checks,
+                                 ModalWingCache* modal_wings)
+    : vehicle(checked(v, checks)),
+      strips(makeStrips(v.wing)),
+      wing_mass(computeWingInertia(v)),
+      modal_wing_cache(modal_wings) {
   strip_geometry.reserve(strips.size());
   double area_half = 0.0;
   for (const Strip& s : strips) {
@@ -49,7 +54,8 @@ FlightCoreModel::FlightCoreModel(const VehicleModel& v, Checks checks)
       chords.push_back(g.chord_m);
       widths.push_back(g.width_m);
     }
-    flexible = std::make_shared<const FlexibleWingModel>(v, cachedModalWing(v), chords, widths);
+    flexible = std::make_shared<const FlexibleWingModel>(
+        v, modal_wings ? modal_wings->get(v) : buildModalWingOf(v), chords, widths);
     // The structural wing mass replaces the rigid-wing estimate (same members and skin).
   }
 }

@@ -49,6 +49,7 @@ struct LoadSample {
 constexpr int kQuadratureChannels = 5;  // FV, FH, M, power_aero, power_hinge
 
 struct FlexibleWingModel;
+class ModalWingCache;
 
 struct FlightCoreModel {
   VehicleModel vehicle;
@@ -75,7 +76,11 @@ struct FlightCoreModel {
                             ///< material, massless wings, no air): vehicles outside the physical
                             ///< ranges on purpose
   };
-  explicit FlightCoreModel(const VehicleModel& v, Checks checks = Checks::kRequired);
+  /// A flexible wing's modal wing comes from `modal_wings` (owned by the caller, kept here for
+  /// models derived from this one) or, when null, is built for this model alone.
+  explicit FlightCoreModel(const VehicleModel& v, Checks checks = Checks::kRequired,
+                           ModalWingCache* modal_wings = nullptr);
+  ModalWingCache* modal_wing_cache = nullptr;  ///< the cache it was built with (not owned)
   int aeroStateCount() const {
     return aero_states_per_strip * static_cast<int>(strips.size());
   }

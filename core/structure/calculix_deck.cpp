@@ -87,9 +87,9 @@ void writeElements(std::ostream& out, const ElementBlock& block, int& next_id) {
   }
 }
 
-const Material& requireMaterial(const VehicleModel& vehicle, const std::string& name,
+const Material& requireMaterial(const WingStructure& wing_structure, const std::string& name,
                                 const std::string& user) {
-  const Material* m = vehicle.findMaterial(name);
+  const Material* m = wing_structure.findMaterial(name);
   if (m == nullptr)
     throw std::invalid_argument("calculixDeck: unknown material '" + name + "' of " + user);
   return *m;
@@ -97,7 +97,7 @@ const Material& requireMaterial(const VehicleModel& vehicle, const std::string& 
 
 }  // namespace
 
-std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
+std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& mesh,
                          const CalculixDeckOptions& options, CalculixDeckStats* stats) {
   const int n = mesh.nodeCount();
   if (mesh.p2_node < 0 || mesh.p2_node >= n)
@@ -149,8 +149,8 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
   // mesh edge is halved, so each beam element becomes two that share the quads' midside nodes.
   const std::string beam_type = options.beam == CalculixBeamElement::kB32R ? "B32R" : "B32";
   std::vector<ElementBlock> members;
-  for (std::size_t k = 0; k < vehicle.wing.members.size(); ++k)
-    members.push_back({beam_type, setName("B", k, vehicle.wing.members[k].name), {}});
+  for (std::size_t k = 0; k < wing_structure.wing.members.size(); ++k)
+    members.push_back({beam_type, setName("B", k, wing_structure.wing.members[k].name), {}});
   for (const BeamElement& b : mesh.beams) {
     checkNode(b.nodes[0]);
     checkNode(b.nodes[1]);
@@ -172,16 +172,16 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
   std::string skin_material;
   const Material* skin_mat = nullptr;
   if (!skin.nodes.empty()) {
-    skin_mat = &requireMaterial(vehicle, vehicle.wing.skin.material, "the skin");
-    skin_material = setName("S", static_cast<std::size_t>(skin_mat - vehicle.materials.data()),
+    skin_mat = &requireMaterial(wing_structure, wing_structure.wing.skin.material, "the skin");
+    skin_material = setName("S", static_cast<std::size_t>(skin_mat - wing_structure.materials.data()),
                             skin_mat->name);
-    if (!(vehicle.wing.skin.thickness_m > 0.0))
+    if (!(wing_structure.wing.skin.thickness_m > 0.0))
       throw std::invalid_argument("calculixDeck: the skin thickness must be > 0");
   }
   for (std::size_t k = 0; k < members.size(); ++k) {
     if (members[k].nodes.empty()) continue;
-    const WingMember& m = vehicle.wing.members[k];
-    requireMaterial(vehicle, m.material, "member '" + m.name + "'");
+    const WingMember& m = wing_structure.wing.members[k];
+    requireMaterial(wing_structure, m.material, "member '" + m.name + "'");
     if (!(m.diameter_m > 0.0))
       throw std::invalid_argument("calculixDeck: member '" + m.name + "' needs a diameter > 0");
   }
@@ -192,7 +192,7 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
 
   std::ostringstream out;
   out << "*HEADING\n"
-      << (options.heading.empty() ? "Ornithopter wing " + vehicle.name : options.heading) << "\n";
+      << (options.heading.empty() ? "Ornithopter wing " + wing_structure.vehicle_name : options.heading) << "\n";
   out << "** Written by ornithopter (core/structure/calculix_deck.cpp), structure.md section 6.\n"
       << "** Units: N, mm, t, s (E in MPa, density in t/mm^3); frequencies in Hz.\n"
       << "** Frame W: x forward (leading edge at x = 0), y outboard, z = x cross y.\n"
@@ -226,7 +226,7 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
         << "*DENSITY\n"
         << real(skin_mat->density_kgpm3 * kTpmm3PerKgpm3) << "\n"
         << "*SHELL SECTION, ELSET=SKIN, MATERIAL=" << skin_material << "\n"
-        << real(vehicle.wing.skin.thickness_m * kMmPerM) << "\n";
+        << real(wing_structure.wing.skin.thickness_m * kMmPerM) << "\n";
 
   // Members. CalculiX joins beams and shells that share a node by a rigid "knot", which also
   // freezes the cross-section of the expanded rod and so locks its Poisson contraction: the rod
@@ -237,8 +237,8 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
   // G J of the rod exactly.
   for (std::size_t k = 0; k < members.size(); ++k) {
     if (members[k].nodes.empty()) continue;
-    const WingMember& m = vehicle.wing.members[k];
-    const Material& mat = requireMaterial(vehicle, m.material, "member '" + m.name + "'");
+    const WingMember& m = wing_structure.wing.members[k];
+    const Material& mat = requireMaterial(wing_structure, m.material, "member '" + m.name + "'");
     const std::string name = members[k].elset;  // B<k>_<NAME>, also used for material/orientation
     const double e = mat.youngs_modulus_pa * kMpaPerPa;
     const double g = e / (2.0 * (1.0 + mat.poisson_ratio));
@@ -261,7 +261,7 @@ std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
         << real(g) << "\n"
         << "*DENSITY\n"
         << real(mat.density_kgpm3 * kTpmm3PerKgpm3) << "\n";
-    const double d_mm = vehicle.wing.memberDiameter(m) * kMmPerM;
+    const double d_mm = wing_structure.wing.memberDiameter(m) * kMmPerM;
     // Solid circular rod: both "thicknesses" are the diameter; local 1-direction = the wing
     // normal z_W (never parallel to an in-plane member), the same on every element of a member.
     out << "*BEAM SECTION, ELSET=" << name << ", MATERIAL=M" << name << ", SECTION=CIRC, "

@@ -16,7 +16,7 @@
 
 #include <string>
 
-#include "core/model/vehicle_model.hpp"
+#include "core/structure/wing_structure.hpp"
 #include "core/structure/wing_mesh.hpp"
 
 namespace orni::structure {
@@ -53,7 +53,7 @@ struct CalculixDeckStats {
 /// member index out of range, a node index out of range or a mode count outside [1, 10000].
 /// P2 is clamped (DOF 1-6); P3 (when the mesh has one) has DOF 1-3 and the cross-axis rotation
 /// fixed (structure.md 2.1), as wingBoundaryDofs does.
-std::string calculixDeck(const VehicleModel& vehicle, const WingMesh& mesh,
+std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& mesh,
                          const CalculixDeckOptions& options, CalculixDeckStats* stats = nullptr);
 
 }  // namespace orni::structure

@@ -13,9 +13,9 @@ namespace {
 
 using Triplet = Eigen::Triplet<double, int>;
 
-const Material& requireMaterial(const VehicleModel& vehicle, const std::string& name,
+const Material& requireMaterial(const WingStructure& wing_structure, const std::string& name,
                                 const char* what) {
-  const Material* m = vehicle.findMaterial(name);
+  const Material* m = wing_structure.findMaterial(name);
   if (m == nullptr)
     throw std::invalid_argument(std::string("wing FE model: ") + what + " material '" + name +
                                 "' not found in [materials]");
@@ -24,23 +24,23 @@ const Material& requireMaterial(const VehicleModel& vehicle, const std::string& 
 
 }  // namespace
 
-std::vector<BeamProperties> memberBeamProperties(const VehicleModel& vehicle) {
+std::vector<BeamProperties> memberBeamProperties(const WingStructure& wing_structure) {
   std::vector<BeamProperties> props;
-  props.reserve(vehicle.wing.members.size());
-  for (const WingMember& member : vehicle.wing.members) {
-    const Material& mat = requireMaterial(vehicle, member.material, "member");
-    props.push_back(makeBeamProperties(solidRodSection(vehicle.wing.memberDiameter(member)), mat.youngs_modulus_pa,
+  props.reserve(wing_structure.wing.members.size());
+  for (const WingMember& member : wing_structure.wing.members) {
+    const Material& mat = requireMaterial(wing_structure, member.material, "member");
+    props.push_back(makeBeamProperties(solidRodSection(wing_structure.wing.memberDiameter(member)), mat.youngs_modulus_pa,
                                        mat.poisson_ratio, mat.density_kgpm3));
   }
   return props;
 }
 
-ShellProperties skinShellProperties(const VehicleModel& vehicle) {
-  const WingSkin& skin = vehicle.wing.skin;
+ShellProperties skinShellProperties(const WingStructure& wing_structure) {
+  const WingSkin& skin = wing_structure.wing.skin;
   if (!(skin.thickness_m > 0.0))
     throw std::invalid_argument("wing FE model: expected skin thickness > 0, got " +
                                 std::to_string(skin.thickness_m));
-  const Material& mat = requireMaterial(vehicle, skin.material, "skin");
+  const Material& mat = requireMaterial(wing_structure, skin.material, "skin");
   ShellProperties p;
   p.thickness_m = skin.thickness_m;
   p.youngs_modulus_pa = mat.youngs_modulus_pa;
@@ -157,14 +157,14 @@ std::vector<int> wingBoundaryDofs(const WingMesh& mesh, const WingSupport& suppo
   return dofs;
 }
 
-WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
+WingFeModel assembleWingFe(const WingStructure& wing_structure, const WingMesh& mesh,
                            const FeAssemblyOptions& options) {
   const int n = mesh.nodeCount();
   WingFeModel model;
   model.node_count = n;
   model.active = dofActivityMask(mesh);  // also validates node indices
 
-  const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
+  const std::vector<BeamProperties> members = memberBeamProperties(wing_structure);
   const bool lumped = options.mass == MassLumping::kLumped;
 
   std::vector<Triplet> k_triplets, m_triplets;
@@ -184,7 +184,7 @@ WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
   }
 
   if (!mesh.triangles.empty()) {
-    const ShellProperties skin = skinShellProperties(vehicle);
+    const ShellProperties skin = skinShellProperties(wing_structure);
     for (const auto& tri : mesh.triangles) {
       const std::array<Vec3, 3> x = facetNodes(mesh, tri);
       scatter(shellStiffness(x, skin), tri, k_triplets);
@@ -201,13 +201,13 @@ WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
   return model;
 }
 
-LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mesh,
+LumpedNodalMass lumpedNodalMass(const WingStructure& wing_structure, const WingMesh& mesh,
                                 const Vec3& beam_orientation_W) {
   const int n = mesh.nodeCount();
   LumpedNodalMass out;
   out.mass_kg = Eigen::VectorXd::Zero(n);
   out.rotary_W_kgm2.assign(static_cast<std::size_t>(n), Mat3::Zero());
-  const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
+  const std::vector<BeamProperties> members = memberBeamProperties(wing_structure);
   for (const BeamElement& b : mesh.beams) {
     for (int node : b.nodes) checkNode(node, n);
     const Mat12 m = beamLumpedMass(mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[0])],
@@ -220,7 +220,7 @@ LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mes
     }
   }
   if (!mesh.triangles.empty()) {
-    const ShellProperties skin = skinShellProperties(vehicle);
+    const ShellProperties skin = skinShellProperties(wing_structure);
     for (const auto& tri : mesh.triangles) {
       for (int node : tri) checkNode(node, n);
       const Mat18 m = shellLumpedMass(facetNodes(mesh, tri), skin);

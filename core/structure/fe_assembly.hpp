@@ -1,11 +1,11 @@
-// Assembly of the wing finite-element model from (VehicleModel, WingMesh) (structure.md 1.7):
+// Assembly of the wing finite-element model from (WingStructure, WingMesh) (structure.md 1.7):
 // sparse K and M over 6 DOF per node, the DOF activity mask (structure.md 1.4) and the boundary
 // DOF set of the fixed-interface problem (structure.md 2.1).
 #pragma once
 
 #include <vector>
 
-#include "core/model/vehicle_model.hpp"
+#include "core/structure/wing_structure.hpp"
 #include "core/structure/beam_element.hpp"
 #include "core/structure/fe_types.hpp"
 #include "core/structure/shell_element.hpp"
@@ -35,15 +35,15 @@ struct WingFeModel {
 
 /// Section and material of every member (index = member), solid rods of wing.memberDiameter.
 /// Throws std::invalid_argument for a material not in [materials].
-std::vector<BeamProperties> memberBeamProperties(const VehicleModel& vehicle);
+std::vector<BeamProperties> memberBeamProperties(const WingStructure& wing_structure);
 
 /// The skin's shell properties. Throws std::invalid_argument for a missing material or a
 /// thickness <= 0.
-ShellProperties skinShellProperties(const VehicleModel& vehicle);
+ShellProperties skinShellProperties(const WingStructure& wing_structure);
 
 /// Assembles K and M by triplets. Throws std::invalid_argument for a missing material, a bad
 /// member index, a node index out of range or a non-positive skin thickness when facets exist.
-WingFeModel assembleWingFe(const VehicleModel& vehicle, const WingMesh& mesh,
+WingFeModel assembleWingFe(const WingStructure& wing_structure, const WingMesh& mesh,
                            const FeAssemblyOptions& options = {});
 
 /// Activity mask (structure.md 1.4): theta_z inactive at nodes no beam touches; all six DOF
@@ -83,7 +83,7 @@ struct LumpedNodalMass {
   Eigen::VectorXd mass_kg;
   std::vector<Mat3> rotary_W_kgm2;
 };
-LumpedNodalMass lumpedNodalMass(const VehicleModel& vehicle, const WingMesh& mesh,
+LumpedNodalMass lumpedNodalMass(const WingStructure& wing_structure, const WingMesh& mesh,
                                 const Vec3& beam_orientation_W = Vec3::UnitZ());
 
 }  // namespace orni::structure

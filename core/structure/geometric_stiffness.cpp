@@ -156,7 +156,7 @@ UnitInertialLoadSolution solveUnitInertialLoads(const WingFeModel& fe, const Dof
   return s;
 }
 
-ElementStresses recoverElementStresses(const VehicleModel& vehicle, const WingMesh& mesh,
+ElementStresses recoverElementStresses(const WingStructure& wing_structure, const WingMesh& mesh,
                                        const Eigen::MatrixXd& displacements) {
   if (displacements.rows() != kDofsPerNode * static_cast<Eigen::Index>(mesh.nodeCount()))
     throw std::invalid_argument("element stresses: displacements must have 6 rows per node");
@@ -165,7 +165,7 @@ ElementStresses recoverElementStresses(const VehicleModel& vehicle, const WingMe
   out.beam_axial_force_N.setZero(static_cast<Eigen::Index>(mesh.beams.size()), fields);
   out.skin_membrane_force_Npm.setZero(3 * static_cast<Eigen::Index>(mesh.triangles.size()),
                                       fields);
-  const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
+  const std::vector<BeamProperties> members = memberBeamProperties(wing_structure);
   for (std::size_t e = 0; e < mesh.beams.size(); ++e) {
     const BeamElement& b = mesh.beams[e];
     const Vec3& x1 = mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[0])];
@@ -180,7 +180,7 @@ ElementStresses recoverElementStresses(const VehicleModel& vehicle, const WingMe
          displacements.middleRows<3>(globalDof(b.nodes[0], kU)));
   }
   if (mesh.triangles.empty()) return out;
-  const ShellProperties skin = skinShellProperties(vehicle);
+  const ShellProperties skin = skinShellProperties(wing_structure);
   const Mat3 c_t = planeStressStiffness(skin);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const std::array<int, 3>& tri = mesh.triangles[f];
@@ -211,10 +211,10 @@ Mat18 shellMembraneGeometricStiffness(const std::array<Vec3, 3>& x_W_m,
   return k;
 }
 
-SparseMatrix assembleGeometricStiffness(const VehicleModel& vehicle, const WingMesh& mesh,
+SparseMatrix assembleGeometricStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
                                         const ElementStresses& stresses, int field,
                                         const FeAssemblyOptions& options) {
-  const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
+  const std::vector<BeamProperties> members = memberBeamProperties(wing_structure);
   std::vector<Triplet> trip;
   trip.reserve(144 * mesh.beams.size() + 36 * mesh.triangles.size());
   auto scatter = [&trip](const auto& ke, const auto& nodes) {
@@ -250,7 +250,7 @@ SparseMatrix assembleGeometricStiffness(const VehicleModel& vehicle, const WingM
   return k;
 }
 
-std::vector<Eigen::MatrixXd> projectGeometricStiffness(const VehicleModel& vehicle,
+std::vector<Eigen::MatrixXd> projectGeometricStiffness(const WingStructure& wing_structure,
                                                        const WingMesh& mesh,
                                                        const ElementStresses& stresses,
                                                        const Eigen::MatrixXd& shapes,
@@ -266,7 +266,7 @@ std::vector<Eigen::MatrixXd> projectGeometricStiffness(const VehicleModel& vehic
   // K^ as column-major vec(K^) (M^2) per field: beams sum_e N_e vec(Phi_e^T K_G,e(1) Phi_e).
   Eigen::MatrixXd vec_k = Eigen::MatrixXd::Zero(m * m, fields);
   if (!mesh.beams.empty()) {
-    const std::vector<BeamProperties> members = memberBeamProperties(vehicle);
+    const std::vector<BeamProperties> members = memberBeamProperties(wing_structure);
     Eigen::MatrixXd per_element(m * m, static_cast<Eigen::Index>(mesh.beams.size()));
     Eigen::MatrixXd w(m, m);
     for (std::size_t e = 0; e < mesh.beams.size(); ++e) {
@@ -324,7 +324,7 @@ std::vector<Eigen::MatrixXd> projectGeometricStiffness(const VehicleModel& vehic
   return out;
 }
 
-ModalGeometricStiffness modalGeometricStiffness(const VehicleModel& vehicle, const WingMesh& mesh,
+ModalGeometricStiffness modalGeometricStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
                                                 const WingFeModel& fe, const DofPartition& part,
                                                 const Eigen::MatrixXd& shapes,
                                                 const FeAssemblyOptions& options) {
@@ -333,8 +333,8 @@ ModalGeometricStiffness modalGeometricStiffness(const VehicleModel& vehicle, con
   const UnitInertialLoadSolution unit = solveUnitInertialLoads(
       fe, part, mesh.nodes_W_m, mesh.nodes_W_m[static_cast<std::size_t>(mesh.p2_node)]);
   const ElementStresses stresses =
-      recoverElementStresses(vehicle, mesh, unit.displacements);
-  std::vector<Eigen::MatrixXd> k = projectGeometricStiffness(vehicle, mesh, stresses, shapes, options);
+      recoverElementStresses(wing_structure, mesh, unit.displacements);
+  std::vector<Eigen::MatrixXd> k = projectGeometricStiffness(wing_structure, mesh, stresses, shapes, options);
   ModalGeometricStiffness out;
   for (int i = 0; i < kInertialLoadCount; ++i)
     out.per_load[static_cast<std::size_t>(i)] = std::move(k[static_cast<std::size_t>(i)]);

@@ -22,7 +22,7 @@
 #include <array>
 #include <vector>
 
-#include "core/model/vehicle_model.hpp"
+#include "core/structure/wing_structure.hpp"
 #include "core/structure/dof_partition.hpp"
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/fe_types.hpp"
@@ -89,7 +89,7 @@ struct ElementStresses {
 };
 
 /// Recovers beam axial forces and skin membrane forces from displacement fields (6n x fields).
-ElementStresses recoverElementStresses(const VehicleModel& vehicle, const WingMesh& mesh,
+ElementStresses recoverElementStresses(const WingStructure& wing_structure, const WingMesh& mesh,
                                        const Eigen::MatrixXd& displacements);
 
 /// Membrane-stress plate geometric stiffness of a facet (18 x 18, W components) for the membrane
@@ -100,7 +100,7 @@ Mat18 shellMembraneGeometricStiffness(const std::array<Vec3, 3>& x_W_m,
 
 /// Global geometric stiffness (6n x 6n, full symmetric) of one stress state: column `field` of
 /// `stresses`. The reference assembly (tests); the modal wing uses the projected form below.
-SparseMatrix assembleGeometricStiffness(const VehicleModel& vehicle, const WingMesh& mesh,
+SparseMatrix assembleGeometricStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
                                         const ElementStresses& stresses, int field,
                                         const FeAssemblyOptions& options = {});
 
@@ -117,14 +117,14 @@ struct ModalGeometricStiffness {
 /// Projects the geometric stiffness of every column of `stresses` on `shapes` (6n x M) without
 /// assembling it: per beam element Phi_e^T K_G,e(N = 1) Phi_e weighted by N, per facet the modal
 /// gradients of the normal displacement weighted by the membrane forces.
-std::vector<Eigen::MatrixXd> projectGeometricStiffness(const VehicleModel& vehicle,
+std::vector<Eigen::MatrixXd> projectGeometricStiffness(const WingStructure& wing_structure,
                                                        const WingMesh& mesh,
                                                        const ElementStresses& stresses,
                                                        const Eigen::MatrixXd& shapes,
                                                        const FeAssemblyOptions& options = {});
 
 /// The whole chain: unit loads, static solutions, stresses, projection on `shapes` (6n x M).
-ModalGeometricStiffness modalGeometricStiffness(const VehicleModel& vehicle, const WingMesh& mesh,
+ModalGeometricStiffness modalGeometricStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
                                                 const WingFeModel& fe, const DofPartition& part,
                                                 const Eigen::MatrixXd& shapes,
                                                 const FeAssemblyOptions& options = {});

@@ -70,7 +70,16 @@ Eigen::VectorXd ModalWing::dampingDiagonal() const {
   return 2.0 * damping_ratios.cwiseProduct(kTwoPi * frequencies_hz);
 }
 
-ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
+ModalWingOptions modalWingOptionsOf(const WingFeSettings& fe) {
+  ModalWingOptions options;
+  options.support = WingSupport::of(fe);
+  options.selection.max_modes = fe.mode_count;
+  options.selection.cutoff_hz = fe.cutoff_hz;
+  options.damping_ratio = fe.damping_ratio;
+  return options;
+}
+
+ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& mesh,
                          const ModalWingOptions& options) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("buildModalWing: " + why);
@@ -79,7 +88,7 @@ ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
 
   FeAssemblyOptions fe_options;
   fe_options.mass = options.mass;
-  const WingFeModel fe = assembleWingFe(vehicle, mesh, fe_options);
+  const WingFeModel fe = assembleWingFe(wing_structure, mesh, fe_options);
   const DofPartition part = makeDofPartition(
       fe.active, wingBoundaryDofs(mesh, options.support), options.free_boundary_dofs);
   if (part.interior.empty()) throw std::invalid_argument("buildModalWing: no interior DOF");
@@ -120,13 +129,13 @@ ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
     w.phi_W[static_cast<std::size_t>(p)] = w.mode_shapes.middleRows<3>(globalDof(p, kU));
     w.psi_W[static_cast<std::size_t>(p)] = w.mode_shapes.middleRows<3>(globalDof(p, kThetaX));
   }
-  const LumpedNodalMass lumped = lumpedNodalMass(vehicle, mesh, fe_options.beam_orientation_W);
+  const LumpedNodalMass lumped = lumpedNodalMass(wing_structure, mesh, fe_options.beam_orientation_W);
   w.nodal_mass_kg = lumped.mass_kg;
   w.nodal_rotary_W_kgm2 = lumped.rotary_W_kgm2;
   w.invariants = invariantsOperatorForm(fe.mass, w.mode_shapes, mesh.nodes_W_m, p2);
   if (options.geometric_stiffness)
     w.geometric_stiffness =
-        modalGeometricStiffness(vehicle, mesh, fe, part, w.mode_shapes, fe_options);
+        modalGeometricStiffness(wing_structure, mesh, fe, part, w.mode_shapes, fe_options);
   w.member_mass_kg = fe.member_mass_kg;
   w.skin_mass_kg = fe.skin_mass_kg;
   w.wing_mass_kg = fe.totalMass_kg();

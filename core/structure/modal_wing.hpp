@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/model/vehicle_model.hpp"
+#include "core/structure/wing_structure.hpp"
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/inertia_invariants.hpp"
@@ -38,6 +38,10 @@ struct ModalWingOptions {
   bool IsValid(std::string* why) const;
 };
 
+/// The options a vehicle's wing.fe settings ask for (support, mode count, cut-off, damping; the
+/// rest at their defaults): one mapping, so `modes` analyses the wing a simulation flies.
+ModalWingOptions modalWingOptionsOf(const WingFeSettings& fe);
+
 struct ModalWing {
   WingMesh mesh;                          ///< the FE mesh (nodes, strips, P2, P3)
   Eigen::VectorXd frequencies_hz;         ///< f_k, ascending (M)
@@ -65,7 +69,7 @@ struct ModalWing {
 /// FE assembly, fixed-interface (or Craig-Bampton) modes, selection, invariants. The mesh must
 /// have p2_node set. Throws std::invalid_argument for bad input and std::runtime_error when the
 /// eigen-solution fails.
-ModalWing buildModalWing(const VehicleModel& vehicle, const WingMesh& mesh,
+ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& mesh,
                          const ModalWingOptions& options = {});
 
 }  // namespace orni::structure

@@ -292,8 +292,8 @@ void zipper(const std::vector<Eigen::Vector3d>& p, const std::vector<int>& lower
 
 }  // namespace
 
-WingMesh buildWingMesh(const VehicleModel& vehicle, double element_size_m) {
-  const WingModel& wing = vehicle.wing;
+WingMesh buildWingMesh(const WingStructure& wing_structure, double element_size_m) {
+  const WingModel& wing = wing_structure.wing;
   const double h = element_size_m;
   validateWing(wing, h);
   const double s = wing.semispan_m;

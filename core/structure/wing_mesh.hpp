@@ -8,7 +8,7 @@
 
 #include <Eigen/Core>
 
-#include "core/model/vehicle_model.hpp"
+#include "core/structure/wing_structure.hpp"
 
 namespace orni::structure {
 
@@ -40,6 +40,6 @@ struct WingMesh {
 
 /// Station-sweep mesher (structure.md 1.6). `element_size_m` is the target edge length h (> 0).
 /// Throws std::invalid_argument on a geometry it cannot mesh (e.g. crossing members).
-WingMesh buildWingMesh(const VehicleModel& vehicle, double element_size_m);
+WingMesh buildWingMesh(const WingStructure& wing_structure, double element_size_m);
 
 }  // namespace orni::structure

@@ -146,7 +146,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   if (!grid.IsValid(&why)) throw std::invalid_argument("aero map grid: " + why);
   if (!options.IsValid(&why)) throw std::invalid_argument("aero map options: " + why);
 
-  // Built once, before the threads start (the flexible wing's modes come through the cache), and
+  // Built once, before the threads start (one modal build for a flexible wing), and
   // shared read-only by every point.
   const FlightCoreModel model(study.aeromap.wing_only ? study.vehicle.mainWingAlone()
                                                       : study.vehicle);

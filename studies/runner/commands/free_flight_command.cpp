@@ -168,9 +168,10 @@ std::string phaseFigure(const Study& study, double t_from, const std::string& sk
 }  // namespace
 
 int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
-                       const JsonObject* trim_point, const Study* as_given) {
+                       const JsonObject* trim_point, const Study* as_given,
+                       ModalWingCache* modal_wings) {
   const auto t0 = std::chrono::steady_clock::now();
-  const FlightCoreModel model(study.vehicle);
+  const FlightCoreModel model(study.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
   std::optional<FreeFlightFiles> files(std::in_place, out_dir, study.history_every);
   const FreeFlightSummary s = simulateFree(model, study.point, study.simulate, nullptr, &*files);
   const double wall_s =

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "core/dynamics/modal_wing_cache.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/json_writer.hpp"
 
@@ -17,7 +18,9 @@ namespace orni::studies {
 /// trim ([simulate] at_trim). `as_given` (may be null): the study as the user gave it, written as
 /// study.resolved.toml (with at_trim, `study` holds the solved trim point, `as_given` the initial
 /// guess, so that the resolved study solves the same trim again: a fixed point, the same bytes).
+/// `modal_wings` (may be null): where a flexible wing's modes come from (the trim's).
 int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
-                       const JsonObject* trim_point = nullptr, const Study* as_given = nullptr);
+                       const JsonObject* trim_point = nullptr, const Study* as_given = nullptr,
+                       ModalWingCache* modal_wings = nullptr);
 
 }  // namespace orni::studies

@@ -312,11 +312,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   }
   const double mesh_s = seconds(t0);
 
-  structure::ModalWingOptions options;
-  options.support = structure::WingSupport::of(fe);
-  options.selection.max_modes = fe.mode_count;
-  options.selection.cutoff_hz = fe.cutoff_hz;
-  options.damping_ratio = fe.damping_ratio;
+  const structure::ModalWingOptions options = structure::modalWingOptionsOf(fe);
 
   fs::create_directories(out_dir);
   Study resolved = study;

@@ -190,7 +190,8 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
   job.columns = columns;
   job.threads = run.threads;
   job.progress = run.progress;
-  job.compute = [&](std::size_t i) { return runSensitivityPoint(s.points[i], s); };
+  ModalWingCache modal_wings;  // the points share the base's wing unless they change it
+  job.compute = [&](std::size_t i) { return runSensitivityPoint(s.points[i], s, &modal_wings); };
   job.on_point = run.on_point;
   std::optional<JournaledPoints> done = runJournaledPoints(job);
   if (!done) return 0;  // a worker rank of a distributed run

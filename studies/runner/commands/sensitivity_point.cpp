@@ -66,10 +66,11 @@ void worsen(SweepPointResult& r, const std::string& status) {
   if (severity(status) > severity(r.status)) r.status = status;
 }
 
-SweepPointResult runPoint(const Study& point, const SensitivitySettings& settings) {
+SweepPointResult runPoint(const Study& point, const SensitivitySettings& settings,
+                          ModalWingCache* modal_wings) {
   SweepPointResult r;
   r.cells.assign(kCellCount, std::string());
-  const FlightCoreModel model(point.vehicle);
+  const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
 
   // The trim (its free-flight check is the free flight below).
   TrimOptions trim_options = point.trim;
@@ -171,11 +172,12 @@ const std::vector<SensitivityColumn>& sensitivityResultColumns() {
   return c;
 }
 
-SweepPointResult runSensitivityPoint(const Study& point, const SensitivitySettings& settings) {
+SweepPointResult runSensitivityPoint(const Study& point, const SensitivitySettings& settings,
+                                     ModalWingCache* modal_wings) {
   static_assert(kCellCount == 20, "one cell per column of sensitivityResultColumns");
   SweepPointResult r;
   try {
-    r = runPoint(point, settings);
+    r = runPoint(point, settings, modal_wings);
   } catch (const std::exception& e) {
     r = SweepPointResult();
     r.status = "failed";

@@ -51,7 +51,9 @@ const std::vector<SensitivityColumn>& sensitivityResultColumns();
 /// Runs one point (a study of kind trim) with the free-flight settings of `settings` and tabulates
 /// it in the columns of sensitivityResultColumns (a row: status, cells, message; the row type of
 /// sweeps, journaled with encodeSweepPoint). Exceptions become status "failed" with the reason.
-/// Thread-safe: it builds its own FlightCoreModel and workspaces.
-SweepPointResult runSensitivityPoint(const Study& point, const SensitivitySettings& settings);
+/// Thread-safe: it builds its own FlightCoreModel and workspaces; flexible wings come from
+/// `modal_wings` (thread-safe; null: built for the point alone).
+SweepPointResult runSensitivityPoint(const Study& point, const SensitivitySettings& settings,
+                                     ModalWingCache* modal_wings = nullptr);
 
 }  // namespace orni::studies

@@ -74,11 +74,12 @@ struct SimulationTrim {
 
 // The trim a simulation flies at ([simulate] at_trim): Eq. (4) refined in free flight at the
 // study's frequency, from the study's point as the initial guess (trim/trim_solver.hpp).
-SimulationTrim trimForSimulation(const Study& study) {
+SimulationTrim trimForSimulation(const Study& study, ModalWingCache* modal_wings) {
   TrimOptions options = defaultTrimOptions(study.vehicle);
   options.initial = study.point;
   options.verify_free_flight = false;  // the simulation is the check
-  const TrimSummary t = solveTrim(FlightCoreModel(study.vehicle), options);
+  const TrimSummary t = solveTrim(
+      FlightCoreModel(study.vehicle, FlightCoreModel::Checks::kRequired, modal_wings), options);
   SimulationTrim out;
   out.converged = t.converged;
   out.point = t.solution;
@@ -249,8 +250,9 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   // [simulate] at_trim: solve the trim first; a vehicle that does not trim is a reported outcome.
   Study study = given;
   JsonObject trim_point;
+  ModalWingCache modal_wings;  // the trim's wing is the simulation's
   if (study.at_trim) {
-    const SimulationTrim t = trimForSimulation(study);
+    const SimulationTrim t = trimForSimulation(study, &modal_wings);
     trim_point = t.json;
     if (!t.converged) {
       JsonObject summary;
@@ -275,9 +277,11 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   }
 
   if (study.simulate.mode == FlightMode::kFree)
-    return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr, &given);
+    return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr, &given,
+                              &modal_wings);
 
-  const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle);
+  const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle,
+                              FlightCoreModel::Checks::kRequired, &modal_wings);
   TimeHistory history;  // the last cycle (the analyses below); every cycle streams to `files`
   SimulationOptions opts = study.simulate;
   opts.record_history = true;

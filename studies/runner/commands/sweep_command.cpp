@@ -207,7 +207,8 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   job.columns = columns.size();
   job.threads = run.threads;
   job.progress = run.progress;
-  job.compute = [&](std::size_t i) { return runSweepPoint(s.points[i], s.run); };
+  ModalWingCache modal_wings;  // the points share one wing unless the axes change it
+  job.compute = [&](std::size_t i) { return runSweepPoint(s.points[i], s.run, &modal_wings); };
   job.on_point = run.on_point;
   std::optional<JournaledPoints> done = runJournaledPoints(job);
   if (!done) return 0;  // a worker rank of a distributed run

@@ -93,8 +93,8 @@ void appendFreeFlightCells(const FreeFlightVerification& f, std::vector<std::str
     cells->push_back(std::move(c));
 }
 
-SweepPointResult trimPoint(const Study& point) {
-  const FlightCoreModel model(point.vehicle);
+SweepPointResult trimPoint(const Study& point, ModalWingCache* modal_wings) {
+  const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
   const TrimSummary s = solveTrim(model, point.trim);
   SweepPointResult r;
   r.status = toString(s.status);
@@ -120,8 +120,8 @@ SweepPointResult trimPoint(const Study& point) {
   return r;
 }
 
-SweepPointResult periodicTrimPoint(const Study& point) {
-  const FlightCoreModel model(point.vehicle);
+SweepPointResult periodicTrimPoint(const Study& point, ModalWingCache* modal_wings) {
+  const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
   const PeriodicTrimSummary s = solvePeriodicTrim(model, point.trim);
   SweepPointResult r;
   r.status = toString(s.status);
@@ -150,11 +150,11 @@ SweepPointResult periodicTrimPoint(const Study& point) {
   return r;
 }
 
-SweepPointResult tetheredPoint(const Study& point) {
+SweepPointResult tetheredPoint(const Study& point, ModalWingCache* modal_wings) {
   // The options and history of `ornithopter simulate` (simulate_command.cpp): the sampled history
   // sets the integrator's output times, so the means are bit-identical to a direct run's (the
   // history keeps only the last cycle).
-  const FlightCoreModel model(point.vehicle);
+  const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
   SimulationOptions opts = point.simulate;
   opts.record_history = true;
   TimeHistory history;
@@ -175,9 +175,9 @@ SweepPointResult tetheredPoint(const Study& point) {
   return r;
 }
 
-SweepPointResult freePoint(const Study& point) {
+SweepPointResult freePoint(const Study& point, ModalWingCache* modal_wings) {
   // As `ornithopter simulate --mode free` (free_flight_command.cpp).
-  const FlightCoreModel model(point.vehicle);
+  const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
   const FreeFlightSummary s = simulateFree(model, point.point, point.simulate, nullptr);
   SweepPointResult r;
   r.status = toString(s.status);
@@ -210,17 +210,17 @@ std::vector<SweepColumn> sweepResultColumns(const Study& sweep) {
   return columnsOf(sweep.sweep.run, sweep.simulate.mode, sweep.trim.method);
 }
 
-SweepPointResult runSweepPoint(const Study& point, StudyKind run) {
+SweepPointResult runSweepPoint(const Study& point, StudyKind run, ModalWingCache* modal_wings) {
   SweepPointResult r;
   try {
     if (run == StudyKind::kTrim && point.trim.method == TrimMethod::kPeriodic)
-      r = periodicTrimPoint(point);
+      r = periodicTrimPoint(point, modal_wings);
     else if (run == StudyKind::kTrim)
-      r = trimPoint(point);
+      r = trimPoint(point, modal_wings);
     else if (point.simulate.mode == FlightMode::kFree)
-      r = freePoint(point);
+      r = freePoint(point, modal_wings);
     else
-      r = tetheredPoint(point);
+      r = tetheredPoint(point, modal_wings);
   } catch (const std::exception& e) {
     r = SweepPointResult();
     r.status = "failed";

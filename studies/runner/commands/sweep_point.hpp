@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/dynamics/modal_wing_cache.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {
@@ -41,8 +42,10 @@ struct SweepPointResult {
 
 /// Runs `point` (a study of kind `run`: trim or simulate) and tabulates it in the columns of
 /// sweepResultColumns. Exceptions become status "failed" with the reason. Thread-safe: it builds
-/// its own FlightCoreModel and workspaces.
-SweepPointResult runSweepPoint(const Study& point, StudyKind run);
+/// its own FlightCoreModel and workspaces; flexible wings come from `modal_wings` (thread-safe;
+/// null: built for the point alone).
+SweepPointResult runSweepPoint(const Study& point, StudyKind run,
+                               ModalWingCache* modal_wings = nullptr);
 
 /// The journal payload of a row: status,cell,...,cell,message (cells never hold commas).
 std::string encodeSweepPoint(const SweepPointResult& result);

@@ -1,14 +1,9 @@
 // The flexible wing in the tethered mode (structure.md 3-4): it runs, reaches a periodic state,
-// differs from the rigid wing, builds its modal model once per structure (cache), and reduces to
-// the rigid wing when made very stiff.
+// differs from the rigid wing and reduces to the rigid wing when made very stiff (the modal-wing
+// cache: test_modal_wing_cache.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
-#include <fstream>
-
-#include <unistd.h>
-
 #include <Eigen/Eigenvalues>
 
 #include "core/dynamics/flexible_wing.hpp"
@@ -70,59 +65,6 @@ TEST(DynamicsFlexibleTethered, StiffWingApproachesTheRigidWing) {
   EXPECT_NEAR(flex.mean.FH_N, rigid.mean.FH_N,
               0.02 * std::abs(rigid.mean.FH_N) + SimulationOptions{}.steady_tol * q_S);
   EXPECT_NEAR(flex.mean.power_aero_W, rigid.mean.power_aero_W, 0.02 * rigid.mean.power_aero_W);
-}
-
-TEST(DynamicsFlexibleTethered, ModalWingIsBuiltOncePerStructure) {
-  const VehicleModel v = efw(StructureLevel::kFlexible);
-  const auto a = cachedModalWing(v);
-  const long builds = modalWingBuildCount();
-  const auto b = cachedModalWing(v);
-  EXPECT_EQ(a.get(), b.get());
-  EXPECT_EQ(modalWingBuildCount(), builds);
-  VehicleModel model_only = v;  // the inertial-stiffness model uses the same modal wing
-  model_only.wing.fe.inertial_stiffness = InertialStiffness::kNone;
-  EXPECT_EQ(cachedModalWing(model_only).get(), a.get());
-  VehicleModel other = v;
-  other.materials.front().youngs_modulus_pa *= 1.01;  // any structural change rebuilds
-  EXPECT_NE(cachedModalWing(other).get(), a.get());
-  EXPECT_EQ(modalWingBuildCount(), builds + 1);
-}
-
-/// Resident memory of this process (kB), from /proc/self/statm (0 where there is none).
-long residentKb() {
-  std::ifstream statm("/proc/self/statm");
-  long pages = 0, resident = 0;
-  if (!(statm >> pages >> resident)) return 0;
-  return resident * (sysconf(_SC_PAGESIZE) / 1024);
-}
-
-TEST(DynamicsFlexibleTethered, ModalWingCacheIsBoundedAndRebuildsTheSameWing) {
-  VehicleModel v = efw(StructureLevel::kFlexible);
-  v.wing.fe.element_size_m *= 2.0;  // a coarse mesh: quick builds, same cache logic
-  const auto first = cachedModalWing(v);
-  const long rss0 = residentKb();
-  // More distinct wings than the cache keeps: the size stays at the bound.
-  for (std::size_t k = 1; k <= kModalWingCacheCapacity + 3; ++k) {
-    VehicleModel w = v;
-    w.wing.member_diameter_scale = 1.0 + 0.01 * static_cast<double>(k);
-    cachedModalWing(w);
-    EXPECT_LE(modalWingCacheSize(), kModalWingCacheCapacity);
-  }
-  std::printf("modal wing cache: %zu wings, resident memory +%ld kB for %zu coarse wings\n",
-              modalWingCacheSize(), residentKb() - rss0, kModalWingCacheCapacity + 3);
-  EXPECT_EQ(modalWingCacheSize(), kModalWingCacheCapacity);
-  // The first wing was dropped (least recently used): asked again it is built again, with the
-  // same data (the build is deterministic), while the copy we hold stays valid.
-  const long builds = modalWingBuildCount();
-  const auto again = cachedModalWing(v);
-  EXPECT_EQ(modalWingBuildCount(), builds + 1);
-  EXPECT_NE(again.get(), first.get());
-  ASSERT_EQ(again->frequencies_hz.size(), first->frequencies_hz.size());
-  for (Eigen::Index k = 0; k < first->frequencies_hz.size(); ++k)
-    EXPECT_EQ(again->frequencies_hz[k], first->frequencies_hz[k]) << k;
-  // The most recent one is kept: no build.
-  EXPECT_EQ(cachedModalWing(v).get(), again.get());
-  EXPECT_EQ(modalWingBuildCount(), builds + 1);
 }
 
 }  // namespace

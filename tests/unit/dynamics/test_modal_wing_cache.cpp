@@ -1,0 +1,128 @@
+// The modal-wing cache (core/dynamics/modal_wing_cache.hpp, issue 15 item 9): owned by its user,
+// keyed by the wing's own structural inputs (nothing else of the vehicle), bounded, and a dropped
+// wing rebuilt with the same bits.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <unistd.h>
+
+#include "core/dynamics/flexible_wing.hpp"
+#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/modal_wing_cache.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
+
+namespace orni {
+namespace {
+
+VehicleModel efw() {
+  VehicleModel v =
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  v.wing.structure = StructureLevel::kFlexible;
+  v.wing.fe.element_size_m = 0.02;  // a coarse mesh: quick builds, same cache logic
+  v.wing.fe.mode_count = 6;
+  return v;
+}
+
+/// Resident memory of this process (kB), from /proc/self/statm (0 where there is none).
+long residentKb() {
+  std::ifstream statm("/proc/self/statm");
+  long pages = 0, resident = 0;
+  if (!(statm >> pages >> resident)) return 0;
+  return resident * (sysconf(_SC_PAGESIZE) / 1024);
+}
+
+TEST(ModalWingCache, BuildsOncePerStructure) {
+  ModalWingCache cache;
+  const VehicleModel v = efw();
+  const auto a = cache.get(v);
+  EXPECT_EQ(cache.buildCount(), 1);
+  EXPECT_EQ(cache.get(v).get(), a.get());
+  EXPECT_EQ(cache.buildCount(), 1);
+  // What the FE model is not built from does not change the key: the inertial-stiffness model
+  // (applied in the dynamics), the air, the tail, the body, the flapping, the operating point.
+  VehicleModel same_wing = v;
+  same_wing.wing.fe.inertial_stiffness = InertialStiffness::kNone;
+  same_wing.air.density_kgpm3 *= 0.9;
+  same_wing.tail.arm_m *= 1.1;
+  same_wing.body.mass_kg *= 1.1;
+  same_wing.flapping.hinge_x_B_m += 0.01;
+  same_wing.operating_point.speed_mps += 1.0;
+  EXPECT_EQ(modalWingKey(same_wing), modalWingKey(v));
+  EXPECT_EQ(cache.get(same_wing).get(), a.get());
+  // Any structural change rebuilds: a material, a member, the skin, the mesh, the modes.
+  int builds = 1;
+  auto expectRebuild = [&](const VehicleModel& w, const char* what) {
+    EXPECT_NE(modalWingKey(w), modalWingKey(v)) << what;
+    EXPECT_NE(cache.get(w).get(), a.get()) << what;
+    EXPECT_EQ(cache.buildCount(), ++builds) << what;
+  };
+  VehicleModel w = v;
+  w.materials.front().youngs_modulus_pa *= 1.01;
+  expectRebuild(w, "a material's Young's modulus");
+  w = v;
+  w.wing.members.front().diameter_m *= 1.01;
+  expectRebuild(w, "a member's diameter");
+  w = v;
+  w.wing.skin.thickness_m *= 1.01;
+  expectRebuild(w, "the skin's thickness");
+  w = v;
+  w.wing.fe.element_size_m *= 0.9;
+  expectRebuild(w, "the element size");
+  w = v;
+  w.wing.fe.mode_count = 4;
+  expectRebuild(w, "the mode count");
+}
+
+TEST(ModalWingCache, IsBoundedAndRebuildsTheSameWing) {
+  ModalWingCache cache(4);
+  const VehicleModel v = efw();
+  const auto first = cache.get(v);
+  const long rss0 = residentKb();
+  // More distinct wings than the cache keeps: the size stays at the bound.
+  for (std::size_t k = 1; k <= cache.capacity() + 3; ++k) {
+    VehicleModel w = v;
+    w.wing.member_diameter_scale = 1.0 + 0.01 * static_cast<double>(k);
+    cache.get(w);
+    EXPECT_LE(cache.size(), cache.capacity());
+  }
+  std::printf("modal wing cache: %zu wings, resident memory +%ld kB for %zu coarse wings\n",
+              cache.size(), residentKb() - rss0, cache.capacity() + 3);
+  EXPECT_EQ(cache.size(), cache.capacity());
+  // The first wing was dropped (least recently used): asked again it is built again, with the
+  // same data (the build is deterministic), while the copy we hold stays valid.
+  const long builds = cache.buildCount();
+  const auto again = cache.get(v);
+  EXPECT_EQ(cache.buildCount(), builds + 1);
+  EXPECT_NE(again.get(), first.get());
+  ASSERT_EQ(again->frequencies_hz.size(), first->frequencies_hz.size());
+  for (Eigen::Index k = 0; k < first->frequencies_hz.size(); ++k)
+    EXPECT_EQ(again->frequencies_hz[k], first->frequencies_hz[k]) << k;
+  EXPECT_EQ(again->mode_shapes, first->mode_shapes);
+  // The most recent one is kept: no build.
+  EXPECT_EQ(cache.get(v).get(), again.get());
+  EXPECT_EQ(cache.buildCount(), builds + 1);
+  EXPECT_THROW(ModalWingCache(0), std::invalid_argument);
+}
+
+TEST(ModalWingCache, FlightCoreModelTakesItsWingFromTheCallersCache) {
+  const VehicleModel v = efw();
+  ModalWingCache cache;
+  const FlightCoreModel a(v, FlightCoreModel::Checks::kRequired, &cache);
+  const FlightCoreModel b(v.mainWingAlone(), FlightCoreModel::Checks::kRequired, &cache);
+  ASSERT_TRUE(a.flexible && b.flexible);
+  EXPECT_EQ(a.flexible->modal.get(), b.flexible->modal.get());
+  EXPECT_EQ(cache.buildCount(), 1);
+  EXPECT_EQ(a.modal_wing_cache, &cache);
+  // Without a cache the model builds its own wing, with the same bits.
+  const FlightCoreModel alone(v);
+  ASSERT_TRUE(alone.flexible);
+  EXPECT_NE(alone.flexible->modal.get(), a.flexible->modal.get());
+  EXPECT_EQ(alone.flexible->modal->frequencies_hz, a.flexible->modal->frequencies_hz);
+  EXPECT_EQ(alone.modal_wing_cache, nullptr);
+}
+
+}  // namespace
+}  // namespace orni
