@@ -2,7 +2,8 @@
 # The layer check (issue 15): no #include in core/, trim/, optimize/, studies/ or python/ runs up
 # a layer (tests/support/layer_rules.sh: model < aero, integrate, structure, analysis < dynamics
 # < trim < optimize < studies < python). The checker is shown to catch an upward include and a
-# cycle in a scratch tree first, so that this test can fail.
+# cycle in a scratch tree first, so that this test can fail; likewise a private header of a core
+# folder (ORNI_PRIVATE_HEADERS) included from another folder.
 #   usage: bash layers.sh <ornithopter-binary (unused)> <repo-root> <scratch-dir>
 set -u
 root=${2:?}; scratch=${3:?}
@@ -24,6 +25,13 @@ check "an include from core/model up to trim fails" bash -c "! (source '$(dirnam
 rm "$t/core/model/up.hpp"
 echo '#include "core/dynamics/c.hpp"' > "$t/core/analysis/cycle.hpp"
 check "an analysis -> dynamics cycle fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
+rm "$t/core/analysis/cycle.hpp"
+mkdir -p "$t/core/integrate"
+echo '#include <vector>' > "$t/core/integrate/callback_guard.hpp"
+echo '#include "core/integrate/callback_guard.hpp"' > "$t/core/integrate/e.cpp"
+check "a private header included in its own folder passes" check_layers "$t"
+echo '#include "core/integrate/callback_guard.hpp"' > "$t/core/dynamics/f.cpp"
+check "a private header included from another folder fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
 
 # The repository.
 report=$(check_layers "$root")
