@@ -152,47 +152,100 @@ void initialAeroStates(const FlightCoreModel& model, const BodyMotion& body,
   }
 }
 
-void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const BodyMotion& body,
-                   const ControlInput& control, double t_s, const double* aero_states,
-                   double* aero_state_derivatives, LoadSample* out) {
+namespace {
+
+// M11 skin friction per strip (aero-mst.md M11): it depends on the flight speed U only, so it is
+// cached per speed.
+void updateFrictionCache(const FlightCoreModel& model, FlightCoreData& data, double flight_speed) {
+  if (flight_speed == data.friction_speed_mps) return;
+  data.friction_speed_mps = flight_speed;
+  for (std::size_t j = 0; j < model.strips.size(); ++j) {
+    data.friction_cd[j] =
+        aero::frictionCoefficient(flight_speed * model.strip_geometry[j].chord_m /
+                                  model.vehicle.air.kinematic_viscosity_m2ps);
+    data.batch.friction_coefficient[static_cast<Eigen::Index>(j)] = data.friction_cd[j];
+  }
+  aero::prepareStripBatch(model.aero_context, data.batch);
+}
+
+// Rigid wing (structure level L0): every strip's leading-edge point is p_P1P2 + y e_span, so its
+// velocity and acceleration are affine in y (v = v0 + y v1, a = a0 + y a1), and the moment and
+// power sums need only sum(F) and sum(y F). This keeps the per-strip cost at the kernel.
+struct AffineStripMotion {
+  Vec3 e_span_B, e_flap_B;  // e_flap = e_x x e_span: direction of v_rel per unit phi_dot y
+  Vec3 v_rel1, a_rel1;      // motion relative to the fuselage per unit y
+  Vec3 v0, v1, a0, a1;
+};
+
+AffineStripMotion affineStripMotion(const FlightCoreModel& model, const BodyMotion& body,
+                                    const FrameAtT& fr, const FlapState& flap) {
+  AffineStripMotion m;
+  m.e_span_B = fr.R_BW.col(1);
+  m.e_flap_B = fr.R_BW.col(2);
+  const Vec3& e_span_B = m.e_span_B;
+  const Vec3 Q_B(0.0, body.Q_radps, 0.0);
+  const Vec3 Qd_B(0.0, body.Qdot_radps2, 0.0);
+  const Vec3& p2 = model.p_P1P2_B;
+  m.v_rel1 = flap.phi_dot_radps * m.e_flap_B;
+  m.a_rel1 = flap.phi_ddot_radps2 * m.e_flap_B - flap.phi_dot_radps * flap.phi_dot_radps * e_span_B;
+  m.v0 = body.v_P1_B + Q_B.cross(p2);
+  m.v1 = Q_B.cross(e_span_B) + m.v_rel1;
+  m.a0 = body.a_P1_B + Qd_B.cross(p2) + Q_B.cross(Q_B.cross(p2));
+  m.a1 = Qd_B.cross(e_span_B) + Q_B.cross(Q_B.cross(e_span_B)) + 2.0 * Q_B.cross(m.v_rel1) +
+         m.a_rel1;
+  return m;
+}
+
+// One wing's section loads summed over the strips (B components, moments about each strip's
+// leading edge), and the separated area (1 - f) c dy over the area.
+struct StripLoadSums {
+  Vec3 F = Vec3::Zero(), yF = Vec3::Zero(), M_P = Vec3::Zero();
+  double separated_area = 0.0, area = 0.0;
+};
+
+// Vectorised MST-TD over all strips (aero-mst.md; the same equations as scalarStripLoads).
+StripLoadSums batchStripLoads(const FlightCoreModel& model, FlightCoreData& data,
+                              const FrameAtT& fr, const AffineStripMotion& sm,
+                              const double* aero_states, double* aero_state_derivatives) {
+  StripLoadSums sums;
+  aero::StripBatch& b = data.batch;
+  const Eigen::ArrayXd& y = data.y_strip_m;
+  const Vec3 &v0 = sm.v0, &v1 = sm.v1, &a0 = sm.a0, &a1 = sm.a1;
+  // One frame for all strips: element 0 (evalMstTdBatchUniformFrame).
+  b.ecx[0] = fr.e_c_B.x(); b.ecy[0] = fr.e_c_B.y(); b.ecz[0] = fr.e_c_B.z();
+  b.nx[0] = fr.n_B.x(); b.ny[0] = fr.n_B.y(); b.nz[0] = fr.n_B.z();
+  b.vx = v0.x() + y * v1.x(); b.vy = v0.y() + y * v1.y(); b.vz = v0.z() + y * v1.z();
+  b.ax = a0.x() + y * a1.x(); b.ay = a0.y() + y * a1.y(); b.az = a0.z() + y * a1.z();
+  b.wx[0] = fr.omega_B.x(); b.wy[0] = fr.omega_B.y(); b.wz[0] = fr.omega_B.z();
+  b.wdx[0] = fr.alpha_B.x(); b.wdy[0] = fr.alpha_B.y(); b.wdz[0] = fr.alpha_B.z();
+  aero::evalMstTdBatchUniformFrame(model.aero_context, b, aero_states, aero_state_derivatives);
+  sums.F = Vec3(b.Fx.sum(), b.Fy.sum(), b.Fz.sum());
+  sums.yF = Vec3((y * b.Fx).sum(), (y * b.Fy).sum(), (y * b.Fz).sum());
+  sums.M_P = Vec3(b.Mx.sum(), b.My.sum(), b.Mz.sum());
+  if (!aero_state_derivatives) {  // a sample: the separated fraction, a diagnostic the
+                                  // right-hand side does not need
+    sums.area = (b.chord_m * b.width_m).sum();
+    sums.separated_area = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum();
+    Eigen::Map<Eigen::ArrayXd>(data.separation_f.data(), y.size()) = b.separation_f;
+  }
+  return sums;
+}
+
+// Strip by strip: DeLaurier 1993 (aero-mst.md 2.2, planar inputs) or the scalar MST-TD kernel.
+StripLoadSums scalarStripLoads(const FlightCoreModel& model, FlightCoreData& data,
+                               const BodyMotion& body, const ControlInput& control,
+                               const FrameAtT& fr, const AffineStripMotion& sm,
+                               const double* aero_states,
+                               double* aero_state_derivatives) {
   const VehicleModel& veh = model.vehicle;
-  const FlapState flap = flapStateAt(veh.flapping.amplitude_rad, control.freq_hz, t_s);
-  const FrameAtT fr = frameAt(model, body, flap);
-  const double flight_speed = body.v_P1_B.norm();
   const bool delaurier = veh.aero.model == AeroModelKind::kDeLaurier1993;
   const int nstate = model.aero_states_per_strip;
-
+  const double flight_speed = body.v_P1_B.norm();
   // DeLaurier's planar inputs (aero-mst.md 2.2): flapping-axis incidence theta_a relative to the
   // flight velocity, plunge direction d = e_hinge x e_span (down at zero flap).
   const double theta_a = std::atan2(body.v_P1_B.z(), body.v_P1_B.x());
   const Vec3 d_plunge_B = fr.R_BW * Vec3::UnitZ();
   const Vec3 a_pitch_B = fr.e_c_B.cross(fr.n_B);
-  if (flight_speed != data.friction_speed_mps) {  // M11 depends on U only: cache per speed
-    data.friction_speed_mps = flight_speed;
-    for (std::size_t j = 0; j < model.strips.size(); ++j) {
-      data.friction_cd[j] = aero::frictionCoefficient(
-          flight_speed * model.strip_geometry[j].chord_m / veh.air.kinematic_viscosity_m2ps);
-      data.batch.friction_coefficient[static_cast<Eigen::Index>(j)] = data.friction_cd[j];
-    }
-    aero::prepareStripBatch(model.aero_context, data.batch);
-  }
-
-  // Rigid wing (structure level L0): every strip's leading-edge point is p_P1P2 + y e_span, so
-  // its velocity and acceleration are affine in y (v = v0 + y v1, a = a0 + y a1), and the moment
-  // and power sums need only sum(F) and sum(y F). This keeps the per-strip cost at the kernel.
-  const Vec3 e_span_B = fr.R_BW.col(1);
-  const Vec3 e_flap_B = fr.R_BW.col(2);  // = e_x x e_span: direction of v_rel per unit phi_dot y
-  const Vec3 Q_B(0.0, body.Q_radps, 0.0);
-  const Vec3 Qd_B(0.0, body.Qdot_radps2, 0.0);
-  const Vec3& p2 = model.p_P1P2_B;
-  const Vec3 v_rel1 = flap.phi_dot_radps * e_flap_B;
-  const Vec3 a_rel1 = flap.phi_ddot_radps2 * e_flap_B - flap.phi_dot_radps * flap.phi_dot_radps * e_span_B;
-  const Vec3 v0 = body.v_P1_B + Q_B.cross(p2);
-  const Vec3 v1 = Q_B.cross(e_span_B) + v_rel1;
-  const Vec3 a0 = body.a_P1_B + Qd_B.cross(p2) + Q_B.cross(Q_B.cross(p2));
-  const Vec3 a1 = Qd_B.cross(e_span_B) + Q_B.cross(Q_B.cross(e_span_B)) +
-                  2.0 * Q_B.cross(v_rel1) + a_rel1;
-
   aero::SectionKinematics k;
   k.e_c = fr.e_c_B;
   k.n = fr.n_B;
@@ -208,84 +261,90 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
   pk.thetadot = fr.omega_B.dot(a_pitch_B);
   pk.thetaddot = fr.alpha_B.dot(a_pitch_B);
   pk.omega = 2.0 * kPi * control.freq_hz;
-  const double hdot1 = v_rel1.dot(d_plunge_B), hddot1 = a_rel1.dot(d_plunge_B);
+  const double hdot1 = sm.v_rel1.dot(d_plunge_B), hddot1 = sm.a_rel1.dot(d_plunge_B);
 
-  Vec3 sum_F = Vec3::Zero(), sum_yF = Vec3::Zero(), sum_M_P = Vec3::Zero();
-  double separated_area = 0.0, area = 0.0;
-  if (!delaurier && aero::batchKernelApplies(veh.aero)) {
-    // Vectorised MST-TD over all strips (same equations as the scalar loop below).
-    aero::StripBatch& b = data.batch;
-    const Eigen::ArrayXd& y = data.y_strip_m;
-    // One frame for all strips: element 0 (evalMstTdBatchUniformFrame).
-    b.ecx[0] = fr.e_c_B.x(); b.ecy[0] = fr.e_c_B.y(); b.ecz[0] = fr.e_c_B.z();
-    b.nx[0] = fr.n_B.x(); b.ny[0] = fr.n_B.y(); b.nz[0] = fr.n_B.z();
-    b.vx = v0.x() + y * v1.x(); b.vy = v0.y() + y * v1.y(); b.vz = v0.z() + y * v1.z();
-    b.ax = a0.x() + y * a1.x(); b.ay = a0.y() + y * a1.y(); b.az = a0.z() + y * a1.z();
-    b.wx[0] = fr.omega_B.x(); b.wy[0] = fr.omega_B.y(); b.wz[0] = fr.omega_B.z();
-    b.wdx[0] = fr.alpha_B.x(); b.wdy[0] = fr.alpha_B.y(); b.wdz[0] = fr.alpha_B.z();
-    aero::evalMstTdBatchUniformFrame(model.aero_context, b, aero_states, aero_state_derivatives);
-    sum_F = Vec3(b.Fx.sum(), b.Fy.sum(), b.Fz.sum());
-    sum_yF = Vec3((y * b.Fx).sum(), (y * b.Fy).sum(), (y * b.Fz).sum());
-    sum_M_P = Vec3(b.Mx.sum(), b.My.sum(), b.Mz.sum());
-    if (!aero_state_derivatives) {  // a sample: the separated fraction, a diagnostic the
-                                    // right-hand side does not need
-      area = (b.chord_m * b.width_m).sum();
-      separated_area = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum();
-      Eigen::Map<Eigen::ArrayXd>(data.separation_f.data(), y.size()) = b.separation_f;
+  StripLoadSums sums;
+  for (std::size_t j = 0; j < model.strips.size(); ++j) {
+    const aero::StripGeometry& g = model.strip_geometry[j];
+    const double y = model.strips[j].y_center_m;
+    aero::SectionLoads loads;
+    if (delaurier) {
+      pk.hdot = y * hdot1;
+      pk.hddot = y * hddot1;
+      loads = aero::evalDeLaurier1993(model.aero_context, g, pk);
+    } else {
+      k.v_P = sm.v0 + y * sm.v1;
+      k.a_P = sm.a0 + y * sm.a1;
+      k.friction_coefficient = data.friction_cd[j];
+      const std::size_t off = j * static_cast<std::size_t>(nstate);
+      loads = aero::evalMstTd(model.aero_context, g, k, aero_states + off,
+                              aero_state_derivatives ? aero_state_derivatives + off : nullptr);
     }
-  } else {
-    for (std::size_t j = 0; j < model.strips.size(); ++j) {
-      const aero::StripGeometry& g = model.strip_geometry[j];
-      const double y = model.strips[j].y_center_m;
-      aero::SectionLoads loads;
-      if (delaurier) {
-        pk.hdot = y * hdot1;
-        pk.hddot = y * hddot1;
-        loads = aero::evalDeLaurier1993(model.aero_context, g, pk);
-      } else {
-        k.v_P = v0 + y * v1;
-        k.a_P = a0 + y * a1;
-        k.friction_coefficient = data.friction_cd[j];
-        const std::size_t off = j * static_cast<std::size_t>(nstate);
-        loads = aero::evalMstTd(model.aero_context, g, k, aero_states + off,
-                                aero_state_derivatives ? aero_state_derivatives + off : nullptr);
-      }
-      Vec3 F, M_P;
-      aero::resolveSectionLoads(loads, g, fr.e_c_B, fr.n_B, &F, &M_P);
-      sum_F += F;
-      sum_yF += y * F;
-      sum_M_P += M_P;
-      const double strip_area = g.chord_m * g.width_m;
-      separated_area += (1.0 - loads.separation_f) * strip_area;
-      area += strip_area;
-      data.separation_f[j] = loads.separation_f;
-    }
+    Vec3 F, M_P;
+    aero::resolveSectionLoads(loads, g, fr.e_c_B, fr.n_B, &F, &M_P);
+    sums.F += F;
+    sums.yF += y * F;
+    sums.M_P += M_P;
+    const double strip_area = g.chord_m * g.width_m;
+    sums.separated_area += (1.0 - loads.separation_f) * strip_area;
+    sums.area += strip_area;
+    data.separation_f[j] = loads.separation_f;
   }
-  const Vec3 F_aero = sum_F;
-  const Vec3 M_aero_P1 = p2.cross(sum_F) + e_span_B.cross(sum_yF) + sum_M_P;
+  return sums;
+}
+
+// Rigid-wing inertial loads on the fuselage: -m a_cm and -(rho_cm x m a_cm + J_cm alpha +
+// omega x J_cm omega) (Newton-Euler; structure.md 3.5 with no modes), and the rate of work the
+// hinge does on the wing's kinetic energy (relative to the fuselage).
+struct InertialLoads {
+  Vec3 F = Vec3::Zero(), M_P1 = Vec3::Zero();
+  double power = 0.0;
+};
+
+InertialLoads rigidWingInertialLoads(const FlightCoreModel& model, const BodyMotion& body,
+                                     const FrameAtT& fr) {
+  InertialLoads in;
+  const RigidBodyInertia& wi = model.wing_mass.total;
+  if (!(wi.mass_kg > 0.0)) return in;
+  const Vec3 c_W = wi.centerOfMass_W_m();
+  const Vec3 c_B = fr.R_BW * c_W;
+  Vec3 rho_cm, v_cm, a_cm, v_rel_cm, a_rel_cm;
+  pointMotion(model, body, fr, c_B, &rho_cm, &v_cm, &a_cm, &v_rel_cm, &a_rel_cm);
+  const Mat3 J_cm_W = wi.inertia_P2_W_kgm2 -
+                      wi.mass_kg * (c_W.squaredNorm() * Mat3::Identity() - c_W * c_W.transpose());
+  const Mat3 J_cm_B = fr.R_BW * J_cm_W * fr.R_BW.transpose();
+  const Vec3 dH_cm = J_cm_B * fr.alpha_B + fr.omega_B.cross(J_cm_B * fr.omega_B);
+  in.F = -wi.mass_kg * a_cm;
+  in.M_P1 = -(rho_cm.cross(wi.mass_kg * a_cm) + dH_cm);
+  in.power = wi.mass_kg * a_cm.dot(v_rel_cm) + dH_cm.dot(fr.omega_rel_B);
+  return in;
+}
+
+}  // namespace
+
+void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const BodyMotion& body,
+                   const ControlInput& control, double t_s, const double* aero_states,
+                   double* aero_state_derivatives, LoadSample* out) {
+  const VehicleModel& veh = model.vehicle;
+  const FlapState flap = flapStateAt(veh.flapping.amplitude_rad, control.freq_hz, t_s);
+  const FrameAtT fr = frameAt(model, body, flap);
+  const double flight_speed = body.v_P1_B.norm();
+  updateFrictionCache(model, data, flight_speed);
+  const AffineStripMotion sm = affineStripMotion(model, body, fr, flap);
+
+  // The strips' aerodynamic loads (aero-mst.md), one wing, summed.
+  const bool batch = veh.aero.model != AeroModelKind::kDeLaurier1993 &&
+                     aero::batchKernelApplies(veh.aero);
+  const StripLoadSums sums =
+      batch ? batchStripLoads(model, data, fr, sm, aero_states, aero_state_derivatives)
+            : scalarStripLoads(model, data, body, control, fr, sm, aero_states,
+                               aero_state_derivatives);
+  const Vec3& F_aero = sums.F;
+  const Vec3 M_aero_P1 = model.p_P1P2_B.cross(sums.F) + sm.e_span_B.cross(sums.yF) + sums.M_P;
   // Power delivered to the air by the flapping motion (relative to the fuselage): the section
   // loads' power on the section's relative motion, with the sign of M19.
-  const double power_aero = -(v_rel1.dot(sum_yF) + sum_M_P.dot(fr.omega_rel_B));
-
-  // Rigid-wing inertial loads on the fuselage: -m a_cm and -(rho_cm x m a_cm + J_cm alpha +
-  // omega x J_cm omega) (Newton-Euler; structure.md 3.5 with no modes).
-  const RigidBodyInertia& wi = model.wing_mass.total;
-  Vec3 F_inertial = Vec3::Zero(), M_inertial_P1 = Vec3::Zero();
-  double power_inertial = 0.0;
-  if (wi.mass_kg > 0.0) {
-    const Vec3 c_W = wi.centerOfMass_W_m();
-    const Vec3 c_B = fr.R_BW * c_W;
-    Vec3 rho_cm, v_cm, a_cm, v_rel_cm, a_rel_cm;
-    pointMotion(model, body, fr, c_B, &rho_cm, &v_cm, &a_cm, &v_rel_cm, &a_rel_cm);
-    const Mat3 J_cm_W = wi.inertia_P2_W_kgm2 -
-                        wi.mass_kg * (c_W.squaredNorm() * Mat3::Identity() - c_W * c_W.transpose());
-    const Mat3 J_cm_B = fr.R_BW * J_cm_W * fr.R_BW.transpose();
-    const Vec3 dH_cm = J_cm_B * fr.alpha_B + fr.omega_B.cross(J_cm_B * fr.omega_B);
-    F_inertial = -wi.mass_kg * a_cm;
-    M_inertial_P1 = -(rho_cm.cross(wi.mass_kg * a_cm) + dH_cm);
-    // Rate of work the hinge does on the wing's kinetic energy (relative to the fuselage).
-    power_inertial = wi.mass_kg * a_cm.dot(v_rel_cm) + dH_cm.dot(fr.omega_rel_B);
-  }
+  const double power_aero = -(sm.v_rel1.dot(sums.yF) + sums.M_P.dot(fr.omega_rel_B));
+  const InertialLoads in = rigidWingInertialLoads(model, body, fr);
 
   // Flight-path frame in B: e_v along the velocity of P1, e_L perpendicular (up) (paper Eq. 2).
   const Vec3 e_v = flight_speed > 0.0 ? Vec3(body.v_P1_B / flight_speed) : Vec3::UnitX();
@@ -297,12 +356,12 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
   o.FV_wing_aero_N = 2.0 * F_aero.dot(e_L);
   o.FH_wing_aero_N = 2.0 * F_aero.dot(e_v);
   o.M_wing_aero_Nm = 2.0 * M_aero_P1.y();
-  o.FV_wing_inertial_N = 2.0 * F_inertial.dot(e_L);
-  o.FH_wing_inertial_N = 2.0 * F_inertial.dot(e_v);
-  o.M_wing_inertial_Nm = 2.0 * M_inertial_P1.y();
+  o.FV_wing_inertial_N = 2.0 * in.F.dot(e_L);
+  o.FH_wing_inertial_N = 2.0 * in.F.dot(e_v);
+  o.M_wing_inertial_Nm = 2.0 * in.M_P1.y();
   o.power_aero_W = 2.0 * power_aero;
-  o.power_hinge_W = 2.0 * (power_aero + power_inertial);
-  o.separated_fraction = area > 0.0 ? separated_area / area : 0.0;
+  o.power_hinge_W = 2.0 * (power_aero + in.power);
+  o.separated_fraction = sums.area > 0.0 ? sums.separated_area / sums.area : 0.0;
 
   addTailAndTotals(model, body, control, &o);
 }
