@@ -5,6 +5,7 @@
 
 #include "core/aero/tail.hpp"
 #include "core/dynamics/flexible_wing.hpp"
+#include "core/dynamics/flight_path_frame.hpp"
 #include "core/dynamics/modal_wing_cache.hpp"
 #include "core/model/vehicle_validation.hpp"
 
@@ -346,19 +347,10 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
   const double power_aero = -(sm.v_rel1.dot(sums.yF) + sums.M_P.dot(fr.omega_rel_B));
   const InertialLoads in = rigidWingInertialLoads(model, body, fr);
 
-  // Flight-path frame in B: e_v along the velocity of P1, e_L perpendicular (up) (paper Eq. 2).
-  const Vec3 e_v = flight_speed > 0.0 ? Vec3(body.v_P1_B / flight_speed) : Vec3::UnitX();
-  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
-
-  // Both wings: symmetric pair doubles x/z forces and the y moment; lateral parts cancel.
+  // Both wings in the flight-path frame (paper Eq. 2).
   LoadSample& o = *out;
   o = LoadSample{};
-  o.FV_wing_aero_N = 2.0 * F_aero.dot(e_L);
-  o.FH_wing_aero_N = 2.0 * F_aero.dot(e_v);
-  o.M_wing_aero_Nm = 2.0 * M_aero_P1.y();
-  o.FV_wing_inertial_N = 2.0 * in.F.dot(e_L);
-  o.FH_wing_inertial_N = 2.0 * in.F.dot(e_v);
-  o.M_wing_inertial_Nm = 2.0 * in.M_P1.y();
+  setWingPairLoads(flightPathFrame(body.v_P1_B), F_aero, M_aero_P1, in.F, in.M_P1, &o);
   o.power_aero_W = 2.0 * power_aero;
   o.power_hinge_W = 2.0 * (power_aero + in.power);
   o.separated_fraction = sums.area > 0.0 ? sums.separated_area / sums.area : 0.0;
@@ -378,9 +370,9 @@ void addTailAndTotals(const FlightCoreModel& model, const BodyMotion& body,
   LoadSample& o = *out;
   const VehicleModel& veh = model.vehicle;
   if (veh.tail.present) {
-    const double speed = body.v_P1_B.norm();
-    const Vec3 e_v = speed > 0.0 ? Vec3(body.v_P1_B / speed) : Vec3::UnitX();
-    const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+    const FlightPathFrame path = flightPathFrame(body.v_P1_B);
+    const Vec3& e_v = path.e_v_B;
+    const Vec3& e_L = path.e_L_B;
     const double theta_a = std::atan2(body.v_P1_B.z(), body.v_P1_B.x());
     const Vec3 Q_B(0.0, body.Q_radps, 0.0);
     aero::TailFlow flow;

@@ -7,6 +7,7 @@
 
 #include "core/analysis/harmonics.hpp"
 #include "core/dynamics/flapping.hpp"
+#include "core/dynamics/flight_path_frame.hpp"
 #include "core/dynamics/history_window.hpp"
 #include "core/integrate/ode_integrator.hpp"
 #include "core/model/cancellation.hpp"
@@ -84,8 +85,9 @@ std::string startFromPeriodicState(const FlightCoreModel& model, const Operating
   const double dt = 1.0 / (point.freq_hz * static_cast<double>(spc));
   const double m = model.vehicle.body.mass_kg, I = model.vehicle.body.pitch_inertia_kgm2;
   const BodyMotion bm = tetheredBodyMotion(point.speed_mps, point.theta_rad);
-  const Vec3 e_v = bm.v_P1_B.normalized();
-  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+  const FlightPathFrame path = flightPathFrame(bm.v_P1_B);
+  const Vec3& e_v = path.e_v_B;
+  const Vec3& e_L = path.e_L_B;
   // Accelerations a_k (k = 0..spc) with their cycle mean removed, integrated by trapezoids, the
   // result made zero-mean: the periodic velocity; once more: the periodic displacement.
   auto periodic = [&](const std::vector<double>& a) {
