@@ -372,7 +372,7 @@ int runCommandLine(int argc, char** argv) {
       Study study = aeromapStudyFromVehicle(am_vehicle, std::move(speed), std::move(freq),
                                             std::move(theta), std::move(tail));
       if (am_cycles)
-        study.aeromap.options.cycles =
+        study.aeromap().options.cycles =
             static_cast<int>(optionValue("--cycles", "aeromap.cycles", *am_cycles));
       AeromapRunOptions opts;
       opts.threads = jobsOption(am_jobs);
