@@ -138,9 +138,9 @@ std::string briefReport(const MapCounts& map, std::size_t computed, double wall_
 int runAeromapStudy(const Study& study, const fs::path& out_dir,
                     const AeromapRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
-  const trim::AeroMapGrid grid = gridOf(study.aeromap);
+  const trim::AeroMapGrid grid = gridOf(study.aeromap());
   trim::AeroMapOptions options;
-  options.simulation = study.aeromap.options;
+  options.simulation = study.aeromap().options;
   options.threads = run.threads;
   std::string why;
   if (!grid.IsValid(&why)) throw std::invalid_argument("aero map grid: " + why);
@@ -148,7 +148,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
 
   // Built once, before the threads start (one modal build for a flexible wing), and
   // shared read-only by every point.
-  const FlightCoreModel model(study.aeromap.wing_only ? study.vehicle.mainWingAlone()
+  const FlightCoreModel model(study.aeromap().wing_only ? study.vehicle.mainWingAlone()
                                                       : study.vehicle);
   if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing
     FarmJob job;
@@ -217,11 +217,11 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   const double map_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t_map).count();
 
-  const MapCounts map = writeMapTable(out_dir / "aeromap.csv", study.aeromap, grid, journal);
+  const MapCounts map = writeMapTable(out_dir / "aeromap.csv", study.aeromap(), grid, journal);
   writeFileAtomic(out_dir / "study.resolved.toml", resolved);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const AeromapSettings& a = study.aeromap;
+  const AeromapSettings& a = study.aeromap();
   JsonObject summary;
   summary.set("kind", "aeromap")
       .set("status", runStatus(map))

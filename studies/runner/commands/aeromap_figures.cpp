@@ -41,7 +41,7 @@ std::string shownNote(const char* what, std::size_t shown, std::size_t n) {
 
 std::string aeromapFigureScript(const Study& study, int column, const std::string& what,
                                 const std::string& ylabel) {
-  const AeromapSettings& a = study.aeromap;
+  const AeromapSettings& a = study.aeromap();
   const std::size_t ns = a.speed_mps.values.size(), nf = a.freq_hz.values.size(),
                     nt = a.theta_deg.values.size(), na = a.tail_angle_deg.values.size();
   const std::vector<std::size_t> freqs = thinned(nf, kMaxPanels);

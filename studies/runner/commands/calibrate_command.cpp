@@ -13,7 +13,7 @@
 namespace orni::studies {
 
 int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) {
-  const orni::CalibrationOptions& o = study.calibrate;
+  const orni::CalibrationOptions& o = study.calibrate();
   const orni::CalibrationSummary s = orni::calibrate(study.vehicle, o);
 
   writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));

@@ -300,7 +300,7 @@ JsonObject startObject(const PeriodicTrimSummary& s) {
 
 int runContinuationStudy(const Study& study, const fs::path& out_dir, int threads) {
   const auto t0 = std::chrono::steady_clock::now();
-  TrimContinuationOptions co = study.continuation;
+  TrimContinuationOptions co = study.continuation();
   co.threads = threads;
   const FlightCoreModel model(study.vehicle);
   const std::string resolved = resolvedStudyToml(study);

@@ -4,11 +4,25 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/progress_line.hpp"
 #include "trim/point_pool.hpp"
 
 namespace orni::studies {
+
+JournaledPointsJob journaledPointsJob(const std::string& kind,
+                                      const std::filesystem::path& journal_path,
+                                      const std::string& resolved_toml, std::size_t points,
+                                      std::size_t columns) {
+  JournaledPointsJob job;
+  job.kind = kind;
+  job.journal_path = journal_path;
+  job.fingerprint = fnv1a64(versionString() + "\n" + resolved_toml);
+  job.points = points;
+  job.columns = columns;
+  return job;
+}
 
 std::optional<JournaledPoints> runJournaledPoints(const JournaledPointsJob& job) {
   if (!farmWriter()) {  // a worker rank: compute the points rank 0 hands out, write nothing

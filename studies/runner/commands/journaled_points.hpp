@@ -39,6 +39,14 @@ struct JournaledPoints {
   std::unique_ptr<PointJournal> journal;
 };
 
+/// A job of `kind` ("sweep", "sensitivity") journaled at `journal_path`, its fingerprint that of
+/// the program's version and the study's resolved text `resolved_toml`; the caller sets threads,
+/// progress, compute and on_point.
+JournaledPointsJob journaledPointsJob(const std::string& kind,
+                                      const std::filesystem::path& journal_path,
+                                      const std::string& resolved_toml, std::size_t points,
+                                      std::size_t columns);
+
 /// Runs the job. On a worker rank of a distributed run it computes the points the writer hands
 /// out and returns nothing (the writer rank has the rows).
 std::optional<JournaledPoints> runJournaledPoints(const JournaledPointsJob& job);

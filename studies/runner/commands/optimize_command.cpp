@@ -177,7 +177,7 @@ std::string convergenceFigure(const Study& study, const DesignProblem& p,
   const char* unit = orni::opt::objectiveUnit(p.options().objective);
   std::ostringstream g;
   g << "set multiplot layout 2,1 title \"" << study.name << " optimisation ("
-    << orni::opt::toString(study.optimize.optimizer.algorithm) << ", "
+    << orni::opt::toString(study.optimize().optimizer.algorithm) << ", "
     << s.starts.size() << " start(s)): objective "
     << orni::opt::toString(p.options().objective) << " per evaluation\" noenhanced font ',13'\n";
   g << "set lmargin 12\nset rmargin 30\nset tmargin 3\n"
@@ -212,7 +212,7 @@ std::string convergenceFigure(const Study& study, const DesignProblem& p,
 
 int runOptimizeStudy(const Study& study, const fs::path& out_dir, const OptimizeRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
-  const OptimizeSettings& settings = study.optimize;
+  const OptimizeSettings& settings = study.optimize();
   const DesignProblem problem(study.vehicle, settings.space, settings.problem);
   orni::opt::OptimizerOptions options = settings.optimizer;
   options.threads = run.threads;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "studies/runner/commands/journaled_points.hpp"
+#include "studies/runner/commands/point_counts.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/commands/sensitivity_figures.hpp"
@@ -70,37 +71,6 @@ CsvTable sensitivityTable(const SensitivitySettings& s, const std::vector<SweepP
   }
   t.addTextColumn("message", "-", std::move(message));
   return t;
-}
-
-struct Counts {
-  std::size_t ok = 0, not_converged = 0, diverged = 0, failed = 0;
-};
-
-Counts countRows(const std::vector<SweepPointResult>& rows) {
-  Counts n;
-  for (const SweepPointResult& r : rows) {
-    if (r.status == "ok")
-      ++n.ok;
-    else if (r.status == "not_converged")
-      ++n.not_converged;
-    else if (r.status == "diverged")
-      ++n.diverged;
-    else
-      ++n.failed;
-  }
-  return n;
-}
-
-std::string runMessage(const Counts& n, std::size_t points) {
-  char buf[300];
-  if (n.ok == points)
-    std::snprintf(buf, sizeof buf, "all %zu points ok", points);
-  else
-    std::snprintf(buf, sizeof buf,
-                  "%zu of %zu points not ok (%zu not_converged, %zu diverged, %zu failed): see the "
-                  "status and message columns of sensitivity.csv",
-                  points - n.ok, points, n.not_converged, n.diverged, n.failed);
-  return buf;
 }
 
 JsonObject parametersJson(const SensitivitySettings& s) {
@@ -169,7 +139,7 @@ JsonObject baseJson(const SweepPointResult& base) {
 int runSensitivityStudy(const Study& study, const fs::path& out_dir,
                         const SensitivityRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
-  const SensitivitySettings& s = study.sensitivity;
+  const SensitivitySettings& s = study.sensitivity();
   const std::size_t n = sensitivityPointCount(s.parameters.size());
   if (s.parameters.empty() || s.points.size() != n)
     throw std::invalid_argument("sensitivity: one study per point expected");
@@ -182,12 +152,8 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
                 << ", " << formatShortest(p.high) << "]: both ends move it the same way\n";
 
   const std::string resolved = resolvedStudyToml(study);
-  JournaledPointsJob job;
-  job.kind = "sensitivity";
-  job.journal_path = out_dir / kSensitivityJournalName;
-  job.fingerprint = fnv1a64(versionString() + "\n" + resolved);
-  job.points = n;
-  job.columns = columns;
+  JournaledPointsJob job =
+      journaledPointsJob("sensitivity", out_dir / kSensitivityJournalName, resolved, n, columns);
   job.threads = run.threads;
   job.progress = run.progress;
   ModalWingCache modal_wings;  // the points share the base's wing unless they change it
@@ -201,21 +167,17 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
   writeFileAtomic(out_dir / "sensitivity.csv", sensitivityTable(s, rows).toString());
   writeFileAtomic(out_dir / "tornado.csv", tornadoTable(study, rankings).toString());
   writeFileAtomic(out_dir / "study.resolved.toml", resolved);
-  const Counts count = countRows(rows);
+  const PointCounts count = countPoints(rows);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   JsonObject summary;
   summary.set("kind", "sensitivity")
       .set("status", count.ok == n ? "ok" : "not_converged")
-      .set("message", runMessage(count, n))
+      .set("message", pointsMessage(count, n, "sensitivity.csv"))
       .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("points", static_cast<long>(n))
-      .set("points_ok", static_cast<long>(count.ok))
-      .set("points_not_converged", static_cast<long>(count.not_converged))
-      .set("points_diverged", static_cast<long>(count.diverged))
-      .set("points_failed", static_cast<long>(count.failed))
-      .set("points_computed", static_cast<long>(done->computed))
+      .set("version", versionString());
+  setPointCounts(summary, count, n);
+  summary.set("points_computed", static_cast<long>(done->computed))
       .set("points_resumed", static_cast<long>(done->resumed))
       .set("threads", run.threads)
       .set("free_flight_cycles", s.free_flight_cycles)
@@ -242,9 +204,7 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
   }
   std::cout << study.name << ": sensitivity of " << rankings.size() << " predictions to "
             << s.parameters.size() << " parameters, " << n << " points (" << done->computed
-            << " computed): " << count.ok << " ok, " << count.not_converged << " not_converged, "
-            << count.diverged << " diverged, " << count.failed << " failed\n  -> "
-            << out_dir.string() << "\n";
+            << " computed): " << pointCountsText(count) << "\n  -> " << out_dir.string() << "\n";
   return 0;
 }
 

@@ -47,7 +47,7 @@ std::string tornadoStem(const PredictionRanking& ranking) {
 }
 
 CsvTable tornadoTable(const Study& study, const std::vector<PredictionRanking>& rankings) {
-  const std::vector<SensitivityParameter>& params = study.sensitivity.parameters;
+  const std::vector<SensitivityParameter>& params = study.sensitivity().parameters;
   const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
   std::vector<std::string> prediction, unit, prediction_index, rank, parameter, parameter_index,
       label, base, low, high, delta_low, delta_high, swing, share;
@@ -97,7 +97,7 @@ std::string tornadoFigure(const Study& study, const std::vector<PredictionRankin
   if (!any) return {};
   using C = TornadoCsvColumns;
   const SensitivityColumn& col = sensitivityResultColumns()[p.column];
-  const std::vector<SensitivityParameter>& params = study.sensitivity.parameters;
+  const std::vector<SensitivityParameter>& params = study.sensitivity().parameters;
   const std::size_t n = p.ranked.size();
   const std::size_t first = k * n, last = first + n - 1;  // data rows of this prediction
   const std::string unit = col.unit == "-" ? std::string() : " " + col.unit;
@@ -194,7 +194,7 @@ std::string overviewFigure(const Study& study, const std::vector<PredictionRanki
     for (const SensitivityEffect& e : p.ranked) any = any || e.swing_share;
   if (!any) return {};
   using C = TornadoCsvColumns;
-  const std::vector<SensitivityParameter>& params = study.sensitivity.parameters;
+  const std::vector<SensitivityParameter>& params = study.sensitivity().parameters;
   const std::size_t n = params.size();
   const std::string x = "($" + std::to_string(C::kPredictionIndex) + ")";
   const std::string y =

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -13,6 +14,7 @@
 #include <vector>
 
 #include "studies/runner/commands/journaled_points.hpp"
+#include "studies/runner/commands/point_counts.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -61,48 +63,12 @@ CsvTable sweepTable(const SweepSettings& s, const trim::SweepGrid& grid,
   return t;
 }
 
-struct Counts {
-  std::size_t ok = 0, not_converged = 0, diverged = 0, failed = 0, bounded = 0;
-};
-
-Counts countRows(const std::vector<SweepPointResult>& rows,
-                 const std::vector<SweepColumn>& columns) {
-  Counts n;
-  std::size_t bounded_col = columns.size();
-  for (std::size_t c = 0; c < columns.size(); ++c)
-    if (columns[c].name == "bounded") bounded_col = c;
-  for (const SweepPointResult& r : rows) {
-    if (r.status == "ok")
-      ++n.ok;
-    else if (r.status == "not_converged")
-      ++n.not_converged;
-    else if (r.status == "diverged")
-      ++n.diverged;
-    else
-      ++n.failed;
-    if (bounded_col < columns.size() && r.cells[bounded_col] == "1") ++n.bounded;
-  }
-  return n;
-}
-
-std::string runMessage(const Counts& n, std::size_t points) {
-  char buf[300];
-  if (n.ok == points)
-    std::snprintf(buf, sizeof buf, "all %zu points ok", points);
-  else
-    std::snprintf(buf, sizeof buf,
-                  "%zu of %zu points not ok (%zu not_converged, %zu diverged, %zu failed): see the "
-                  "status and message columns of sweep.csv",
-                  points - n.ok, points, n.not_converged, n.diverged, n.failed);
-  return buf;
-}
-
 /// Gnuplot script: one panel per plotted column with a value somewhere, the column against the
 /// first axis, one line per combination of the other axes' values. Empty when nothing to plot.
 std::string sweepFigure(const Study& study, const trim::SweepGrid& grid,
                         const std::vector<SweepColumn>& columns,
                         const std::vector<SweepPointResult>& rows) {
-  const SweepSettings& s = study.sweep;
+  const SweepSettings& s = study.sweep();
   const std::size_t n_axes = s.axes.size();
   const std::size_t n_first = grid.sizes[0];
   const std::size_t n_series = rows.size() / n_first;  // combinations of the other axes
@@ -189,7 +155,7 @@ std::string sweepFigure(const Study& study, const trim::SweepGrid& grid,
 
 int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
-  const SweepSettings& s = study.sweep;
+  const SweepSettings& s = study.sweep();
   const trim::SweepGrid grid = gridOf(s);
   std::string why;
   if (!grid.IsValid(&why)) throw std::invalid_argument("sweep grid: " + why);
@@ -199,12 +165,8 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   const std::size_t n = grid.size();
 
   const std::string resolved = resolvedStudyToml(study);
-  JournaledPointsJob job;
-  job.kind = "sweep";
-  job.journal_path = out_dir / kSweepJournalName;
-  job.fingerprint = fnv1a64(versionString() + "\n" + resolved);
-  job.points = n;
-  job.columns = columns.size();
+  JournaledPointsJob job =
+      journaledPointsJob("sweep", out_dir / kSweepJournalName, resolved, n, columns.size());
   job.threads = run.threads;
   job.progress = run.progress;
   ModalWingCache modal_wings;  // the points share one wing unless the axes change it
@@ -216,7 +178,10 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
 
   writeFileAtomic(out_dir / "sweep.csv", sweepTable(s, grid, columns, rows).toString());
   writeFileAtomic(out_dir / "study.resolved.toml", resolved);
-  const Counts count = countRows(rows, columns);
+  std::size_t bounded_column = std::numeric_limits<std::size_t>::max();
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    if (columns[c].name == "bounded") bounded_column = c;
+  const PointCounts count = countPoints(rows, bounded_column);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   JsonObject axes;
@@ -224,17 +189,13 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   JsonObject summary;
   summary.set("kind", "sweep")
       .set("status", count.ok == n ? "ok" : "not_converged")
-      .set("message", runMessage(count, n))
+      .set("message", pointsMessage(count, n, "sweep.csv"))
       .set("wall_time_s", wall_s)
       .set("version", versionString())
       .set("run", std::string(toString(s.run)));
   if (s.run == StudyKind::kSimulate)
     summary.set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered");
-  summary.set("points", static_cast<long>(n))
-      .set("points_ok", static_cast<long>(count.ok))
-      .set("points_not_converged", static_cast<long>(count.not_converged))
-      .set("points_diverged", static_cast<long>(count.diverged))
-      .set("points_failed", static_cast<long>(count.failed));
+  setPointCounts(summary, count, n);
   if (s.run == StudyKind::kTrim || study.simulate.mode == FlightMode::kFree)
     summary.set("points_bounded", static_cast<long>(count.bounded));
   summary.set("points_computed", static_cast<long>(done->computed))
@@ -254,9 +215,8 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   // from the journal and computes no point again.
   done->journal->remove();
   std::cout << study.name << ": sweep of " << toString(s.run) << ", " << n << " points ("
-            << done->computed << " computed): " << count.ok << " ok, " << count.not_converged
-            << " not_converged, " << count.diverged << " diverged, " << count.failed
-            << " failed\n  -> " << out_dir.string() << "\n";
+            << done->computed << " computed): " << pointCountsText(count) << "\n  -> "
+            << out_dir.string() << "\n";
   return 0;
 }
 

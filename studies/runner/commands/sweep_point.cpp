@@ -207,7 +207,7 @@ SweepPointResult freePoint(const Study& point, ModalWingCache* modal_wings) {
 }  // namespace
 
 std::vector<SweepColumn> sweepResultColumns(const Study& sweep) {
-  return columnsOf(sweep.sweep.run, sweep.simulate.mode, sweep.trim.method);
+  return columnsOf(sweep.sweep().run, sweep.simulate.mode, sweep.trim.method);
 }
 
 SweepPointResult runSweepPoint(const Study& point, StudyKind run, ModalWingCache* modal_wings) {

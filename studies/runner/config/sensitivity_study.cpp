@@ -236,46 +236,24 @@ Study loadSensitivityStudy(toml::table& root, const std::string& text, const fs:
   study.study_path = study_file;
   for (const ParameterInput& in : inputs) settings.parameters.push_back(in.parameter);
   settings.points = std::move(points);
-  study.sensitivity = std::move(settings);
+  study.settings = std::move(settings);
 
-  if (verify_resolved) {
-    // The contract of study.resolved.toml: it re-runs the same points.
-    const std::string resolved = resolvedStudyToml(study);
-    Study again;
-    try {
-      again = loadStudyText(resolved, study_file.parent_path() / "study.resolved.toml", false);
-    } catch (const InputError& e) {
-      throw std::runtime_error(
-          "the resolved form of this sensitivity study does not load (please report): " +
-          std::string(e.what()));
-    }
-    const std::vector<Study>& p = study.sensitivity.points;
-    if (again.sensitivity.points.size() != p.size())
-      throw std::runtime_error(
-          "the resolved form of this sensitivity study has another number of points");
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (sectionsText(again.sensitivity.points[i]) != sectionsText(p[i]))
-        throw std::runtime_error(
-            "the resolved form of this sensitivity study does not reproduce "
-            "point " +
-            std::to_string(i) + " (please report)");
-  }
+  if (verify_resolved)  // the contract of study.resolved.toml: it re-runs the same points
+    checkResolvedPoints(
+        study, study_file, "sensitivity study",
+        [](const Study& s) -> const std::vector<Study>& { return s.sensitivity().points; },
+        [](const Study& point) { return sectionsText(point); });
   return study;
 }
 
 std::string resolvedSensitivityToml(const Study& study) {
-  const SensitivitySettings& s = study.sensitivity;
+  const SensitivitySettings& s = study.sensitivity();
   TomlWriter out;
-  out.comment("Resolved study: every default filled in; units in the key suffixes.");
-  out.comment(
-      "The vehicle below includes the study's overrides; `ornithopter run` accepts this file.");
-  out.comment("Point 0 is this vehicle; each parameter adds the vehicle with its key at low and");
-  out.comment("at high (an override of [vehicle]), each trimmed with [trim].");
-  out.string("kind", toString(StudyKind::kSensitivity));
-  out.string("name", study.name);
-  if (!study.vehicle_path.empty())
-    out.string("vehicle_source", study.vehicle_path.generic_string(),
-               "the vehicle file as given; its resolved content is [vehicle]");
+  writeResolvedOpening(
+      study,
+      {"Point 0 is this vehicle; each parameter adds the vehicle with its key at low and",
+       "at high (an override of [vehicle]), each trimmed with [trim]."},
+      out);
   out.header({"sensitivity"});
   out.integer("free_flight_cycles", s.free_flight_cycles, "the free flight from every trim");
   for (const SensitivityParameter& p : s.parameters) {

@@ -1,5 +1,6 @@
 #include "studies/runner/config/study_file.hpp"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <system_error>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -139,7 +141,7 @@ void readFreeFlight(TableReader& r, FreeFlightOptions& f) {
 }
 
 void readAeromap(TableReader& am, Study& study) {
-  AeromapSettings& a = study.aeromap;
+  AeromapSettings& a = study.settings.emplace<AeromapSettings>();
   a.speed_mps = readGridAxis(am, "speed_mps", field("aeromap.speed_mps").range);
   a.freq_hz = readGridAxis(am, "freq_hz", field("aeromap.freq_hz").range);
   a.theta_deg = readGridAxis(am, "theta_deg", field("aeromap.theta_deg").range);
@@ -226,6 +228,50 @@ GridAxis gridAxis(const trim::GridSpec& spec) {
   return axis;
 }
 
+namespace {
+
+/// The alternative T of study.settings, or a logic_error naming the accessor and the kind.
+template <class T, class S>
+T& kindSettings(S& study, std::string_view accessor) {
+  if (auto* t = std::get_if<std::remove_const_t<T>>(&study.settings)) return *t;
+  throw std::logic_error("Study::" + std::string(accessor) + "(): this study is kind \"" +
+                         std::string(toString(study.kind)) + "\", it has no [" +
+                         std::string(accessor) + "] settings");
+}
+
+}  // namespace
+
+const AeromapSettings& Study::aeromap() const {
+  return kindSettings<const AeromapSettings>(*this, "aeromap");
+}
+AeromapSettings& Study::aeromap() { return kindSettings<AeromapSettings>(*this, "aeromap"); }
+const orni::CalibrationOptions& Study::calibrate() const {
+  return kindSettings<const orni::CalibrationOptions>(*this, "calibrate");
+}
+orni::CalibrationOptions& Study::calibrate() {
+  return kindSettings<orni::CalibrationOptions>(*this, "calibrate");
+}
+const SweepSettings& Study::sweep() const {
+  return kindSettings<const SweepSettings>(*this, "sweep");
+}
+SweepSettings& Study::sweep() { return kindSettings<SweepSettings>(*this, "sweep"); }
+const OptimizeSettings& Study::optimize() const {
+  return kindSettings<const OptimizeSettings>(*this, "optimize");
+}
+OptimizeSettings& Study::optimize() { return kindSettings<OptimizeSettings>(*this, "optimize"); }
+const SensitivitySettings& Study::sensitivity() const {
+  return kindSettings<const SensitivitySettings>(*this, "sensitivity");
+}
+SensitivitySettings& Study::sensitivity() {
+  return kindSettings<SensitivitySettings>(*this, "sensitivity");
+}
+const orni::TrimContinuationOptions& Study::continuation() const {
+  return kindSettings<const orni::TrimContinuationOptions>(*this, "continuation");
+}
+orni::TrimContinuationOptions& Study::continuation() {
+  return kindSettings<orni::TrimContinuationOptions>(*this, "continuation");
+}
+
 std::string_view toString(StudyKind kind) {
   for (const auto& k : kKinds)
     if (k.second == kind) return k.first;
@@ -252,42 +298,66 @@ Study loadStudyText(const std::string& text, const fs::path& study_file, bool ve
   return readStudyRoot(root, study_file);
 }
 
-Study readStudyRoot(toml::table& root, const fs::path& study_file) {
-  const std::string study_name = displayPath(study_file);
-  auto study_ctx = std::make_shared<ReadContext>();
-  study_ctx->file = study_name;
+namespace {
 
-  TableReader top(root, std::string(), study_ctx,
-                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
-                   "aeromap", "trim", "sweep", "calibrate", "optimize", "sensitivity",
-                   "continuation"});
-  Study study;
-  study.study_path = study_file;
-  study.kind = top.requiredEnum("kind", kindChoices());
-  if (study.kind == StudyKind::kSweep)  // loadStudyText sends sweeps to loadSweepStudy
-    throw std::logic_error("readStudyRoot: a sweep document");
-  if (study.kind == StudyKind::kSensitivity)  // ... and sensitivity studies to their loader
-    throw std::logic_error("readStudyRoot: a sensitivity document");
-  if (top.has("sensitivity"))
-    throw InputError::unknownKey(top.fileOf("sensitivity"), top.lineOf("sensitivity"),
-                                 "sensitivity",
-                                 "[sensitivity] is only allowed in a study of kind "
-                                 "\"sensitivity\", this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  top.take("sensitivity");
-  if (top.has("sweep"))
-    throw InputError::unknownKey(top.fileOf("sweep"), top.lineOf("sweep"), "sweep",
-                                 "[sweep] is only allowed in a study of kind \"sweep\", this "
-                                 "one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  top.take("sweep");
-  study.name = top.optionalString("name", runNameFromStem(study_file));
-  if (!validRunName(study.name))
-    throw top.valueError("name",
-                         "a run name of letters, digits, '_', '-' and '.' not starting with '.'",
-                         describeNode(*root.get("name")));
+/// The kinds whose study may hold each top-level section; any other kind's is an error at it.
+struct SectionKinds {
+  std::string_view section;
+  std::vector<StudyKind> kinds;
+};
 
-  // The vehicle: a path relative to the study's folder, or an inline table.
+const std::vector<SectionKinds> kSectionKinds = {
+    {"simulate", {StudyKind::kSimulate}},
+    {"aeromap", {StudyKind::kAeromap}},
+    {"trim", {StudyKind::kTrim, StudyKind::kContinuation}},
+    {"continuation", {StudyKind::kContinuation}},
+    {"calibrate", {StudyKind::kCalibrate}},
+    {"optimize", {StudyKind::kOptimize}},
+    {"sweep", {StudyKind::kSweep}},
+    {"sensitivity", {StudyKind::kSensitivity}},
+};
+
+bool isOneOf(StudyKind kind, const std::vector<StudyKind>& kinds) {
+  return std::find(kinds.begin(), kinds.end(), kind) != kinds.end();
+}
+
+/// "[trim] is only allowed in a study of kind "trim" or "continuation", this one is kind ..."
+/// at `section` when the study has it but its kind may not.
+void rejectSectionOfOtherKind(const TableReader& top, std::string_view section, StudyKind kind) {
+  const std::string key(section);
+  for (const SectionKinds& s : kSectionKinds) {
+    if (s.section != section) continue;
+    if (!top.has(key) || isOneOf(kind, s.kinds)) return;
+    std::string allowed;
+    for (std::size_t i = 0; i < s.kinds.size(); ++i)
+      allowed += std::string(i ? " or " : "") + "\"" + std::string(toString(s.kinds[i])) + "\"";
+    throw InputError::unknownKey(top.fileOf(key), top.lineOf(key), key,
+                                 "[" + key + "] is only allowed in a study of kind " + allowed +
+                                     ", this one is kind \"" + std::string(toString(kind)) +
+                                     "\"");
+  }
+  throw std::logic_error("rejectSectionOfOtherKind: no kinds for [" + key + "]");
+}
+
+/// An error at 'vehicle' unless the study's vehicle has a [body]; `why` says what needs it.
+void requireBody(const TableReader& top, const Study& study, const std::string& why) {
+  if (!study.vehicle.body.present)
+    throw top.valueError("vehicle", "a vehicle with a [body] section (" + why + ")",
+                         "a vehicle without [body]");
+}
+
+/// The top-level table, the parsed document and its read context: what a kind's reader reads.
+struct StudyDocument {
+  TableReader& top;
+  toml::table& root;
+  const std::shared_ptr<ReadContext>& context;
+};
+
+/// The study's vehicle: `vehicle` (a path relative to the study's folder, or an inline table),
+/// vehicle_source and [override]; sets study.vehicle, vehicle_path and point.
+void readStudyVehicle(StudyDocument doc, const fs::path& study_file, Study& study) {
+  TableReader& top = doc.top;
+  const std::string study_name = doc.context->file;
   toml::table vehicle_table;
   ReadContext vehicle_ctx;
   std::string vehicle_root_path;
@@ -324,7 +394,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
     vehicle_ctx.foreign_file = study_name;
     vehicle_ctx.foreign_prefix = "override.";
     study.vehicle_path = given;
-  } else if (toml::table* t = root.get("vehicle")->as_table()) {
+  } else if (toml::table* t = doc.root.get("vehicle")->as_table()) {
     vehicle_table = std::move(*t);
     vehicle_ctx.file = study_name;
     vehicle_root_path = "vehicle";
@@ -334,154 +404,175 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
   }
 
   if (const toml::node* o = top.take("override")) {
-    toml::table* ot = root.get("override")->as_table();
+    toml::table* ot = doc.root.get("override")->as_table();
     if (!ot)
       throw top.valueError("override", "a table [override] of vehicle keys", describeNode(*o));
     mergeOverride(vehicle_table, *ot);
   }
   study.vehicle = parseVehicleTable(vehicle_table, vehicle_ctx, vehicle_root_path);
   study.point = study.vehicle.operating_point;
+}
 
-  if (top.has("simulate") && study.kind != StudyKind::kSimulate)
-    throw InputError::unknownKey(top.fileOf("simulate"), top.lineOf("simulate"), "simulate",
-                                 "[simulate] is only allowed in a study of kind \"simulate\", "
-                                 "this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  if (std::optional<TableReader> sim = top.optionalTable(
-          "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
-                       "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol",
-                       "samples_per_cycle", "history_every", "wing_only", "at_trim", "free"})) {
-    SimulationOptions& o = study.simulate;
-    OperatingPoint& p = study.point;
-    o.mode = sim->optionalEnum("mode", o.mode, kModes);
-    if (sim->has("free") && o.mode != FlightMode::kFree)
-      throw InputError::unknownKey(sim->fileOf("free"), sim->lineOf("free"), sim->keyPath("free"),
-                                   "[simulate.free] is only allowed with mode = \"free\", this "
-                                   "[simulate] is mode = \"tethered\"");
-    if (std::optional<TableReader> free = sim->optionalTable("free", kFreeKeys))
-      readFreeFlight(*free, o.free);
-    p.speed_mps = sim->optionalDouble(field("simulate.speed_mps"), p.speed_mps);
-    p.freq_hz = sim->optionalDouble(field("simulate.freq_hz"), p.freq_hz);
-    if (auto d = sim->maybeDouble(field("simulate.theta_deg"))) p.theta_rad = *d * orni::kDegToRad;
-    if (auto d = sim->maybeDouble(field("simulate.tail_angle_deg")))
-      p.tail_angle_rad = *d * orni::kDegToRad;
-    o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
-    readTolerances(*sim, o, "simulate");
-    o.samples_per_cycle =
-        sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);
-    study.history_every = sim->optionalInt(field("simulate.history_every"), study.history_every);
-    study.wing_only = sim->optionalBool("wing_only", study.wing_only);
-    study.at_trim = sim->optionalBool("at_trim", study.at_trim);
-    if (study.at_trim && !study.vehicle.body.present)
-      throw sim->valueError("at_trim", "false for a vehicle without [body] (no weight to trim)",
-                            "true");
-    if (study.wing_only && o.mode == FlightMode::kFree)
-      throw sim->valueError("wing_only", "false in free flight (the main wing alone cannot fly)",
-                            "true");
-    std::string why;
-    if (!o.IsValid(&why)) throwInvalidOptions(*sim, why);
-    if (o.mode == FlightMode::kFree && !study.vehicle.body.present)
-      throw sim->valueError("mode",
-                            "\"tethered\" for a vehicle without a [body] table (free flight "
-                            "needs the vehicle's mass and pitch inertia)",
-                            "\"free\"");
-    sim->finish();
-  }
+/// [simulate] (optional; kind simulate): the operating point, the options and [simulate.free].
+void readSimulateStudy(StudyDocument doc, Study& study) {
+  std::optional<TableReader> sim = doc.top.optionalTable(
+      "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
+                   "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol", "samples_per_cycle",
+                   "history_every", "wing_only", "at_trim", "free"});
+  if (!sim) return;
+  SimulationOptions& o = study.simulate;
+  OperatingPoint& p = study.point;
+  o.mode = sim->optionalEnum("mode", o.mode, kModes);
+  if (sim->has("free") && o.mode != FlightMode::kFree)
+    throw InputError::unknownKey(sim->fileOf("free"), sim->lineOf("free"), sim->keyPath("free"),
+                                 "[simulate.free] is only allowed with mode = \"free\", this "
+                                 "[simulate] is mode = \"tethered\"");
+  if (std::optional<TableReader> free = sim->optionalTable("free", kFreeKeys))
+    readFreeFlight(*free, o.free);
+  p.speed_mps = sim->optionalDouble(field("simulate.speed_mps"), p.speed_mps);
+  p.freq_hz = sim->optionalDouble(field("simulate.freq_hz"), p.freq_hz);
+  if (auto d = sim->maybeDouble(field("simulate.theta_deg"))) p.theta_rad = *d * orni::kDegToRad;
+  if (auto d = sim->maybeDouble(field("simulate.tail_angle_deg")))
+    p.tail_angle_rad = *d * orni::kDegToRad;
+  o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
+  readTolerances(*sim, o, "simulate");
+  o.samples_per_cycle = sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);
+  study.history_every = sim->optionalInt(field("simulate.history_every"), study.history_every);
+  study.wing_only = sim->optionalBool("wing_only", study.wing_only);
+  study.at_trim = sim->optionalBool("at_trim", study.at_trim);
+  if (study.at_trim && !study.vehicle.body.present)
+    throw sim->valueError("at_trim", "false for a vehicle without [body] (no weight to trim)",
+                          "true");
+  if (study.wing_only && o.mode == FlightMode::kFree)
+    throw sim->valueError("wing_only", "false in free flight (the main wing alone cannot fly)",
+                          "true");
+  std::string why;
+  if (!o.IsValid(&why)) throwInvalidOptions(*sim, why);
+  if (o.mode == FlightMode::kFree && !study.vehicle.body.present)
+    throw sim->valueError("mode",
+                          "\"tethered\" for a vehicle without a [body] table (free flight "
+                          "needs the vehicle's mass and pitch inertia)",
+                          "\"free\"");
+  sim->finish();
+}
 
-  if (top.has("aeromap") && study.kind != StudyKind::kAeromap)
-    throw InputError::unknownKey(top.fileOf("aeromap"), top.lineOf("aeromap"), "aeromap",
-                                 "[aeromap] is only allowed in a study of kind \"aeromap\", "
-                                 "this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  if (study.kind == StudyKind::kAeromap) {
-    TableReader am = top.requiredTable(
-        "aeromap", {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "wing_only", "cycles",
-                    "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol"});
-    readAeromap(am, study);
-  }
+/// [aeromap] (required; kind aeromap).
+void readAeromapStudy(StudyDocument doc, Study& study) {
+  TableReader am = doc.top.requiredTable(
+      "aeromap", {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "wing_only", "cycles",
+                  "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol"});
+  readAeromap(am, study);
+}
 
-  const bool continuation = study.kind == StudyKind::kContinuation;
-  if (top.has("trim") && study.kind != StudyKind::kTrim && !continuation)
-    throw InputError::unknownKey(top.fileOf("trim"), top.lineOf("trim"), "trim",
-                                 "[trim] is only allowed in a study of kind \"trim\" or "
-                                 "\"continuation\", this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  if (top.has("continuation") && !continuation)
-    throw InputError::unknownKey(top.fileOf("continuation"), top.lineOf("continuation"),
-                                 "continuation",
-                                 "[continuation] is only allowed in a study of kind "
-                                 "\"continuation\", this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  if (continuation) {
-    // The branch is made of periodic trims: method "periodic" unless the file says otherwise
-    // (which is an error at its line).
-    if (toml::table* t = root.get("trim") ? root.get("trim")->as_table() : nullptr) {
-      if (const toml::node* m = t->get("method")) {
-        if (m->value<std::string>() != std::string("periodic")) {
-          const TableReader tr(*t, "trim", study_ctx, trimSectionKeys());
-          throw tr.valueError("method",
-                              "\"periodic\" (a continuation follows periodic trims; the default "
-                              "here)",
-                              describeNode(*m));
-        }
-      } else {
-        t->insert("method", "periodic");
+/// A continuation's branch is made of periodic trims: [trim] method "periodic" unless the file
+/// says otherwise (which is an error at its line).
+void defaultToPeriodicTrim(StudyDocument doc) {
+  toml::table& root = doc.root;
+  if (toml::table* t = root.get("trim") ? root.get("trim")->as_table() : nullptr) {
+    if (const toml::node* m = t->get("method")) {
+      if (m->value<std::string>() != std::string("periodic")) {
+        const TableReader tr(*t, "trim", doc.context, trimSectionKeys());
+        throw tr.valueError("method",
+                            "\"periodic\" (a continuation follows periodic trims; the default "
+                            "here)",
+                            describeNode(*m));
       }
-    } else if (!root.contains("trim")) {
-      root.insert("trim", toml::table{{"method", "periodic"}});
-    }
-  }
-  if (study.kind == StudyKind::kTrim || continuation) {
-    if (!study.vehicle.body.present)
-      throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
-                                      "trim)",
-                           "a vehicle without [body]");
-    if (std::optional<TableReader> trim = top.optionalTable("trim", trimSectionKeys())) {
-      study.trim = readTrimSection(*trim, study.vehicle);
     } else {
-      // No [trim]: the defaults, validated like an empty section.
-      toml::table empty;
-      TableReader none(empty, "trim", study_ctx, trimSectionKeys());
-      study.trim = readTrimSection(none, study.vehicle);
+      t->insert("method", "periodic");
     }
+  } else if (!root.contains("trim")) {
+    root.insert("trim", toml::table{{"method", "periodic"}});
   }
-  if (continuation) {
-    TableReader c = top.requiredTable("continuation", continuationSectionKeys());
-    study.continuation = readContinuationSection(c);
-    if (study.continuation.parameter == study.trim.periodic.control)
-      throw c.valueError("parameter",
-                         std::string("a parameter other than the [trim.periodic] control \"") +
-                             orni::toString(study.trim.periodic.control) +
-                             "\" (the control keeps every orbit of the branch level)",
-                         std::string("\"") +
-                             continuationParameterName(study.continuation.parameter) + "\"");
-  }
+}
 
-  if (top.has("calibrate") && study.kind != StudyKind::kCalibrate)
-    throw InputError::unknownKey(top.fileOf("calibrate"), top.lineOf("calibrate"), "calibrate",
-                                 "[calibrate] is only allowed in a study of kind \"calibrate\", "
-                                 "this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  if (study.kind == StudyKind::kCalibrate) {
-    if (!study.vehicle.body.present)
-      throw top.valueError("vehicle", "a vehicle with a [body] section (a calibration flies it)",
-                           "a vehicle without [body]");
-    TableReader c = top.requiredTable("calibrate", calibrateSectionKeys());
-    study.calibrate = readCalibrateSection(c, study.vehicle);
+/// [trim] (optional; kinds trim and continuation) and [continuation] (required; kind
+/// continuation).
+void readTrimStudy(StudyDocument doc, Study& study) {
+  const bool continuation = study.kind == StudyKind::kContinuation;
+  if (continuation) defaultToPeriodicTrim(doc);
+  requireBody(doc.top, study, "its mass is the weight to trim");
+  if (std::optional<TableReader> trim = doc.top.optionalTable("trim", trimSectionKeys())) {
+    study.trim = readTrimSection(*trim, study.vehicle);
+  } else {
+    // No [trim]: the defaults, validated like an empty section.
+    toml::table empty;
+    TableReader none(empty, "trim", doc.context, trimSectionKeys());
+    study.trim = readTrimSection(none, study.vehicle);
   }
+  if (!continuation) return;
+  TableReader c = doc.top.requiredTable("continuation", continuationSectionKeys());
+  const orni::TrimContinuationOptions& options =
+      study.settings.emplace<orni::TrimContinuationOptions>(readContinuationSection(c));
+  if (options.parameter == study.trim.periodic.control)
+    throw c.valueError("parameter",
+                       std::string("a parameter other than the [trim.periodic] control \"") +
+                           orni::toString(study.trim.periodic.control) +
+                           "\" (the control keeps every orbit of the branch level)",
+                       std::string("\"") + continuationParameterName(options.parameter) + "\"");
+}
 
-  if (top.has("optimize") && study.kind != StudyKind::kOptimize)
-    throw InputError::unknownKey(top.fileOf("optimize"), top.lineOf("optimize"), "optimize",
-                                 "[optimize] is only allowed in a study of kind \"optimize\", "
-                                 "this one is kind \"" +
-                                     std::string(toString(study.kind)) + "\"");
-  if (study.kind == StudyKind::kOptimize) {
-    if (!study.vehicle.body.present)
-      throw top.valueError("vehicle", "a vehicle with a [body] section (its mass is the weight to "
-                                      "trim)",
-                           "a vehicle without [body]");
-    TableReader opt = top.requiredTable("optimize", optimizeSectionKeys());
-    study.optimize = readOptimizeSection(opt, study.vehicle);
+/// [calibrate] (required; kind calibrate).
+void readCalibrateStudy(StudyDocument doc, Study& study) {
+  requireBody(doc.top, study, "a calibration flies it");
+  TableReader c = doc.top.requiredTable("calibrate", calibrateSectionKeys());
+  study.settings = readCalibrateSection(c, study.vehicle);
+}
+
+/// [optimize] (required; kind optimize).
+void readOptimizeStudy(StudyDocument doc, Study& study) {
+  requireBody(doc.top, study, "its mass is the weight to trim");
+  TableReader opt = doc.top.requiredTable("optimize", optimizeSectionKeys());
+  study.settings = readOptimizeSection(opt, study.vehicle);
+}
+
+/// What readStudyRoot reads after the vehicle, in this order: for each step, the sections that
+/// must not be in a study of another kind, then (for the step's kinds) the step's reader.
+struct KindStep {
+  std::vector<std::string_view> sections;
+  std::vector<StudyKind> kinds;
+  void (*read)(StudyDocument doc, Study& study);
+};
+
+const std::vector<KindStep> kKindSteps = {
+    {{"simulate"}, {StudyKind::kSimulate}, readSimulateStudy},
+    {{"aeromap"}, {StudyKind::kAeromap}, readAeromapStudy},
+    {{"trim", "continuation"}, {StudyKind::kTrim, StudyKind::kContinuation}, readTrimStudy},
+    {{"calibrate"}, {StudyKind::kCalibrate}, readCalibrateStudy},
+    {{"optimize"}, {StudyKind::kOptimize}, readOptimizeStudy},
+};
+
+}  // namespace
+
+Study readStudyRoot(toml::table& root, const fs::path& study_file) {
+  auto study_ctx = std::make_shared<ReadContext>();
+  study_ctx->file = displayPath(study_file);
+
+  TableReader top(root, std::string(), study_ctx,
+                  {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
+                   "aeromap", "trim", "sweep", "calibrate", "optimize", "sensitivity",
+                   "continuation"});
+  const StudyDocument doc{top, root, study_ctx};
+  Study study;
+  study.study_path = study_file;
+  study.kind = top.requiredEnum("kind", kindChoices());
+  if (study.kind == StudyKind::kSweep)  // loadStudyText sends sweeps to loadSweepStudy
+    throw std::logic_error("readStudyRoot: a sweep document");
+  if (study.kind == StudyKind::kSensitivity)  // ... and sensitivity studies to their loader
+    throw std::logic_error("readStudyRoot: a sensitivity document");
+  for (const std::string_view section : {"sensitivity", "sweep"}) {
+    rejectSectionOfOtherKind(top, section, study.kind);
+    top.take(section);
+  }
+  study.name = top.optionalString("name", runNameFromStem(study_file));
+  if (!validRunName(study.name))
+    throw top.valueError("name",
+                         "a run name of letters, digits, '_', '-' and '.' not starting with '.'",
+                         describeNode(*root.get("name")));
+  readStudyVehicle(doc, study_file, study);
+  for (const KindStep& step : kKindSteps) {
+    for (const std::string_view section : step.sections)
+      rejectSectionOfOtherKind(top, section, study.kind);
+    if (isOneOf(study.kind, step.kinds)) step.read(doc, study);
   }
   top.finish();
   return study;
@@ -508,7 +599,7 @@ Study aeromapStudyFromVehicle(const fs::path& vehicle_file, GridAxis speed_mps, 
   Study study = studyFromVehicle(vehicle_file);
   study.kind = StudyKind::kAeromap;
   study.name += "_aeromap";
-  AeromapSettings& a = study.aeromap;
+  AeromapSettings& a = study.settings.emplace<AeromapSettings>();
   a.speed_mps = std::move(speed_mps);
   a.freq_hz = std::move(freq_hz);
   a.theta_deg = std::move(theta_deg);
@@ -523,16 +614,44 @@ std::string resolvedStudyToml(const Study& study) {
   if (study.kind == StudyKind::kSweep) return resolvedSweepToml(study);
   if (study.kind == StudyKind::kSensitivity) return resolvedSensitivityToml(study);
   TomlWriter out;
+  writeResolvedOpening(study, {}, out);
+  writeStudySections(study, study.kind, out);
+  return out.str();
+}
+
+void writeResolvedOpening(const Study& study, const std::vector<std::string>& notes,
+                          TomlWriter& out) {
   out.comment("Resolved study: every default filled in; units in the key suffixes.");
   out.comment(
       "The vehicle below includes the study's overrides; `ornithopter run` accepts this file.");
+  for (const std::string& note : notes) out.comment(note);
   out.string("kind", toString(study.kind));
   out.string("name", study.name);
   if (!study.vehicle_path.empty())
     out.string("vehicle_source", study.vehicle_path.generic_string(),
                "the vehicle file as given; its resolved content is [vehicle]");
-  writeStudySections(study, study.kind, out);
-  return out.str();
+}
+
+void checkResolvedPoints(const Study& study, const fs::path& study_file, const std::string& what,
+                         const std::function<const std::vector<Study>&(const Study&)>& pointsOf,
+                         const std::function<std::string(const Study&)>& pointText) {
+  const std::string resolved = resolvedStudyToml(study);
+  Study again;
+  try {
+    again = loadStudyText(resolved, study_file.parent_path() / "study.resolved.toml", false);
+  } catch (const InputError& e) {
+    throw std::runtime_error("the resolved form of this " + what +
+                             " does not load (please report): " + std::string(e.what()));
+  }
+  const std::vector<Study>& p = pointsOf(study);
+  const std::vector<Study>& q = pointsOf(again);
+  if (q.size() != p.size())
+    throw std::runtime_error("the resolved form of this " + what +
+                             " has another number of points");
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (pointText(q[i]) != pointText(p[i]))
+      throw std::runtime_error("the resolved form of this " + what + " does not reproduce point " +
+                               std::to_string(i) + " (please report)");
 }
 
 void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
@@ -559,7 +678,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
     if (o.mode == FlightMode::kFree) writeFreeFlightTable(o.free, {"simulate", "free"}, out);
   }
   if (kind == StudyKind::kAeromap) {
-    const AeromapSettings& a = study.aeromap;
+    const AeromapSettings& a = study.aeromap();
     out.header({"aeromap"});
     writeGridAxis(out, "speed_mps", a.speed_mps);
     writeGridAxis(out, "freq_hz", a.freq_hz);
@@ -574,9 +693,9 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
   }
   if (kind == StudyKind::kTrim || kind == StudyKind::kContinuation)
     writeTrimSection(study.trim, out);
-  if (kind == StudyKind::kContinuation) writeContinuationSection(study.continuation, out);
-  if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate, out);
-  if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize, out);
+  if (kind == StudyKind::kContinuation) writeContinuationSection(study.continuation(), out);
+  if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate(), out);
+  if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize(), out);
   writeVehicleToml(study.vehicle, out, {"vehicle"});
 }
 

@@ -90,6 +90,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
 #include "core/dynamics/simulation_options.hpp"
@@ -191,6 +192,11 @@ struct OptimizeSettings {
   orni::opt::DesignProblemOptions problem;  ///< objective, constraints, the trim of every design
 };
 
+/// The settings of a study's kind beyond the shared ones (Study::settings).
+using KindSettings =
+    std::variant<std::monostate, AeromapSettings, orni::CalibrationOptions, SweepSettings,
+                 OptimizeSettings, SensitivitySettings, orni::TrimContinuationOptions>;
+
 struct Study {
   StudyKind kind = StudyKind::kSimulate;
   std::string name;                    ///< run name (output folder results/<name>/)
@@ -209,18 +215,29 @@ struct Study {
   bool at_trim = false;
   int history_every = 1;               ///< [simulate] history_every: histories.csv keeps every
                                        ///< n-th sample (output only; the analysis uses all)
-  AeromapSettings aeromap;             ///< [aeromap] (kind aeromap only)
-  orni::TrimOptions trim;              ///< [trim] options (kind trim; SI)
-  orni::CalibrationOptions calibrate;  ///< [calibrate] (kind calibrate; config/calibrate_section.hpp)
-  /// [sweep] (kind sweep). vehicle, point, simulate and trim above then hold the base study: the
-  /// run's section and the vehicle without the axes.
-  SweepSettings sweep;
-  OptimizeSettings optimize;           ///< [optimize] (kind optimize)
-  /// [sensitivity] (kind sensitivity). vehicle and trim above then hold the base study.
-  SensitivitySettings sensitivity;
-  /// [continuation] (kind continuation, config/continuation_section.hpp); trim above holds the
-  /// periodic trim the branch starts from.
-  orni::TrimContinuationOptions continuation;
+  orni::TrimOptions trim;              ///< [trim] options (kinds trim and continuation, the
+                                       ///< base of a trim sweep, sensitivity points; SI)
+  /// The settings only one kind has: AeromapSettings (aeromap), CalibrationOptions (calibrate),
+  /// SweepSettings (sweep), OptimizeSettings (optimize), SensitivitySettings (sensitivity),
+  /// TrimContinuationOptions (continuation); monostate for simulate, modes and trim, whose
+  /// settings are the shared fields above (point, simulate, trim). A sweep's or sensitivity
+  /// study's vehicle, point, simulate and trim hold its base study; a continuation's trim the
+  /// periodic trim its branch starts from. Read it with the accessors below.
+  KindSettings settings;
+
+  /// The kind's settings; std::logic_error naming the kind when `settings` holds another kind's.
+  const AeromapSettings& aeromap() const;
+  AeromapSettings& aeromap();
+  const orni::CalibrationOptions& calibrate() const;
+  orni::CalibrationOptions& calibrate();
+  const SweepSettings& sweep() const;
+  SweepSettings& sweep();
+  const OptimizeSettings& optimize() const;
+  OptimizeSettings& optimize();
+  const SensitivitySettings& sensitivity() const;
+  SensitivitySettings& sensitivity();
+  const orni::TrimContinuationOptions& continuation() const;
+  orni::TrimContinuationOptions& continuation();
 };
 
 /// True for an axis key of the run's analysis section ("trim.*" in a trim sweep), false for a

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -53,6 +54,20 @@ std::string resolvedSweepToml(const Study& study);
 Study readStudyWithValues(const std::string& text, const std::filesystem::path& study_file,
                           StudyKind run, const std::vector<std::string>& drop,
                           const std::vector<std::pair<std::string, double>>& values);
+
+/// The opening of every study.resolved.toml: what it is, the comment lines `notes`, kind, name
+/// and vehicle_source (when the study names its vehicle file).
+void writeResolvedOpening(const Study& study, const std::vector<std::string>& notes,
+                          TomlWriter& out);
+
+/// The contract of study.resolved.toml for a study of points (sweep, sensitivity): it loads (as
+/// study.resolved.toml next to `study_file`) and its points (`pointsOf`) equal the study's,
+/// compared by `pointText`. `what` names the study in messages ("sweep", "sensitivity study").
+/// Throws std::runtime_error (asking for a report: a bug, not an input error).
+void checkResolvedPoints(const Study& study, const std::filesystem::path& study_file,
+                         const std::string& what,
+                         const std::function<const std::vector<Study>&(const Study&)>& pointsOf,
+                         const std::function<std::string(const Study&)>& pointText);
 
 /// The parts of a dotted key of bare parts ("tail.arm_m" -> {"tail", "arm_m"}); empty when the
 /// text is not such a key.

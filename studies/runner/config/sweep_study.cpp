@@ -403,45 +403,29 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
   Study study = base;
   study.kind = StudyKind::kSweep;
   study.study_path = study_file;
-  study.sweep.run = run;
-  for (const AxisInput& a : axes) study.sweep.axes.push_back(a.axis);
-  study.sweep.derived_keys = derivedKeys(base, points, run, axes);
-  study.sweep.points = std::move(points);
+  SweepSettings& sweep_settings = study.settings.emplace<SweepSettings>();
+  sweep_settings.run = run;
+  for (const AxisInput& a : axes) sweep_settings.axes.push_back(a.axis);
+  sweep_settings.derived_keys = derivedKeys(base, points, run, axes);
+  sweep_settings.points = std::move(points);
 
-  if (verify_resolved) {
-    // The contract of study.resolved.toml: it re-runs the same points.
-    const std::string resolved = resolvedStudyToml(study);
-    Study again;
-    try {
-      again = loadStudyText(resolved, study_file.parent_path() / "study.resolved.toml", false);
-    } catch (const InputError& e) {
-      throw std::runtime_error("the resolved form of this sweep does not load (please report): " +
-                               std::string(e.what()));
-    }
-    const std::vector<Study>& p = study.sweep.points;
-    if (again.sweep.points.size() != p.size())
-      throw std::runtime_error("the resolved form of this sweep has another number of points");
-    for (std::size_t i = 0; i < p.size(); ++i)
-      if (sectionsText(again.sweep.points[i], run) != sectionsText(p[i], run))
-        throw std::runtime_error("the resolved form of this sweep does not reproduce point " +
-                                 std::to_string(i) + " (please report)");
-  }
+  if (verify_resolved)  // the contract of study.resolved.toml: it re-runs the same points
+    checkResolvedPoints(
+        study, study_file, "sweep", [](const Study& s) -> const std::vector<Study>& {
+          return s.sweep().points;
+        },
+        [run](const Study& point) { return sectionsText(point, run); });
   return study;
 }
 
 std::string resolvedSweepToml(const Study& study) {
-  const SweepSettings& s = study.sweep;
+  const SweepSettings& s = study.sweep();
   TomlWriter out;
-  out.comment("Resolved study: every default filled in; units in the key suffixes.");
-  out.comment(
-      "The vehicle below includes the study's overrides; `ornithopter run` accepts this file.");
-  out.comment("Each point is this study with its axis values written in (vehicle keys as");
-  out.comment("overrides of [vehicle], analysis keys into [" + sectionOf(s.run) + "]).");
-  out.string("kind", toString(StudyKind::kSweep));
-  out.string("name", study.name);
-  if (!study.vehicle_path.empty())
-    out.string("vehicle_source", study.vehicle_path.generic_string(),
-               "the vehicle file as given; its resolved content is [vehicle]");
+  writeResolvedOpening(
+      study,
+      {"Each point is this study with its axis values written in (vehicle keys as",
+       "overrides of [vehicle], analysis keys into [" + sectionOf(s.run) + "])."},
+      out);
   out.header({"sweep"});
   out.string("run", sectionOf(s.run));
   for (const SweepAxis& a : s.axes) {

@@ -155,7 +155,7 @@ TEST_F(CommandsAeromap, JournalOfAnotherStudyIsDiscarded) {
   const fs::path out = dir_ / "out";
   {  // a journal of the same grid with other options (another fingerprint)
     Study other = study;
-    other.aeromap.options.steady_tol = 2e-3;
+    other.aeromap().options.steady_tol = 2e-3;
     AeromapRunOptions crash = quiet(1);
     crash.on_point = [](std::size_t, const trim::AeroMapPoint&) {
       throw std::runtime_error("simulated crash");
@@ -172,7 +172,7 @@ TEST_F(CommandsAeromap, JournalOfAnotherStudyIsDiscarded) {
 
 TEST_F(CommandsAeromap, PointsWithoutAResultHaveEmptyCellsAndAReason) {
   Study study = smallMap();
-  study.aeromap.options.cycles = 1;  // one cycle cannot show a steady state
+  study.aeromap().options.cycles = 1;  // one cycle cannot show a steady state
   ASSERT_EQ(runAeromapStudy(study, dir_, quiet(2)), 0);
   const std::string csv = readAll(dir_ / "aeromap.csv");
   EXPECT_EQ(csv.find("nan"), std::string::npos);

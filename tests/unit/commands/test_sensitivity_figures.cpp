@@ -25,7 +25,7 @@ Study twoParameters() {
   Study s;
   s.name = "demo";
   s.kind = StudyKind::kSensitivity;
-  s.sensitivity.parameters = {
+  s.settings.emplace<SensitivitySettings>().parameters = {
       {"body.pitch_inertia_kgm2", 4e-5, 3.2e-4, 3e-4},
       {"aero.suction_efficiency", 0.5, 1.0, std::numeric_limits<double>::quiet_NaN()}};
   return s;
@@ -53,9 +53,9 @@ std::vector<PredictionRanking> ranking() {
 }
 
 TEST(CommandsSensitivityFigures, LabelsAndOnlyElementsWithPoints) {
-  EXPECT_EQ(parameterLabel(twoParameters().sensitivity.parameters[0]),
+  EXPECT_EQ(parameterLabel(twoParameters().sensitivity().parameters[0]),
             "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 3e-04)");
-  EXPECT_EQ(parameterLabel(twoParameters().sensitivity.parameters[1]),
+  EXPECT_EQ(parameterLabel(twoParameters().sensitivity().parameters[1]),
             "aero.suction_efficiency: 0.5 .. 1");
   EXPECT_EQ(tornadoStem(ranking()[0]), "tornado_theta_mean_deg");
 

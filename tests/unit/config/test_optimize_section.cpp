@@ -50,7 +50,7 @@ variables = [
 ]
 )"));
   EXPECT_EQ(s.kind, StudyKind::kOptimize);
-  const OptimizeSettings& o = s.optimize;
+  const OptimizeSettings& o = s.optimize();
   EXPECT_EQ(o.optimizer.algorithm, opt::Algorithm::kCobyla);
   EXPECT_EQ(o.optimizer.max_evaluations, 100);
   EXPECT_EQ(o.optimizer.starts, 1);
@@ -105,7 +105,7 @@ lower = 2e-4
 upper = 8e-4
 )");
   const Study s = loadStudyFile(file);
-  const OptimizeSettings& o = s.optimize;
+  const OptimizeSettings& o = s.optimize();
   EXPECT_EQ(o.optimizer.algorithm, opt::Algorithm::kIsres);
   EXPECT_EQ(o.optimizer.starts, 3);
   EXPECT_EQ(o.optimizer.seed, 7);
@@ -128,8 +128,8 @@ upper = 8e-4
   EXPECT_NE(text.find("[optimize.trim.bounds]"), std::string::npos);
   const Study back = loadStudyFile(write("study.resolved.toml", text));
   EXPECT_EQ(resolvedStudyToml(back), text);
-  EXPECT_EQ(back.optimize.space.variables[1].fields[1].name, "wing.members.DIAG2.diameter_m");
-  EXPECT_EQ(back.optimize.problem.trim.max_iterations, 20);
+  EXPECT_EQ(back.optimize().space.variables[1].fields[1].name, "wing.members.DIAG2.diameter_m");
+  EXPECT_EQ(back.optimize().problem.trim.max_iterations, 20);
 
   // The inline form and defaults round-trip too.
   const Study a = loadStudyFile(write("a.toml", head() + R"([optimize]

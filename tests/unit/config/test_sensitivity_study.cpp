@@ -92,7 +92,7 @@ max_iterations = 20
 )"));
   EXPECT_EQ(s.kind, StudyKind::kSensitivity);
   EXPECT_EQ(s.name, "s");
-  const SensitivitySettings& set = s.sensitivity;
+  const SensitivitySettings& set = s.sensitivity();
   ASSERT_EQ(set.parameters.size(), 4u);
   EXPECT_EQ(set.parameters[0].key, "wing.fe.damping_ratio");
   EXPECT_EQ(set.parameters[1].key, "body.pitch_inertia_kgm2");
@@ -150,9 +150,9 @@ high = 0.042
 [sensitivity.free]
 bound_theta_deg = 30.0
 )"));
-  ASSERT_EQ(s.sensitivity.points.size(), 5u);
-  EXPECT_EQ(s.sensitivity.free_flight_cycles, 30);
-  EXPECT_DOUBLE_EQ(s.sensitivity.free.bounds.theta_rad, 30.0 * kDegToRad);
+  ASSERT_EQ(s.sensitivity().points.size(), 5u);
+  EXPECT_EQ(s.sensitivity().free_flight_cycles, 30);
+  EXPECT_DOUBLE_EQ(s.sensitivity().free.bounds.theta_rad, 30.0 * kDegToRad);
   const std::string resolved = resolvedStudyToml(s);
   EXPECT_NE(resolved.find("kind = \"sensitivity\""), std::string::npos);
   EXPECT_NE(resolved.find("[[sensitivity.parameters]]"), std::string::npos);
@@ -160,16 +160,16 @@ bound_theta_deg = 30.0
   const Study again = loadStudyFile(write("study.resolved.toml", resolved));
   EXPECT_EQ(again.name, s.name);
   EXPECT_EQ(resolvedStudyToml(again), resolved);  // a fixed point
-  ASSERT_EQ(again.sensitivity.points.size(), 5u);
+  ASSERT_EQ(again.sensitivity().points.size(), 5u);
   for (std::size_t i = 0; i < 5; ++i) {
     SCOPED_TRACE(i);
-    EXPECT_EQ(again.sensitivity.points[i].vehicle.aero.suction_efficiency,
-              s.sensitivity.points[i].vehicle.aero.suction_efficiency);
-    EXPECT_EQ(again.sensitivity.points[i].vehicle.flapping.hinge_x_B_m,
-              s.sensitivity.points[i].vehicle.flapping.hinge_x_B_m);
+    EXPECT_EQ(again.sensitivity().points[i].vehicle.aero.suction_efficiency,
+              s.sensitivity().points[i].vehicle.aero.suction_efficiency);
+    EXPECT_EQ(again.sensitivity().points[i].vehicle.flapping.hinge_x_B_m,
+              s.sensitivity().points[i].vehicle.flapping.hinge_x_B_m);
   }
-  EXPECT_EQ(again.sensitivity.points[3].vehicle.flapping.hinge_x_B_m, 0.01);
-  EXPECT_DOUBLE_EQ(again.sensitivity.free.bounds.theta_rad, 30.0 * kDegToRad);
+  EXPECT_EQ(again.sensitivity().points[3].vehicle.flapping.hinge_x_B_m, 0.01);
+  EXPECT_DOUBLE_EQ(again.sensitivity().free.bounds.theta_rad, 30.0 * kDegToRad);
 }
 
 TEST_F(ConfigSensitivityStudy, ErrorsNameTheParameterAtFault) {
@@ -221,9 +221,9 @@ TEST_F(ConfigSensitivityStudy, PaperStudyLoads) {
   const Study s = loadStudyFile(repo() / "studies/paper/sensitivity_magpie.toml");
   EXPECT_EQ(s.kind, StudyKind::kSensitivity);
   EXPECT_EQ(s.name, "sensitivity_magpie");
-  EXPECT_GE(s.sensitivity.parameters.size(), 7u);
-  EXPECT_EQ(s.sensitivity.points.size(), 2 * s.sensitivity.parameters.size() + 1);
-  for (const SensitivityParameter& p : s.sensitivity.parameters) {
+  EXPECT_GE(s.sensitivity().parameters.size(), 7u);
+  EXPECT_EQ(s.sensitivity().points.size(), 2 * s.sensitivity().parameters.size() + 1);
+  for (const SensitivityParameter& p : s.sensitivity().parameters) {
     SCOPED_TRACE(p.key);
     EXPECT_LT(p.low, p.high);
     EXPECT_TRUE(std::isfinite(p.base));

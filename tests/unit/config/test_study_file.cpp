@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 
 #include "core/model/frames.hpp"
@@ -213,7 +214,7 @@ steady_tol = 2e-3
 )");
   const Study s = loadStudyFile(f);
   EXPECT_EQ(s.kind, StudyKind::kAeromap);
-  const AeromapSettings& a = s.aeromap;
+  const AeromapSettings& a = s.aeromap();
   ASSERT_TRUE(a.speed_mps.spec.has_value());
   EXPECT_EQ(a.speed_mps.values, (std::vector<double>{10, 12, 14, 16, 18, 20}));
   EXPECT_FALSE(a.freq_hz.spec.has_value());
@@ -236,12 +237,12 @@ steady_tol = 2e-3
         "theta_deg = [7.0]\n", "tail_angle_deg = [11.85]\n", "cycles = 25", "steady_tol = 0.002\n"})
     EXPECT_NE(text.find(expected), std::string::npos) << expected << "\n" << text;
   const Study back = loadStudyFile(writeStudy("study.resolved.toml", text));
-  EXPECT_EQ(back.aeromap.speed_mps.values, a.speed_mps.values);
-  EXPECT_EQ(back.aeromap.freq_hz.values, a.freq_hz.values);
-  EXPECT_EQ(back.aeromap.theta_deg.values, a.theta_deg.values);
-  EXPECT_EQ(back.aeromap.tail_angle_deg.values, a.tail_angle_deg.values);
-  EXPECT_EQ(back.aeromap.options.cycles, a.options.cycles);
-  EXPECT_EQ(back.aeromap.options.steady_tol, a.options.steady_tol);
+  EXPECT_EQ(back.aeromap().speed_mps.values, a.speed_mps.values);
+  EXPECT_EQ(back.aeromap().freq_hz.values, a.freq_hz.values);
+  EXPECT_EQ(back.aeromap().theta_deg.values, a.theta_deg.values);
+  EXPECT_EQ(back.aeromap().tail_angle_deg.values, a.tail_angle_deg.values);
+  EXPECT_EQ(back.aeromap().options.cycles, a.options.cycles);
+  EXPECT_EQ(back.aeromap().options.steady_tol, a.options.steady_tol);
   EXPECT_EQ(resolvedStudyToml(back), text);
 }
 
@@ -249,7 +250,7 @@ TEST_F(ConfigStudyFile, LoadsPaperAeromapStudy) {
   const Study s = loadStudyFile(repo() / "studies" / "paper" / "fig5_efw_aeromap.toml");
   EXPECT_EQ(s.kind, StudyKind::kAeromap);
   EXPECT_EQ(s.name, "fig5_efw_aeromap");
-  const AeromapSettings& a = s.aeromap;
+  const AeromapSettings& a = s.aeromap();
   EXPECT_EQ(a.speed_mps.values.size() * a.freq_hz.values.size() * a.theta_deg.values.size() *
                 a.tail_angle_deg.values.size(),
             180u);
@@ -308,10 +309,31 @@ TEST_F(ConfigStudyFile, AeromapStudyFromVehicle) {
                                           gridAxis(trim::parseGridSpec("0:20:5")), std::nullopt);
   EXPECT_EQ(s.kind, StudyKind::kAeromap);
   EXPECT_EQ(s.name, "efw_magpie_aeromap");
-  EXPECT_EQ(s.aeromap.tail_angle_deg.values, (std::vector<double>{11.85}));
-  EXPECT_EQ(s.aeromap.options.cycles, 40);
+  EXPECT_EQ(s.aeromap().tail_angle_deg.values, (std::vector<double>{11.85}));
+  EXPECT_EQ(s.aeromap().options.cycles, 40);
   const Study back = loadStudyFile(writeStudy("r.toml", resolvedStudyToml(s)));
   EXPECT_EQ(resolvedStudyToml(back), resolvedStudyToml(s));
+}
+
+TEST_F(ConfigStudyFile, KindSettingsOfAnotherKindAreALogicError) {
+  const Study map = aeromapStudyFromVehicle(vehiclePath("efw_magpie.toml"),
+                                            gridAxis(trim::parseGridSpec("10:20:6")),
+                                            gridAxis(trim::parseGridSpec("12:12:1")),
+                                            gridAxis(trim::parseGridSpec("0:20:5")), std::nullopt);
+  EXPECT_NO_THROW((void)map.aeromap());
+  try {
+    (void)map.sweep();
+    FAIL() << "sweep() of an aeromap study";
+  } catch (const std::logic_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "Study::sweep(): this study is kind \"aeromap\", it has no [sweep] settings");
+  }
+  Study simulate = studyFromVehicle(vehiclePath("efw_magpie.toml"));
+  EXPECT_THROW((void)simulate.aeromap(), std::logic_error);
+  EXPECT_THROW((void)simulate.calibrate(), std::logic_error);
+  EXPECT_THROW((void)simulate.optimize(), std::logic_error);
+  EXPECT_THROW((void)simulate.sensitivity(), std::logic_error);
+  EXPECT_THROW((void)simulate.continuation(), std::logic_error);
 }
 
 TEST_F(ConfigStudyFile, StudyFromVehicle) {

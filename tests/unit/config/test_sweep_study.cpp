@@ -60,19 +60,19 @@ axes = [
 )"));
   EXPECT_EQ(s.kind, StudyKind::kSweep);
   EXPECT_EQ(s.name, "s");
-  ASSERT_EQ(s.sweep.axes.size(), 2u);
-  EXPECT_EQ(s.sweep.run, StudyKind::kTrim);
-  EXPECT_EQ(s.sweep.axes[0].key, "tail.arm_m");
-  EXPECT_EQ(s.sweep.axes[1].key, "body.mass_kg");
-  EXPECT_FALSE(s.sweep.axes[0].values.spec.has_value());
-  ASSERT_TRUE(s.sweep.axes[1].values.spec.has_value());
-  EXPECT_EQ(s.sweep.axes[1].values.values, (std::vector<double>{0.1, 0.12}));
-  ASSERT_EQ(s.sweep.points.size(), 6u);
+  ASSERT_EQ(s.sweep().axes.size(), 2u);
+  EXPECT_EQ(s.sweep().run, StudyKind::kTrim);
+  EXPECT_EQ(s.sweep().axes[0].key, "tail.arm_m");
+  EXPECT_EQ(s.sweep().axes[1].key, "body.mass_kg");
+  EXPECT_FALSE(s.sweep().axes[0].values.spec.has_value());
+  ASSERT_TRUE(s.sweep().axes[1].values.spec.has_value());
+  EXPECT_EQ(s.sweep().axes[1].values.values, (std::vector<double>{0.1, 0.12}));
+  ASSERT_EQ(s.sweep().points.size(), 6u);
   const double arm[] = {0.10, 0.10, 0.12, 0.12, 0.14, 0.14};
   const double mass[] = {0.1, 0.12, 0.1, 0.12, 0.1, 0.12};
   for (std::size_t i = 0; i < 6; ++i) {
     SCOPED_TRACE(i);
-    const Study& p = s.sweep.points[i];
+    const Study& p = s.sweep().points[i];
     EXPECT_EQ(p.kind, StudyKind::kTrim);
     EXPECT_EQ(p.vehicle.tail.arm_m, arm[i]);
     EXPECT_EQ(p.vehicle.body.mass_kg, mass[i]);
@@ -104,10 +104,10 @@ freq_hz = 12.0
 max_iterations = 20
 initial = { theta_mean_deg = 12.0 }
 )"));
-  ASSERT_EQ(s.sweep.points.size(), 6u);
+  ASSERT_EQ(s.sweep().points.size(), 6u);
   for (std::size_t i = 0; i < 6; ++i) {
     SCOPED_TRACE(i);
-    const Study& p = s.sweep.points[i];
+    const Study& p = s.sweep().points[i];
     EXPECT_EQ(p.trim.initial.freq_hz, i < 3 ? 8.0 : 9.5);
     EXPECT_EQ(p.vehicle.tail.arm_m, 0.11);
     EXPECT_EQ(p.vehicle.tail.area_m2, 0.008);
@@ -118,7 +118,7 @@ initial = { theta_mean_deg = 12.0 }
   }
   EXPECT_EQ(s.trim.initial.freq_hz, 12.0);  // the base
   EXPECT_EQ(s.vehicle.tail.arm_m, 0.2);
-  EXPECT_TRUE(s.sweep.derived_keys.empty());
+  EXPECT_TRUE(s.sweep().derived_keys.empty());
 }
 
 TEST_F(ConfigSweepStudy, SimulateSweepOfTetheredAndFreeRuns) {
@@ -130,12 +130,12 @@ axes = [{ key = "simulate.theta_deg", values = [0, 20] }, { key = "kinematics.am
 [simulate]
 cycles = 3
 )"));
-  ASSERT_EQ(t.sweep.points.size(), 4u);
-  EXPECT_EQ(t.sweep.run, StudyKind::kSimulate);
-  EXPECT_EQ(t.sweep.points[0].kind, StudyKind::kSimulate);
-  EXPECT_EQ(t.sweep.points[3].point.theta_rad, 20.0 * kDegToRad);
-  EXPECT_DOUBLE_EQ(t.sweep.points[3].vehicle.flapping.amplitude_rad, 30.0 * kDegToRad);
-  EXPECT_EQ(t.sweep.points[3].simulate.cycles, 3);
+  ASSERT_EQ(t.sweep().points.size(), 4u);
+  EXPECT_EQ(t.sweep().run, StudyKind::kSimulate);
+  EXPECT_EQ(t.sweep().points[0].kind, StudyKind::kSimulate);
+  EXPECT_EQ(t.sweep().points[3].point.theta_rad, 20.0 * kDegToRad);
+  EXPECT_DOUBLE_EQ(t.sweep().points[3].vehicle.flapping.amplitude_rad, 30.0 * kDegToRad);
+  EXPECT_EQ(t.sweep().points[3].simulate.cycles, 3);
 
   const Study f =
       loadStudyFile(write("f.toml", "kind = \"sweep\"\n" + vehicle("efw_magpie.toml") + R"(
@@ -147,7 +147,7 @@ mode = "free"
 cycles = 5
 )"));
   EXPECT_EQ(f.simulate.mode, FlightMode::kFree);
-  EXPECT_DOUBLE_EQ(f.sweep.points[0].simulate.free.bounds.theta_rad, 30.0 * kDegToRad);
+  EXPECT_DOUBLE_EQ(f.sweep().points[0].simulate.free.bounds.theta_rad, 30.0 * kDegToRad);
 }
 
 TEST_F(ConfigSweepStudy, DefaultsFollowTheSweptKeysAndTheResolvedStudyReproducesThePoints) {
@@ -159,10 +159,10 @@ run = "trim"
 axes = [{ key = "operating_point.freq_hz", values = "6:8:3" }, { key = "tail.arm_m", values = [0.1, 0.12] }]
 )");
   const Study s = loadStudyFile(file);
-  ASSERT_EQ(s.sweep.points.size(), 6u);
-  EXPECT_EQ(s.sweep.points[0].trim.initial.freq_hz, 6.0);
-  EXPECT_EQ(s.sweep.points[5].trim.initial.freq_hz, 8.0);
-  EXPECT_EQ(s.sweep.derived_keys, (std::vector<std::string>{"trim.freq_hz"}));
+  ASSERT_EQ(s.sweep().points.size(), 6u);
+  EXPECT_EQ(s.sweep().points[0].trim.initial.freq_hz, 6.0);
+  EXPECT_EQ(s.sweep().points[5].trim.initial.freq_hz, 8.0);
+  EXPECT_EQ(s.sweep().derived_keys, (std::vector<std::string>{"trim.freq_hz"}));
   const std::string text = resolvedStudyToml(s);
   EXPECT_NE(text.find("kind = \"sweep\""), std::string::npos);
   EXPECT_NE(text.find("[[sweep.axes]]\nkey = \"operating_point.freq_hz\"\nvalues = \"6:8:3\""),
@@ -173,11 +173,11 @@ axes = [{ key = "operating_point.freq_hz", values = "6:8:3" }, { key = "tail.arm
   const fs::path again_file = write("study.resolved.toml", text);
   const Study again = loadStudyFile(again_file);
   EXPECT_EQ(resolvedStudyToml(again), text);
-  ASSERT_EQ(again.sweep.points.size(), s.sweep.points.size());
-  for (std::size_t i = 0; i < s.sweep.points.size(); ++i) {
+  ASSERT_EQ(again.sweep().points.size(), s.sweep().points.size());
+  for (std::size_t i = 0; i < s.sweep().points.size(); ++i) {
     SCOPED_TRACE(i);
-    const Study& a = s.sweep.points[i];
-    const Study& b = again.sweep.points[i];
+    const Study& a = s.sweep().points[i];
+    const Study& b = again.sweep().points[i];
     EXPECT_EQ(b.trim.initial.freq_hz, a.trim.initial.freq_hz);
     EXPECT_EQ(b.trim.initial.speed_mps, a.trim.initial.speed_mps);
     EXPECT_EQ(b.vehicle.tail.arm_m, a.vehicle.tail.arm_m);
@@ -187,17 +187,17 @@ axes = [{ key = "operating_point.freq_hz", values = "6:8:3" }, { key = "tail.arm
 
 TEST_F(ConfigSweepStudy, ExamplesLoad) {
   const Study f = loadStudyFile(repo() / "studies/examples/trim_sweep_freq.toml");
-  EXPECT_EQ(f.sweep.run, StudyKind::kTrim);
-  ASSERT_EQ(f.sweep.points.size(), 7u);
+  EXPECT_EQ(f.sweep().run, StudyKind::kTrim);
+  ASSERT_EQ(f.sweep().points.size(), 7u);
   for (std::size_t i = 0; i < 7; ++i)
-    EXPECT_EQ(f.sweep.points[i].trim.initial.freq_hz, 10.0 + static_cast<double>(i));
+    EXPECT_EQ(f.sweep().points[i].trim.initial.freq_hz, 10.0 + static_cast<double>(i));
   const Study t = loadStudyFile(repo() / "studies/paper/sweep_tail_arm_area.toml");
-  ASSERT_EQ(t.sweep.axes.size(), 2u);
-  EXPECT_EQ(t.sweep.axes[0].key, "tail.arm_m");
-  EXPECT_EQ(t.sweep.axes[1].key, "tail.area_m2");
-  ASSERT_EQ(t.sweep.points.size(), 9u);
-  EXPECT_EQ(t.sweep.points[1].vehicle.tail.area_m2, 0.007);
-  EXPECT_EQ(t.sweep.points[3].vehicle.tail.arm_m, 0.12);
+  ASSERT_EQ(t.sweep().axes.size(), 2u);
+  EXPECT_EQ(t.sweep().axes[0].key, "tail.arm_m");
+  EXPECT_EQ(t.sweep().axes[1].key, "tail.area_m2");
+  ASSERT_EQ(t.sweep().points.size(), 9u);
+  EXPECT_EQ(t.sweep().points[1].vehicle.tail.area_m2, 0.007);
+  EXPECT_EQ(t.sweep().points[3].vehicle.tail.arm_m, 0.12);
 }
 
 TEST_F(ConfigSweepStudy, ErrorsNameTheAxisAtFault) {

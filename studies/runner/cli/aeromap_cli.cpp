@@ -1,0 +1,84 @@
+// `ornithopter aeromap VEHICLE --speed A:B:N --freq .. --theta .. [--tail ..] [--cycles] [-j]
+// [-o]`.
+// [-o]`.
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "studies/runner/cli/cli_options.hpp"
+#include "studies/runner/cli/subcommands.hpp"
+#include "studies/runner/commands/aeromap_command.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
+#include "studies/runner/output/folder_lock.hpp"
+#include "trim/aero_map_options.hpp"
+
+namespace orni::studies::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct AeromapArgs {
+  std::string vehicle, speed, freq, theta, tail;
+  std::optional<std::string> out;
+  std::optional<std::string> cycles, jobs;
+};
+
+int runAeromap(const AeromapArgs& a) {
+  GridAxis speed = axisOption("--speed", "aeromap.speed_mps", a.speed);
+  GridAxis freq = axisOption("--freq", "aeromap.freq_hz", a.freq);
+  GridAxis theta = axisOption("--theta", "aeromap.theta_deg", a.theta);
+  std::optional<GridAxis> tail;
+  if (!a.tail.empty()) tail = axisOption("--tail", "aeromap.tail_angle_deg", a.tail);
+  std::size_t points = speed.values.size() * freq.values.size() * theta.values.size();
+  if (tail) points *= tail->values.size();
+  if (points > trim::kMaxAeroMapPoints)
+    throw CliError(
+        "command line: options --speed, --freq, --theta, --tail: expected a grid of "
+        "at most " +
+        std::to_string(trim::kMaxAeroMapPoints) + " points, got " + std::to_string(points));
+  Study study = aeromapStudyFromVehicle(a.vehicle, std::move(speed), std::move(freq),
+                                        std::move(theta), std::move(tail));
+  if (a.cycles)
+    study.aeromap().options.cycles =
+        static_cast<int>(optionValue("--cycles", "aeromap.cycles", *a.cycles));
+  AeromapRunOptions opts;
+  opts.threads = jobsOption(a.jobs);
+  const fs::path out = outputFolder(a.out, study, false);
+  std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
+  if (farmWriter()) lock.emplace(out);
+  return runAeromapStudy(study, out, opts);
+}
+
+}  // namespace
+
+Subcommand addAeromapSubcommand(CLI::App& app) {
+  auto a = std::make_shared<AeromapArgs>();
+  auto* am = app.add_subcommand(
+      "aeromap",
+      "Aero map: cycle-mean tethered loads over a grid of speed, frequency, pitch and "
+      "tail angle (paper Fig. 5); resumable");
+  am->add_option("VEHICLE", a->vehicle, "Vehicle file (TOML)")->required();
+  addFieldOption(am, "--speed", "aeromap.speed_mps", a->speed,
+                 "Speeds U (m/s) A:B:N: N values from A to B inclusive")
+      ->required();
+  addFieldOption(am, "--freq", "aeromap.freq_hz", a->freq, "Flapping frequencies f (Hz) A:B:N")
+      ->required();
+  addFieldOption(am, "--theta", "aeromap.theta_deg", a->theta, "Mean pitch attitudes (deg) A:B:N")
+      ->required();
+  addFieldOption(am, "--tail", "aeromap.tail_angle_deg", a->tail,
+                 "Tail elevation angles delta_T (deg) A:B:N (default: the vehicle's "
+                 "operating-point tail angle)");
+  addFieldOption(am, "--cycles", "aeromap.cycles", a->cycles,
+                 "Maximum flapping cycles per point (default 40)");
+  addFieldOption(am, "-j,--jobs", "jobs", a->jobs, "Worker threads");
+  am->add_option("-o,--output", a->out,
+                 "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
+                 "resumes from the journal there")
+      ->check(nonEmptyPath());
+  return {am, [a] { return runAeromap(*a); }, true};
+}
+
+}  // namespace orni::studies::cli

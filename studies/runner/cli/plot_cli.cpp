@@ -1,0 +1,47 @@
+// `ornithopter plot RUN_DIR`: redraws the figures of a finished run.
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <system_error>
+
+#include "studies/runner/cli/cli_options.hpp"
+#include "studies/runner/cli/subcommands.hpp"
+#include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
+
+namespace orni::studies::cli {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+int runPlot(const std::string& plot_dir) {
+  const fs::path dir(plot_dir);
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec))
+    throw CliError("command line: RUN_DIR " + plot_dir + ": " +
+                   (fs::exists(dir, ec) ? "not a folder" : "no such folder"));
+  if (!fs::is_regular_file(dir / "summary.json", ec))
+    throw CliError("command line: RUN_DIR " + plot_dir +
+                   ": not a run folder (no summary.json; expected the output folder of an "
+                   "ornithopter run)");
+  const OutputFolderLock lock(dir);
+  const int n = redrawFigures(dir);
+  if (n == 0)
+    throw CliError("command line: RUN_DIR " + plot_dir +
+                   ": no figure scripts (*.gp) to draw (this run drew no figures)");
+  std::cout << "redrew " << n << " figure(s) in " << plot_dir << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+Subcommand addPlotSubcommand(CLI::App& app) {
+  auto dir = std::make_shared<std::string>();
+  auto* plot = app.add_subcommand("plot", "(Re)draw the figures of a finished run");
+  plot->add_option("RUN_DIR", *dir, "Run output folder")->required()->check(nonEmptyPath());
+  return {plot, [dir] { return runPlot(*dir); }, false};
+}
+
+}  // namespace orni::studies::cli
