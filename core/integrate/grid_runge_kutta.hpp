@@ -23,8 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "core/integrate/erk_integrator.hpp"
-#include "core/integrate/imex_integrator.hpp"
+#include "core/integrate/integrator_options.hpp"
 
 namespace orni {
 
