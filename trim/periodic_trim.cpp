@@ -46,11 +46,8 @@ double orbitCheck(const FlightCoreModel& model, const std::vector<double>& x,
   sys.absoluteTolerances(rel_tol, 0.1 * rel_tol, 0.1 * rel_tol, &io.abs_tol);
   const double T = 1.0 / p[kPeriodFrequency];
   io.max_step = T / 8.0;
-  io.method = ErkMethod::kArk436;
   using Imex = ModalImex<FreeFlightSystem>;
-  OdeIntegrator integ = sys.hasModes()
-                            ? OdeIntegrator(n, &Imex::explicitRhs, Imex::part(), &sys, io)
-                            : OdeIntegrator(n, &FreeFlightSystem::rhsCallback, &sys, io);
+  OdeIntegrator integ(n, Imex::rhs(sys.hasModes()), &sys, Imex::method(sys.hasModes()), io);
   integ.reset(0.0, y0.data());
   if (integ.advanceTo(T) != IntegratorStatus::kOk) return std::numeric_limits<double>::quiet_NaN();
   double worst = 0.0;

@@ -167,13 +167,11 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   iopt.max_step = period_s / 8.0;
   // Flexible wing: the modal stiffness implicit (modal_implicit_split.hpp) unless the options ask
   // for the explicit table; explicit steps are stability-limited, where ARK4(3)6L needs fewer
-  // evaluations than Dormand-Prince (erk_integrator.hpp).
-  iopt.method = ErkMethod::kArk436;
+  // evaluations than Dormand-Prince (integration_method.hpp). The rigid wing: ARK4(3)6L too.
   using Imex = ModalImex<FreeFlightSystem>;
-  OdeIntegrator integrator =
-      sys.hasModes() && options.modal_integration == ModalIntegration::kImplicit
-          ? OdeIntegrator(n, &Imex::explicitRhs, Imex::part(), &sys, iopt)
-          : OdeIntegrator(n, &FreeFlightSystem::rhsCallback, &sys, iopt);
+  const bool implicit =
+      sys.hasModes() && options.modal_integration == ModalIntegration::kImplicit;
+  OdeIntegrator integrator(n, Imex::rhs(implicit), &sys, Imex::method(implicit), iopt);
   integrator.reset(0.0, y0.data());
 
   // What the run keeps (history_window.hpp): the caller's last cycles (at least the last one, for

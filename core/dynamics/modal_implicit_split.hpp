@@ -22,7 +22,8 @@
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/small_cholesky.hpp"
-#include "core/integrate/imex_integrator.hpp"
+#include "core/integrate/integration_method.hpp"
+#include "core/integrate/integrator_options.hpp"
 
 namespace orni {
 
@@ -59,8 +60,9 @@ class ModalImplicitSplit {
 /// their values at the default rel_tol 1e-4 (tests/unit/dynamics/test_modal_imex.cpp).
 void modalAbsoluteTolerances(double rel_tol, int mode_count, int offset, std::vector<double>* atol);
 
-/// The IMEX callbacks of a System with rhs(t, y, ydot), stateCount() and a ModalImplicitSplit&
-/// split(): explicit part = rhs - L y, implicit part and solve from the split.
+/// The IMEX callbacks of a System with rhs(t, y, ydot), stateCount(), a ModalImplicitSplit&
+/// split() and the full right-hand side as System::rhsCallback: explicit part = rhs - L y,
+/// implicit part and solve from the split; and the flexible wing's two integrations of them.
 template <class System>
 struct ModalImex {
   static int explicitRhs(double t, const double* y, double* ydot, void* self) {
@@ -78,6 +80,17 @@ struct ModalImex {
     return 0;
   }
   static LinearImplicitPart part() { return LinearImplicitPart{&implicitRhs, &solve}; }
+
+  /// The right-hand side an OdeIntegrator integrates explicitly: the explicit part with the modal
+  /// stiffness `implicit`, else the full right-hand side.
+  static RhsFunction rhs(bool implicit) { return implicit ? &explicitRhs : &System::rhsCallback; }
+  /// Its method: with the modal stiffness implicit, the additive pair ARK4(3)7L[2]SA; else all
+  /// explicit, where the steps are stability-limited (the highest mode) and the explicit table of
+  /// ARK4(3)6L[2]SA needs fewer evaluations than Dormand-Prince.
+  static IntegrationMethod method(bool implicit) {
+    return implicit ? IntegrationMethod::implicitExplicit(part(), ImexMethod::kArk437)
+                    : IntegrationMethod::explicitRungeKutta(ErkMethod::kArk436);
+  }
 };
 
 }  // namespace orni

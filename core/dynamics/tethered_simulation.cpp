@@ -349,13 +349,9 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     FlexibleTetheredSystem sys(model, *model.flexible, body, control);
     IntegratorOptions iopt = integratorOptions(sys, point, options);
     using Imex = ModalImex<FlexibleTetheredSystem>;
-    // Explicit: stability-limited steps (the highest mode), where the ARK4(3)6L explicit table
-    // needs fewer evaluations than Dormand-Prince.
-    iopt.method = ErkMethod::kArk436;
-    OdeIntegrator integrator =
-        options.modal_integration == ModalIntegration::kImplicit
-            ? OdeIntegrator(sys.stateCount(), &Imex::explicitRhs, Imex::part(), &sys, iopt)
-            : OdeIntegrator(sys.stateCount(), &FlexibleTetheredSystem::rhsCallback, &sys, iopt);
+    const bool implicit = options.modal_integration == ModalIntegration::kImplicit;
+    OdeIntegrator integrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit),
+                             iopt);
     SimulationSummary s = runCycles(sys, integrator, model, point, options, history, observer);
     s.final_mode_count = model.flexible->mode_count;
     return s;
@@ -364,8 +360,8 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     return sampleStatelessCycles(model, point, options, history, observer);
   RigidTetheredSystem sys(model, body, control);
   IntegratorOptions iopt = integratorOptions(sys, point, options);
-  iopt.method = ErkMethod::kDormandPrince5;
-  OdeIntegrator integrator(sys.stateCount(), &RigidTetheredSystem::rhsCallback, &sys, iopt);
+  OdeIntegrator integrator(sys.stateCount(), &RigidTetheredSystem::rhsCallback, &sys,
+                           IntegrationMethod::explicitRungeKutta(ErkMethod::kDormandPrince5), iopt);
   return runCycles(sys, integrator, model, point, options, history, observer);
 }
 

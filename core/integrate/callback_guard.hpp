@@ -8,7 +8,7 @@
 #include <cmath>
 #include <exception>
 
-#include "core/integrate/erk_integrator.hpp"
+#include "core/integrate/integrator_options.hpp"
 
 namespace orni::detail {
 

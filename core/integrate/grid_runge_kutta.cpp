@@ -174,6 +174,17 @@ double GridRungeKutta::errorNorm(const GridStepControl& control) const {
   return std::sqrt(sum / n_);
 }
 
+bool GridRungeKutta::carryLastStage() {
+  if (!tab_.fsal) return false;
+  const std::size_t n = static_cast<std::size_t>(n_);
+  const std::size_t s1 = static_cast<std::size_t>(tab_.stages - 1) * n;
+  std::copy(Fe_.begin() + static_cast<std::ptrdiff_t>(s1),
+            Fe_.begin() + static_cast<std::ptrdiff_t>(s1 + n), Fe_.begin());
+  std::copy(Fi_.begin() + static_cast<std::ptrdiff_t>(s1),
+            Fi_.begin() + static_cast<std::ptrdiff_t>(s1 + n), Fi_.begin());
+  return true;
+}
+
 bool GridRungeKutta::integrateAdaptive(double t0_s, double t1_s, const double* y0,
                                        const GridStepControl& control, std::vector<double>* grid,
                                        double* y1) {
@@ -228,16 +239,7 @@ bool GridRungeKutta::integrateAdaptive(double t0_s, double t1_s, const double* y
     t = last ? t1_s : t + h_try;
     std::copy(y_new_.begin(), y_new_.end(), y_.begin());
     grid->push_back(last ? 1.0 : (t - t0_s) / span);
-    first_known = false;
-    if (tab_.fsal) {
-      const std::size_t n = static_cast<std::size_t>(n_);
-      const std::size_t s1 = static_cast<std::size_t>(tab_.stages - 1) * n;
-      std::copy(Fe_.begin() + static_cast<std::ptrdiff_t>(s1),
-                Fe_.begin() + static_cast<std::ptrdiff_t>(s1 + n), Fe_.begin());
-      std::copy(Fi_.begin() + static_cast<std::ptrdiff_t>(s1),
-                Fi_.begin() + static_cast<std::ptrdiff_t>(s1 + n), Fi_.begin());
-      first_known = true;
-    }
+    first_known = carryLastStage();
     double factor = err > 0.0 ? 0.9 * std::pow(err, expo) : 5.0;
     factor = std::min(rejected ? 1.0 : 5.0, std::max(0.2, factor));
     h = std::min(h_max, h_try * factor);
@@ -275,15 +277,7 @@ bool GridRungeKutta::integrateOnGrid(double t0_s, double t1_s, const std::vector
       }
     std::copy(y_new_.begin(), y_new_.end(), y_.begin());
     t = t_next;
-    if (tab_.fsal) {
-      const std::size_t n = static_cast<std::size_t>(n_);
-      const std::size_t s1 = static_cast<std::size_t>(tab_.stages - 1) * n;
-      std::copy(Fe_.begin() + static_cast<std::ptrdiff_t>(s1),
-                Fe_.begin() + static_cast<std::ptrdiff_t>(s1 + n), Fe_.begin());
-      std::copy(Fi_.begin() + static_cast<std::ptrdiff_t>(s1),
-                Fi_.begin() + static_cast<std::ptrdiff_t>(s1 + n), Fi_.begin());
-      first_known = true;
-    }
+    first_known = carryLastStage();
     if (observer) observer(static_cast<int>(k), t, y_.data(), observer_data);
   }
   std::copy(y_.begin(), y_.end(), y1);

@@ -23,8 +23,7 @@
 #include <string>
 #include <vector>
 
-#include "core/integrate/erk_integrator.hpp"
-#include "core/integrate/imex_integrator.hpp"
+#include "core/integrate/integrator_options.hpp"
 
 namespace orni {
 
@@ -79,6 +78,9 @@ class GridRungeKutta {
   // right-hand side fails (rhs_code_ says how).
   bool step(double t, double h, bool first_stage_known, bool with_error);
   double errorNorm(const GridStepControl& control) const;
+  // After an accepted step with a first-same-as-last table: the last stage's derivatives become
+  // the first stage's of the next step. Returns whether they did (tab_.fsal).
+  bool carryLastStage();
 
   int n_;
   RhsFunction fe_;

@@ -1,58 +1,235 @@
 #include "core/integrate/ode_integrator.hpp"
 
+#include <arkode/arkode_arkstep.h>
+#include <arkode/arkode_erkstep.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "core/integrate/callback_guard.hpp"
+#include "core/integrate/linear_stage_solver.hpp"
+#include "core/integrate/serial_vector_ops.hpp"
+
 namespace orni {
 
 namespace {
-const char* erkName(ErkMethod m) {
-  switch (m) {
-    case ErkMethod::kDormandPrince5: return "ARKODE ERKStep Dormand-Prince 5(4)";
-    case ErkMethod::kVerner6: return "ARKODE ERKStep Verner 6(5)";
-    case ErkMethod::kFehlberg8: return "ARKODE ERKStep Fehlberg 8(7)";
-    case ErkMethod::kBogackiShampine3: return "ARKODE ERKStep Bogacki-Shampine 3(2)";
-    case ErkMethod::kArk436: return "ARKODE ERKStep ARK4(3)6L[2]SA explicit table";
-  }
-  return "ARKODE ERKStep";
-}
-const char* imexName(ImexMethod m) {
-  switch (m) {
-    case ImexMethod::kArk324: return "ARKODE ARKStep ARK3(2)4L[2]SA IMEX, modal stiffness implicit";
-    case ImexMethod::kArk436: return "ARKODE ARKStep ARK4(3)6L[2]SA IMEX, modal stiffness implicit";
-    case ImexMethod::kArk437: return "ARKODE ARKStep ARK4(3)7L[2]SA IMEX, modal stiffness implicit";
-    case ImexMethod::kArk548: return "ARKODE ARKStep ARK5(4)8L[2]SAb IMEX, modal stiffness implicit";
-  }
-  return "ARKODE ARKStep IMEX";
-}
+SUNContext asContext(void* p) { return static_cast<SUNContext>(p); }
+N_Vector asVector(void* p) { return static_cast<N_Vector>(p); }
 }  // namespace
 
-OdeIntegrator::OdeIntegrator(int state_size, RhsFunction rhs, void* user_data,
-                             const IntegratorOptions& opts)
-    : erk_(std::make_unique<ErkIntegrator>(state_size, rhs, user_data, opts)),
-      name_(erkName(opts.method)) {}
+// The C callbacks (ARKRhsFn). Catch everything: no exception crosses SUNDIALS.
+struct OdeCallback {
+  static int call(OdeIntegrator* self, RhsFunction f, sunrealtype t, N_Vector y, N_Vector ydot) {
+    return detail::guardedRhs(f, t, y, ydot, self->n_, self->user_, &self->pending_);
+  }
+  static int explicitRhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) {
+    auto* self = static_cast<OdeIntegrator*>(user_data);
+    return call(self, self->rhs_, t, y, ydot);
+  }
+  static int implicitRhs(sunrealtype t, N_Vector y, N_Vector ydot, void* user_data) {
+    auto* self = static_cast<OdeIntegrator*>(user_data);
+    return call(self, self->method_.linearPart().apply, t, y, ydot);
+  }
+};
 
-OdeIntegrator::OdeIntegrator(int state_size, RhsFunction explicit_rhs,
-                             LinearImplicitPart implicit, void* user_data,
-                             const IntegratorOptions& opts, ImexMethod method)
-    : imex_(std::make_unique<ImexIntegrator>(state_size, explicit_rhs, implicit, user_data, opts,
-                                             method)),
-      name_(imexName(method)) {}
+namespace detail {
+
+// The ARKODE calls of one stepper module. SUNDIALS 6 has the same calls under two prefixes
+// (ERKStep, ARKStep); what differs is creation, the method's configuration and the counter of
+// right-hand sides. Set-up order (both): create, user data, tolerances, configure, step limits.
+struct ArkodeStepper {
+  const char* module;  // "ERKStep" or "ARKStep", for the error messages
+  void* (*create)(sunrealtype t0, N_Vector y, SUNContext context);
+  // The method's own settings: the Butcher table(s); for ARKStep the stage solver.
+  void (*configure)(void* mem, const IntegrationMethod& method, LinearStageSolver* stage_solver);
+  int (*set_user_data)(void* mem, void* user_data);
+  int (*sv_tolerances)(void* mem, sunrealtype rel_tol, N_Vector abs_tol);
+  int (*set_max_num_steps)(void* mem, long max_steps);
+  int (*set_max_step)(void* mem, sunrealtype max_step);
+  int (*reset)(void* mem, sunrealtype t0, N_Vector y0);
+  int (*evolve)(void* mem, sunrealtype tout, N_Vector yout, sunrealtype* tret, int itask);
+  int (*num_steps)(void* mem, long* n);
+  int (*num_step_attempts)(void* mem, long* n);
+  int (*num_rhs_evals)(void* mem, long* n);  // of the explicit part
+  char* (*flag_name)(long flag);             // malloc'ed by SUNDIALS (6.x): the caller frees it
+  void (*free)(void** mem);
+};
+
+namespace {
+
+void configureErk(void* mem, const IntegrationMethod& method, LinearStageSolver*) {
+  ARKODE_ERKTableID table = ARKODE_DORMAND_PRINCE_7_4_5;
+  switch (method.explicitTable()) {
+    case ErkMethod::kDormandPrince5: table = ARKODE_DORMAND_PRINCE_7_4_5; break;
+    case ErkMethod::kVerner6: table = ARKODE_VERNER_8_5_6; break;
+    case ErkMethod::kFehlberg8: table = ARKODE_FEHLBERG_13_7_8; break;
+    case ErkMethod::kBogackiShampine3: table = ARKODE_BOGACKI_SHAMPINE_4_2_3; break;
+    case ErkMethod::kArk436: table = ARKODE_ARK436L2SA_ERK_6_3_4; break;
+  }
+  if (ERKStepSetTableNum(mem, table) != ARK_SUCCESS)
+    throw std::runtime_error("ERKStepSetTableNum failed");
+}
+
+void configureArk(void* mem, const IntegrationMethod& method, LinearStageSolver* stage_solver) {
+  ARKODE_DIRKTableID dirk = ARKODE_ARK437L2SA_DIRK_7_3_4;
+  ARKODE_ERKTableID erk = ARKODE_ARK437L2SA_ERK_7_3_4;
+  switch (method.additivePair()) {
+    case ImexMethod::kArk324:
+      dirk = ARKODE_ARK324L2SA_DIRK_4_2_3;
+      erk = ARKODE_ARK324L2SA_ERK_4_2_3;
+      break;
+    case ImexMethod::kArk436:
+      dirk = ARKODE_ARK436L2SA_DIRK_6_3_4;
+      erk = ARKODE_ARK436L2SA_ERK_6_3_4;
+      break;
+    case ImexMethod::kArk437: break;
+    case ImexMethod::kArk548:
+      dirk = ARKODE_ARK548L2SAb_DIRK_8_4_5;
+      erk = ARKODE_ARK548L2SAb_ERK_8_4_5;
+      break;
+  }
+  if (ARKStepSetTableNum(mem, dirk, erk) != ARK_SUCCESS)
+    throw std::runtime_error("ARKStepSetTableNum failed");
+  if (ARKStepSetNonlinearSolver(mem, stage_solver->attachTo(mem)) != ARK_SUCCESS)
+    throw std::runtime_error("ARKStepSetNonlinearSolver failed");
+  // The stage solve is exact: the implicit RHS of a stage follows from its solution.
+  ARKStepSetDeduceImplicitRhs(mem, SUNTRUE);
+}
+
+const ArkodeStepper kErkStep{
+    "ERKStep",
+    [](sunrealtype t0, N_Vector y, SUNContext c) {
+      return ERKStepCreate(&OdeCallback::explicitRhs, t0, y, c);
+    },
+    &configureErk,
+    &ERKStepSetUserData,
+    &ERKStepSVtolerances,
+    &ERKStepSetMaxNumSteps,
+    &ERKStepSetMaxStep,
+    &ERKStepReset,
+    &ERKStepEvolve,
+    &ERKStepGetNumSteps,
+    &ERKStepGetNumStepAttempts,
+    &ERKStepGetNumRhsEvals,
+    &ERKStepGetReturnFlagName,
+    &ERKStepFree};
+
+const ArkodeStepper kArkStep{
+    "ARKStep",
+    [](sunrealtype t0, N_Vector y, SUNContext c) {
+      return ARKStepCreate(&OdeCallback::explicitRhs, &OdeCallback::implicitRhs, t0, y, c);
+    },
+    &configureArk,
+    &ARKStepSetUserData,
+    &ARKStepSVtolerances,
+    &ARKStepSetMaxNumSteps,
+    &ARKStepSetMaxStep,
+    &ARKStepReset,
+    &ARKStepEvolve,
+    &ARKStepGetNumSteps,
+    &ARKStepGetNumStepAttempts,
+    [](void* mem, long* n) {
+      long fi = 0;
+      return ARKStepGetNumRhsEvals(mem, n, &fi);
+    },
+    &ARKStepGetReturnFlagName,
+    &ARKStepFree};
+
+}  // namespace
+}  // namespace detail
+
+OdeIntegrator::OdeIntegrator(int state_size, RhsFunction rhs, void* user_data,
+                             const IntegrationMethod& method, const IntegratorOptions& opts)
+    : n_(state_size), rhs_(rhs), user_(user_data), method_(method), opts_(opts),
+      stepper_(method.isImplicitExplicit() ? &detail::kArkStep : &detail::kErkStep) {
+  std::string why;
+  if (state_size < 1) throw std::invalid_argument("OdeIntegrator: state size must be >= 1");
+  if (!rhs) throw std::invalid_argument("OdeIntegrator: a right-hand side is needed");
+  if (!opts.IsValid(state_size, &why)) throw std::invalid_argument("OdeIntegrator: " + why);
+  SUNContext c = nullptr;
+  if (SUNContext_Create(nullptr, &c) != 0) throw std::runtime_error("SUNContext_Create failed");
+  context_ = c;
+  y_ = N_VNew_Serial(n_, c);
+  atol_ = N_VNew_Serial(n_, c);
+  if (!y_ || !atol_) throw std::runtime_error("N_VNew_Serial failed");
+  // Single-pass linear combinations (set before the stepper clones the vector, so every work
+  // vector inherits them): the integrator's own vector work is comparable to the RHS for ~60
+  // states.
+  detail::installSinglePassOps(asVector(y_));
+  double* a = N_VGetArrayPointer(asVector(atol_));
+  for (int i = 0; i < n_; ++i) a[i] = opts.abs_tol[static_cast<std::size_t>(i)];
+  N_VConst(0.0, asVector(y_));
+  if (method.isImplicitExplicit())
+    stage_solver_ = std::make_unique<detail::LinearStageSolver>(
+        c, asVector(y_), method.linearPart().solve, user_, &pending_);
+}
+
+OdeIntegrator::~OdeIntegrator() {
+  if (mem_) stepper_->free(&mem_);
+  stage_solver_.reset();
+  if (atol_) N_VDestroy(asVector(atol_));
+  if (y_) N_VDestroy(asVector(y_));
+  if (context_) {
+    SUNContext c = asContext(context_);
+    SUNContext_Free(&c);
+  }
+}
 
 void OdeIntegrator::reset(double t0, const double* y0) {
-  if (erk_) erk_->reset(t0, y0); else imex_->reset(t0, y0);
+  double* y = N_VGetArrayPointer(asVector(y_));
+  for (int i = 0; i < n_; ++i) y[i] = y0[i];
+  t_ = t0;
+  if (mem_) {
+    stepper_->reset(mem_, t0, asVector(y_));
+    return;
+  }
+  mem_ = stepper_->create(t0, asVector(y_), asContext(context_));
+  if (!mem_) throw std::runtime_error(std::string(stepper_->module) + "Create failed");
+  stepper_->set_user_data(mem_, this);
+  stepper_->sv_tolerances(mem_, opts_.rel_tol, asVector(atol_));
+  stepper_->configure(mem_, method_, stage_solver_.get());
+  stepper_->set_max_num_steps(mem_, opts_.max_steps);
+  if (opts_.max_step > 0.0) stepper_->set_max_step(mem_, opts_.max_step);
 }
+
 IntegratorStatus OdeIntegrator::advanceTo(double tout) {
-  return erk_ ? erk_->advanceTo(tout) : imex_->advanceTo(tout);
+  if (!mem_) throw std::logic_error("OdeIntegrator::advanceTo before reset");
+  sunrealtype t_reached = t_;
+  const int flag = stepper_->evolve(mem_, tout, asVector(y_), &t_reached, ARK_NORMAL);
+  detail::rethrowPending(&pending_);
+  t_ = t_reached;
+  if (flag < 0) {
+    char* name = stepper_->flag_name(flag);
+    last_error_ = std::string("ARKODE ") + stepper_->module + " failed at t = " +
+                  std::to_string(t_reached) + " s: " + (name ? name : "unknown flag");
+    std::free(name);
+    return IntegratorStatus::kFailed;
+  }
+  return IntegratorStatus::kOk;
 }
-const double* OdeIntegrator::state() const { return erk_ ? erk_->state() : imex_->state(); }
-double OdeIntegrator::time() const { return erk_ ? erk_->time() : imex_->time(); }
-long OdeIntegrator::steps() const { return erk_ ? erk_->steps() : imex_->steps(); }
-long OdeIntegrator::rhsEvaluations() const {
-  return erk_ ? erk_->rhsEvaluations() : imex_->rhsEvaluations();
+
+const double* OdeIntegrator::state() const { return N_VGetArrayPointer(asVector(y_)); }
+
+long OdeIntegrator::steps() const {
+  long n = 0;
+  if (mem_) stepper_->num_steps(mem_, &n);
+  return n;
 }
+
 long OdeIntegrator::stepAttempts() const {
-  return erk_ ? erk_->stepAttempts() : imex_->stepAttempts();
+  long n = 0;
+  if (mem_) stepper_->num_step_attempts(mem_, &n);
+  return n;
 }
-const std::string& OdeIntegrator::lastError() const {
-  return erk_ ? erk_->lastError() : imex_->lastError();
+
+long OdeIntegrator::rhsEvaluations() const {
+  long n = 0;
+  if (mem_) stepper_->num_rhs_evals(mem_, &n);
+  return n;
 }
+
+long OdeIntegrator::stageSolves() const { return stage_solver_ ? stage_solver_->solves() : 0; }
 
 }  // namespace orni

@@ -1,40 +1,74 @@
-// One handle for the two integrators of the flight simulations: explicit Runge-Kutta (ERKStep) or
-// the implicit-explicit split with a linear implicit part (ARKStep). The simulation loops are the
-// same for both; the choice is made once when the integrator is built.
+// The ODE integrator of the flight simulations: an RAII wrapper around SUNDIALS ARKODE
+// (structure.md 5.2-5.3) that owns the SUNContext, the state vector and the stepper memory. The
+// IntegrationMethod it is built with (integration_method.hpp) is the only difference between its
+// runs: an explicit Runge-Kutta table (ERKStep) or the implicit-explicit split with a linear
+// implicit part (ARKStep, the stage equations solved exactly in one step by
+// linear_stage_solver.hpp, no Newton iteration, SUNMatrix or SUNLinearSolver). Set-up, advanceTo,
+// the counters and the error path are one code for both; every step stays allocation-free.
+//
+// No exception crosses a C callback (style.md habit 7, callback_guard.hpp): the callback catches,
+// stores the exception and returns an error code; advanceTo() re-throws it after the C call
+// returns. A non-finite derivative is a recoverable failure (the step is retried smaller).
 #pragma once
 
+#include <exception>
 #include <memory>
 #include <string>
 
-#include "core/integrate/erk_integrator.hpp"
-#include "core/integrate/imex_integrator.hpp"
+#include "core/integrate/integration_method.hpp"
+#include "core/integrate/integrator_options.hpp"
 
 namespace orni {
 
+namespace detail {
+class LinearStageSolver;
+struct ArkodeStepper;
+}  // namespace detail
+
 class OdeIntegrator {
  public:
-  /// Explicit: dy/dt = rhs(t, y) with the table opts.method.
-  OdeIntegrator(int state_size, RhsFunction rhs, void* user_data, const IntegratorOptions& opts);
-  /// Implicit-explicit: dy/dt = explicit_rhs(t, y) + L y (imex_integrator.hpp).
-  OdeIntegrator(int state_size, RhsFunction explicit_rhs, LinearImplicitPart implicit,
-                void* user_data, const IntegratorOptions& opts,
-                ImexMethod method = ImexMethod::kArk437);
+  /// dy/dt = rhs(t, y), plus L y when `method` is implicit-explicit (rhs is then the explicit
+  /// part). `user_data` goes to rhs and to the implicit part.
+  OdeIntegrator(int state_size, RhsFunction rhs, void* user_data, const IntegrationMethod& method,
+                const IntegratorOptions& opts);
+  ~OdeIntegrator();
+  OdeIntegrator(const OdeIntegrator&) = delete;
+  OdeIntegrator& operator=(const OdeIntegrator&) = delete;
 
+  /// Restart at t0 from y0 (state_size values).
   void reset(double t0, const double* y0);
+  /// Integrate to tout (interpolating if the integrator stepped past it). On failure the status
+  /// is kFailed and lastError() says why; an exception thrown by a callback is re-thrown.
   IntegratorStatus advanceTo(double tout);
-  const double* state() const;
-  double time() const;
+
+  const double* state() const;  ///< state at time()
+  double time() const { return t_; }
+  int size() const { return n_; }
   long steps() const;
-  long rhsEvaluations() const;  ///< of the (explicit part of the) right-hand side
+  long rhsEvaluations() const;  ///< of rhs (the explicit part: the expensive one)
   long stepAttempts() const;
-  const std::string& lastError() const;
+  long stageSolves() const;     ///< (I - gamma L) solves; 0 for an explicit method
+  const std::string& lastError() const { return last_error_; }
+  const IntegrationMethod& method() const { return method_; }
   /// "ARKODE ERKStep <table>" or "ARKODE ARKStep <pair> (IMEX, ...)", for the summaries.
-  const std::string& methodName() const { return name_; }
+  std::string methodName() const { return method_.name(); }
 
  private:
-  std::unique_ptr<ErkIntegrator> erk_;
-  std::unique_ptr<ImexIntegrator> imex_;
-  std::string name_;
+  friend struct OdeCallback;
+  int n_;
+  RhsFunction rhs_;
+  void* user_;
+  IntegrationMethod method_;
+  IntegratorOptions opts_;
+  const detail::ArkodeStepper* stepper_;  // ERKStep or ARKStep calls, from method_
+  void* context_ = nullptr;  // SUNContext
+  void* y_ = nullptr;        // N_Vector
+  void* atol_ = nullptr;     // N_Vector
+  std::unique_ptr<detail::LinearStageSolver> stage_solver_;  // implicit-explicit only
+  void* mem_ = nullptr;      // ERKStep or ARKStep memory
+  double t_ = 0.0;
+  std::exception_ptr pending_;
+  std::string last_error_;
 };
 
 }  // namespace orni

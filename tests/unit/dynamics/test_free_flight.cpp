@@ -9,7 +9,7 @@
 
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/free_flight_system.hpp"
-#include "core/integrate/erk_integrator.hpp"
+#include "core/integrate/ode_integrator.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
 namespace orni {
@@ -92,7 +92,8 @@ TEST(DynamicsFreeFlight, MasslessNonFlappingWingsReduceToPaperEq1) {
   IntegratorOptions io;
   io.rel_tol = 1e-9;
   sys.absoluteTolerances(1e-9, 1e-11, 1e-10, &io.abs_tol);
-  ErkIntegrator integ(sys.stateCount(), &FreeFlightSystem::rhsCallback, &sys, io);
+  OdeIntegrator integ(sys.stateCount(), &FreeFlightSystem::rhsCallback, &sys,
+                      IntegrationMethod::explicitRungeKutta(ErkMethod::kDormandPrince5), io);
   integ.reset(0.0, y.data());
   const double t_end = 0.25;
   ASSERT_EQ(integ.advanceTo(t_end), IntegratorStatus::kOk);
@@ -149,7 +150,8 @@ double energyDrift(StructureLevel level, double* energy_scale,
   IntegratorOptions io;
   io.rel_tol = 1e-10;
   sys.absoluteTolerances(1e-10, 1e-12, 1e-12, &io.abs_tol);
-  ErkIntegrator integ(sys.stateCount(), &FreeFlightSystem::rhsCallback, &sys, io);
+  OdeIntegrator integ(sys.stateCount(), &FreeFlightSystem::rhsCallback, &sys,
+                      IntegrationMethod::explicitRungeKutta(ErkMethod::kDormandPrince5), io);
   integ.reset(0.0, y.data());
   const double E0 = totalEnergy(sys, 0.0, y.data());
   *energy_scale = 0.5 * v.body.mass_kg * (b.U_mps * b.U_mps + b.W_mps * b.W_mps);
@@ -223,7 +225,8 @@ TEST(DynamicsFreeFlight, TailGliderSettlesToItsAnalyticSteadyGlide) {
   IntegratorOptions io;
   io.rel_tol = 1e-8;
   sys.absoluteTolerances(1e-8, 1e-10, 1e-10, &io.abs_tol);
-  ErkIntegrator integ(sys.stateCount(), &FreeFlightSystem::rhsCallback, &sys, io);
+  OdeIntegrator integ(sys.stateCount(), &FreeFlightSystem::rhsCallback, &sys,
+                      IntegrationMethod::explicitRungeKutta(ErkMethod::kDormandPrince5), io);
   integ.reset(0.0, y.data());
   ASSERT_EQ(integ.advanceTo(120.0), IntegratorStatus::kOk);
   const double* yf = integ.state();

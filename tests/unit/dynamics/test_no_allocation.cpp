@@ -12,8 +12,7 @@
 #include "core/dynamics/flexible_tethered.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/free_flight_system.hpp"
-#include "core/integrate/erk_integrator.hpp"
-#include "core/integrate/imex_integrator.hpp"
+#include "core/integrate/ode_integrator.hpp"
 #include "tests/support/magpie_vehicle.hpp"
 #include "tests/support/test_vehicles.hpp"
 
@@ -88,7 +87,8 @@ void expectNoAllocationInRhs(VehicleModel v) {
   IntegratorOptions opts;
   opts.rel_tol = 1e-4;
   opts.abs_tol.assign(static_cast<std::size_t>(n), 1e-6);
-  ErkIntegrator integrator(n, &rhs, &d, opts);
+  OdeIntegrator integrator(n, &rhs, &d,
+                           IntegrationMethod::explicitRungeKutta(ErkMethod::kDormandPrince5), opts);
   integrator.reset(0.0, y.data());
   ASSERT_EQ(integrator.advanceTo(0.05), IntegratorStatus::kOk);  // warm-up
   const long before_steps = g_allocations.load();
@@ -124,7 +124,9 @@ void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>
   IntegratorOptions opts;
   opts.rel_tol = rel_tol;
   sys.absoluteTolerances(rel_tol, 1e-5, 1e-5, &opts.abs_tol);
-  ImexIntegrator integrator(n, &Imex::explicitRhs, Imex::part(), &sys, opts);
+  OdeIntegrator integrator(n, &Imex::explicitRhs, &sys,
+                           IntegrationMethod::implicitExplicit(Imex::part(), ImexMethod::kArk437),
+                           opts);
   integrator.reset(0.0, y0.data());
   ASSERT_EQ(integrator.advanceTo(0.02), IntegratorStatus::kOk) << integrator.lastError();
   const long before_steps = g_allocations.load();

@@ -65,11 +65,8 @@ std::vector<std::vector<double>> flyPeriods(const FlightCoreModel& model,
   sys.absoluteTolerances(rel_tol, 0.1 * rel_tol, 0.1 * rel_tol, &io.abs_tol);
   const double T = 1.0 / kFreqHz;
   io.max_step = T / 8.0;
-  io.method = ErkMethod::kArk436;
   using Imex = ModalImex<FreeFlightSystem>;
-  OdeIntegrator integ = sys.hasModes()
-                            ? OdeIntegrator(n, &Imex::explicitRhs, Imex::part(), &sys, io)
-                            : OdeIntegrator(n, &FreeFlightSystem::rhsCallback, &sys, io);
+  OdeIntegrator integ(n, Imex::rhs(sys.hasModes()), &sys, Imex::method(sys.hasModes()), io);
   integ.reset(0.0, y0.data());
   std::vector<std::vector<double>> ends;
   for (int k = 1; k <= cycles; ++k) {
