@@ -8,7 +8,8 @@
 # only files of the same folder may include (and the unit tests, which are not checked here).
 ORNI_PRIVATE_HEADERS="core/dynamics/flexible_tethered.hpp core/dynamics/flight_path_frame.hpp \
 core/dynamics/history_window.hpp core/integrate/callback_guard.hpp \
-core/integrate/serial_vector_ops.hpp core/structure/craig_bampton.hpp \
+core/integrate/linear_stage_solver.hpp core/integrate/serial_vector_ops.hpp \
+core/structure/craig_bampton.hpp \
 core/structure/rigid_body_vectors.hpp"
 # One awk pass over every file (a loop in bash over ~260 files took 10-15 s).
 
