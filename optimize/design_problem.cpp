@@ -170,7 +170,7 @@ DesignProblem::DesignProblem(VehicleModel base, DesignSpace space, DesignProblem
       throw std::invalid_argument("design variable '" + v.name +
                                   "': expected lower < upper and the initial value inside");
     for (const DesignField& f : v.fields) {
-      if (f.member >= static_cast<int>(base_.wing.members.size()))
+      if (!f.ref.number || f.ref.index >= f.ref.number->count(base_))
         throw std::invalid_argument("design variable '" + v.name + "': member index out of range");
       const FieldSpec& spec = f.spec();
       if (!spec.siRange().contains(v.lower) || !spec.siRange().contains(v.upper))

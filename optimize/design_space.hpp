@@ -22,36 +22,21 @@
 #include <vector>
 
 #include "core/model/field_table.hpp"
+#include "core/model/vehicle_fields.hpp"
 #include "core/model/vehicle_model.hpp"
 
 namespace orni::opt {
 
-/// Which vehicle field a design variable sets.
-enum class DesignFieldKind {
-  kTailArea,
-  kTailAspectRatio,
-  kTailArm,
-  kTailHeight,
-  kHingeX,
-  kHingeZ,
-  kSkinThickness,
-  kMemberDiameter,
-  kMemberStartX,
-  kMemberStartY,
-  kMemberEndX,
-  kMemberEndY,
-};
-
-/// One resolved field: for member fields, the index of the member in WingModel::members.
+/// One resolved field: the vehicle number it sets (core/model/vehicle_fields.hpp: the accessor of
+/// its key and, for member fields, the index of the member in WingModel::members).
 struct DesignField {
-  DesignFieldKind kind = DesignFieldKind::kTailArea;
-  int member = -1;
+  VehicleNumberRef ref;
   std::string name;  ///< the resolved key ("wing.members.STIF1.diameter_m")
 
   /// The field-table entry of the vehicle key this field sets ("tail.area_m2",
   /// "wing.members[].diameter_m", "wing.members[].end_xy_m" for end_x_m and end_y_m): its range
   /// (SI = file units for every design field) bounds the variable.
-  const FieldSpec& spec() const;
+  const FieldSpec& spec() const { return ref.number->spec(); }
 };
 
 /// Resolves a field name (wildcards expanded) against `vehicle`. On failure returns false and says

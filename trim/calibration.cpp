@@ -16,20 +16,6 @@
 namespace orni {
 
 namespace {
-struct Entry {
-  CalibrationParameter p;
-  const char* key;
-};
-constexpr Entry kEntries[] = {
-    {CalibrationParameter::kMemberDiameterScale, "wing.member_diameter_scale"},
-    {CalibrationParameter::kBodyDragArea, "body.drag_area_m2"},
-    {CalibrationParameter::kHingeX, "kinematics.hinge_x_m"},
-    {CalibrationParameter::kHingeZ, "kinematics.hinge_z_m"},
-    {CalibrationParameter::kTailArm, "tail.arm_m"},
-    {CalibrationParameter::kPitchInertia, "body.pitch_inertia_kgm2"},
-    {CalibrationParameter::kP3Position, "wing.p3_aft_of_le_m"},
-};
-
 struct CalibrationContext {
   const VehicleModel* base;
   const CalibrationOptions* options;
@@ -119,44 +105,44 @@ struct Functor {
 };
 }  // namespace
 
-const char* keyOf(CalibrationParameter p) {
-  for (const Entry& e : kEntries)
-    if (e.p == p) return e.key;
-  return "?";
+const std::vector<std::string_view>& calibrationKeys() {
+  static const std::vector<std::string_view> keys = {
+      "wing.member_diameter_scale", "body.drag_area_m2",       "kinematics.hinge_x_m",
+      "kinematics.hinge_z_m",       "tail.arm_m",              "body.pitch_inertia_kgm2",
+      "wing.p3_aft_of_le_m"};
+  return keys;
 }
 
+std::string calibrationKeyList() {
+  std::string list;
+  for (const std::string_view k : calibrationKeys())
+    list += (list.empty() ? "" : ", ") + std::string(k);
+  return list;
+}
+
+std::string keyOf(CalibrationParameter p) { return p.number ? std::string(p.number->key) : "?"; }
+
 bool parseCalibrationParameter(const std::string& key, CalibrationParameter* p) {
-  for (const Entry& e : kEntries)
-    if (key == e.key) {
-      *p = e.p;
-      return true;
+  for (const std::string_view k : calibrationKeys())
+    if (key == k) {
+      p->number = findVehicleNumber(k);
+      return p->number != nullptr;
     }
   return false;
 }
 
-double valueOf(const VehicleModel& v, CalibrationParameter p) {
-  switch (p) {
-    case CalibrationParameter::kMemberDiameterScale: return v.wing.member_diameter_scale;
-    case CalibrationParameter::kBodyDragArea: return v.body.drag_area_m2;
-    case CalibrationParameter::kHingeX: return v.flapping.hinge_x_B_m;
-    case CalibrationParameter::kHingeZ: return v.flapping.hinge_z_B_m;
-    case CalibrationParameter::kTailArm: return v.tail.arm_m;
-    case CalibrationParameter::kPitchInertia: return v.body.pitch_inertia_kgm2;
-    case CalibrationParameter::kP3Position: return v.wing.p3_aft_of_le_m;
-  }
-  return 0.0;
+CalibrationParameter calibrationParameter(const std::string& key) {
+  CalibrationParameter p;
+  if (!parseCalibrationParameter(key, &p))
+    throw std::invalid_argument("not a calibration key: " + key + " (one of " +
+                                calibrationKeyList() + ")");
+  return p;
 }
 
+double valueOf(const VehicleModel& v, CalibrationParameter p) { return p.number->get(v, 0); }
+
 void setValue(VehicleModel* v, CalibrationParameter p, double value) {
-  switch (p) {
-    case CalibrationParameter::kMemberDiameterScale: v->wing.member_diameter_scale = value; break;
-    case CalibrationParameter::kBodyDragArea: v->body.drag_area_m2 = value; break;
-    case CalibrationParameter::kHingeX: v->flapping.hinge_x_B_m = value; break;
-    case CalibrationParameter::kHingeZ: v->flapping.hinge_z_B_m = value; break;
-    case CalibrationParameter::kTailArm: v->tail.arm_m = value; break;
-    case CalibrationParameter::kPitchInertia: v->body.pitch_inertia_kgm2 = value; break;
-    case CalibrationParameter::kP3Position: v->wing.p3_aft_of_le_m = value; break;
-  }
+  p.number->set(*v, 0, value);
 }
 
 bool CalibrationOptions::IsValid(std::string* why) const {
@@ -167,6 +153,7 @@ bool CalibrationOptions::IsValid(std::string* why) const {
   if (variables.empty() || variables.size() > 3) return fail("1 to 3 calibration variables");
   for (std::size_t i = 0; i < variables.size(); ++i) {
     const CalibrationVariable& v = variables[i];
+    if (!v.parameter.number) return fail("a calibration variable without a key");
     if (!(v.lower < v.upper) || !(v.initial >= v.lower && v.initial <= v.upper))
       return fail(std::string("variable ") + keyOf(v.parameter) +
                   ": needs lower < upper and lower <= initial <= upper");

@@ -23,8 +23,8 @@ CraigBamptonModel craigBampton(const SparseMatrix& stiffness, const SparseMatrix
 
   const SparseMatrix k_ii = extractBlock(stiffness, interior, interior);
   const SparseMatrix m_ii = extractBlock(mass, interior, interior);
-  const int m = options.interior_mode_count < 0 ? ni : std::min(options.interior_mode_count, ni);
-  if (m < 1) throw std::invalid_argument("craigBampton: expected interior_mode_count != 0");
+  const int m = options.max_modes < 0 ? ni : std::min(options.max_modes, ni);
+  if (m < 1) throw std::invalid_argument("craigBampton: expected max_modes != 0");
   const EigenSolution modes = lowestEigenpairs(k_ii, m_ii, m, options.eigen);
   if (!modes.success)
     throw std::runtime_error("craigBampton: fixed-interface eigen-solution failed: " +

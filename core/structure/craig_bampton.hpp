@@ -13,7 +13,7 @@ namespace orni::structure {
 
 struct CraigBamptonOptions {
   /// m, the fixed-interface modes kept; < 0 or >= interior size: all of them (dense solve).
-  int interior_mode_count = -1;
+  int max_modes = -1;
   EigenSolveOptions eigen;
 };
 

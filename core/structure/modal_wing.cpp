@@ -34,7 +34,7 @@ Basis fixedInterfaceBasis(const WingFeModel& fe, const DofPartition& part,
 Basis craigBamptonBasis(const WingFeModel& fe, const DofPartition& part,
                         const ModalWingOptions& options) {
   CraigBamptonOptions cbo;
-  cbo.interior_mode_count = options.selection.max_modes;
+  cbo.max_modes = options.selection.max_modes;
   cbo.eigen = options.eigen;
   const CraigBamptonModel cb = craigBampton(fe.stiffness, fe.mass, part, cbo);
   const OrthonormalModes on = orthonormalise(cb);

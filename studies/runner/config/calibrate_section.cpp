@@ -40,11 +40,7 @@ orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::Vehicl
     orni::CalibrationVariable v;
     const std::string key = t.requiredString("key");
     if (!orni::parseCalibrationParameter(key, &v.parameter))
-      throw t.valueError("key",
-                         "one of wing.member_diameter_scale, body.drag_area_m2, "
-                         "kinematics.hinge_x_m, kinematics.hinge_z_m, tail.arm_m, "
-                         "body.pitch_inertia_kgm2, wing.p3_aft_of_le_m",
-                         "\"" + key + "\"");
+      throw t.valueError("key", "one of " + orni::calibrationKeyList(), "\"" + key + "\"");
     for (const orni::CalibrationVariable& w : o.variables)
       if (w.parameter == v.parameter) throw t.valueError("key", "a key not listed before", key);
     // Bounds and initial value inside the range of the key (SI = file units for these keys).

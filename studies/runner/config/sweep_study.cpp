@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/model/vehicle_fields.hpp"
 #include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/trim_section.hpp"
 #include "trim/sweep_grid.hpp"
@@ -273,25 +274,91 @@ void forEachKeyLine(const std::vector<std::string>& lines, F f) {
   }
 }
 
-/// The keys of the base's sections that vary between points although no axis sets them.
+/// The lines of the run's analysis section in the sections text (the vehicle, written last from
+/// its "[vehicle]" header on, is compared by field: vehicleLines).
+std::vector<std::string> analysisLines(const Study& study, StudyKind run) {
+  std::vector<std::string> lines = splitLines(sectionsText(study, run));
+  const auto vehicle = std::find(lines.begin(), lines.end(), "[vehicle]");
+  if (vehicle == lines.end())
+    throw std::logic_error("sweep: the resolved sections have no [vehicle]");
+  lines.erase(vehicle, lines.end());
+  return lines;
+}
+
+/// A key line of the resolved [vehicle]: its path ("vehicle.wing.members.diameter_m" for every
+/// member, "vehicle.materials.LE1.density_kgpm3") and the numbers it writes (a pair's two).
+struct VehicleLine {
+  std::string path;
+  std::vector<orni::VehicleNumberRef> numbers;
+};
+
+/// The number lines of the resolved [vehicle] of `v`, in the order writeVehicleToml writes them:
+/// the field table's (core/model/vehicle_fields.hpp), the keys of a member or material together,
+/// element by element. Left out, as the writer leaves them out: the keys of an absent [body] or
+/// [tail], and aero.aspect_ratio when 0 (then "from the planform", a comment).
+std::vector<VehicleLine> vehicleLines(const orni::VehicleModel& v) {
+  const std::vector<orni::VehicleNumber>& numbers = orni::vehicleNumbers();
+  std::vector<VehicleLine> lines;
+  auto add = [&](const orni::VehicleNumber& n, std::size_t index) {
+    if (!n.presentIn(v)) return;
+    if (n.key == "aero.aspect_ratio" && !(n.get(v, index) > 0.0)) return;
+    if (n.component > 0) {  // a pair's y: on the line of its x
+      lines.back().numbers.push_back({&n, index});
+      return;
+    }
+    std::string path = "vehicle." + std::string(n.key);
+    if (n.element == orni::VehicleElement::kMember) path.erase(path.find("[]"), 2);
+    if (n.element == orni::VehicleElement::kMaterial)
+      path.replace(path.find('*'), 1, v.materials.at(index).name);
+    lines.push_back({path, {{&n, index}}});
+  };
+  for (std::size_t i = 0; i < numbers.size();) {
+    std::size_t end = i + 1;  // a block of keys of the same array's elements
+    if (numbers[i].element != orni::VehicleElement::kNone)
+      while (end < numbers.size() && numbers[end].element == numbers[i].element) ++end;
+    for (std::size_t e = 0; e < numbers[i].count(v); ++e)
+      for (std::size_t k = i; k < end; ++k) add(numbers[k], e);
+    i = end;
+  }
+  return lines;
+}
+
+/// The same value as the resolved writer sees it (a sign of zero included).
+bool sameValue(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
+
+/// The keys of the base's sections that vary between points although no axis sets them, in the
+/// order of the resolved sections. The vehicle's numbers are compared by field (their accessors);
+/// the run's analysis section ([trim], [simulate]) by the lines the resolved writer gives it.
 std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>& points,
                                      StudyKind run, const std::vector<AxisInput>& axes) {
-  const std::vector<std::string> base_lines = splitLines(sectionsText(base, run));
+  const std::vector<std::string> base_lines = analysisLines(base, run);
+  const std::vector<VehicleLine> base_vehicle = vehicleLines(base.vehicle);
   std::vector<bool> varies(base_lines.size(), false);
+  std::vector<bool> vehicle_varies(base_vehicle.size(), false);
   for (const Study& p : points) {
-    const std::vector<std::string> lines = splitLines(sectionsText(p, run));
-    if (lines.size() != base_lines.size()) continue;  // the self-check of the loader reports it
+    const std::vector<std::string> lines = analysisLines(p, run);
+    // A point of another shape is reported by the loader's self-check.
+    if (lines.size() != base_lines.size()) continue;
+    if (vehicleLines(p.vehicle).size() != base_vehicle.size()) continue;
     for (std::size_t i = 0; i < lines.size(); ++i)
       if (lines[i] != base_lines[i]) varies[i] = true;
+    for (std::size_t i = 0; i < base_vehicle.size(); ++i)
+      for (const orni::VehicleNumberRef& n : base_vehicle[i].numbers)
+        if (!sameValue(n.get(p.vehicle), n.get(base.vehicle))) vehicle_varies[i] = true;
   }
   std::vector<std::string> swept;
   for (const AxisInput& a : axes) swept.push_back(resolvedPath(a.axis, run));
   std::vector<std::string> derived;
-  forEachKeyLine(base_lines, [&](std::size_t i, const std::string& key) {
-    if (varies[i] && std::find(swept.begin(), swept.end(), key) == swept.end() &&
+  auto note = [&](const std::string& key) {
+    if (std::find(swept.begin(), swept.end(), key) == swept.end() &&
         std::find(derived.begin(), derived.end(), key) == derived.end())
       derived.push_back(key);
+  };
+  forEachKeyLine(base_lines, [&](std::size_t i, const std::string& key) {
+    if (varies[i]) note(key);
   });
+  for (std::size_t i = 0; i < base_vehicle.size(); ++i)
+    if (vehicle_varies[i]) note(base_vehicle[i].path);
   return derived;
 }
 

@@ -47,8 +47,9 @@ std::vector<DesignField> resolve(const std::string& name, const VehicleModel& v)
 
 TEST(OptimizeDesignSpace, ResolvesFieldsAndGroups) {
   const VehicleModel v = magpie();
-  EXPECT_EQ(resolve("tail.area_m2", v).front().kind, DesignFieldKind::kTailArea);
-  EXPECT_EQ(resolve("kinematics.hinge_x_m", v).front().kind, DesignFieldKind::kHingeX);
+  EXPECT_EQ(resolve("tail.area_m2", v).front().ref.number->key, "tail.area_m2");
+  EXPECT_EQ(resolve("kinematics.hinge_x_m", v).front().ref.number->key, "kinematics.hinge_x_m");
+  EXPECT_EQ(fieldValue(v, resolve("kinematics.hinge_x_m", v).front()), v.flapping.hinge_x_B_m);
   const std::vector<DesignField> stif = resolve("wing.members.STIF*.diameter_m", v);
   ASSERT_EQ(stif.size(), 4u);
   EXPECT_EQ(stif[0].name, "wing.members.STIF1.diameter_m");
@@ -56,6 +57,8 @@ TEST(OptimizeDesignSpace, ResolvesFieldsAndGroups) {
   const std::vector<DesignField> end = resolve("wing.members.DIAG1.end_y_m", v);
   ASSERT_EQ(end.size(), 1u);
   EXPECT_EQ(fieldValue(v, end[0]), 0.0945);
+  EXPECT_EQ(end[0].ref.index, 2u);  // DIAG1, the third member
+  EXPECT_EQ(end[0].ref.number->component, 1);
   EXPECT_EQ(stif[0].spec().key, "wing.members[].diameter_m");
   EXPECT_EQ(end[0].spec().key, "wing.members[].end_xy_m");
 

@@ -36,7 +36,7 @@ TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   CalibrationOptions o;
   o.target = trim.solution;  // level settled flight of v at its own tail angle
   const double truth = v.flapping.hinge_x_B_m;
-  o.variables = {{CalibrationParameter::kHingeX, truth - 0.004, truth - 0.01, truth + 0.005}};
+  o.variables = {{calibrationParameter("kinematics.hinge_x_m"), truth - 0.004, truth - 0.01, truth + 0.005}};
   o.tethered_first = false;
   o.tolerance = 0.05;  // one variable, three residuals: least squares, zero at the truth
   const CalibrationSummary s = calibrate(v, o);
