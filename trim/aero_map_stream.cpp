@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "core/model/cancellation.hpp"
+#include "trim/point_pool.hpp"
 
 namespace orni::trim {
 
@@ -75,14 +76,7 @@ void streamAeroMap(const FlightCoreModel& model, const AeroMapGrid& grid,
     }
   };
 
-  if (workers <= 1) {
-    worker();
-  } else {
-    std::vector<std::thread> pool;
-    pool.reserve(workers);
-    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
-  }
+  runOnThreads(workers, worker);
   if (error) std::rethrow_exception(error);
 }
 

@@ -56,15 +56,19 @@ void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWor
   };
 
   const std::size_t workers = std::min(todo.size(), static_cast<std::size_t>(threads));
+  runOnThreads(workers, worker);
+  if (error) std::rethrow_exception(error);
+}
+
+void runOnThreads(std::size_t workers, const std::function<void()>& worker) {
   if (workers <= 1) {
     worker();
-  } else {
-    std::vector<std::thread> pool;
-    pool.reserve(workers);
-    for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(worker);
-    for (std::thread& t : pool) t.join();
+    return;
   }
-  if (error) std::rethrow_exception(error);
+  std::vector<std::thread> pool;
+  pool.reserve(workers);
+  for (std::size_t w = 0; w < workers; ++w) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
 }
 
 }  // namespace orni::trim

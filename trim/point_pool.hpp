@@ -30,4 +30,9 @@ using PointDone = std::function<void(std::size_t index)>;
 void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWork& work,
                const PointDone& on_done = {});
 
+/// Runs `worker` on `workers` threads (on the calling thread alone when workers <= 1) and joins
+/// them all: the fan-out of runPoints and of the aero-map stream. `worker` catches its own
+/// exceptions (an escaping one terminates, as for any std::thread).
+void runOnThreads(std::size_t workers, const std::function<void()>& worker);
+
 }  // namespace orni::trim

@@ -7,7 +7,6 @@
 
 #include "core/aero/mst_strip.hpp"
 #include "core/dynamics/flapping.hpp"
-#include "core/dynamics/flight_path_frame.hpp"
 #include "core/model/invalid_model_error.hpp"
 
 namespace orni {
@@ -393,9 +392,13 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
     bm.theta_rad = theta;
     bm.Q_radps = Q;
     addTailAndTotals(model_, bm, control_, &tail_);
-    const FlightPathFrame path = flightPathFrame(bm.v_P1_B);
-    const Vec3 F_tail =
-        (tail_.FH_tail_N + tail_.FH_body_N) * path.e_v_B + tail_.FV_tail_N * path.e_L_B;
+    // The flight-path frame written out, not flightPathFrame(): with the shared helper GCC fuses
+    // these multiply-adds differently (-ffp-contract=fast, the C++ default) and the free-flight
+    // outputs move at 1e-12; kept until the outputs may change (issue 15 note).
+    const double speed = bm.v_P1_B.norm();
+    const Vec3 e_v = speed > 0.0 ? Vec3(bm.v_P1_B / speed) : Vec3::UnitX();
+    const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+    const Vec3 F_tail = (tail_.FH_tail_N + tail_.FH_body_N) * e_v + tail_.FV_tail_N * e_L;
     f_[0] += F_tail.x();
     f_[1] += F_tail.z();
     f_[2] += tail_.M_tail_Nm;
@@ -486,11 +489,14 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   }
   const Vec3 F_B = R_BW_ * F;
   const Vec3 M_P1_B = R_BW_ * M + r2_B_.cross(F_B);
-  const FlightPathFrame path = flightPathFrame(Vec3(U, 0.0, W));
+  const Vec3 v(U, 0.0, W);
+  const double speed = v.norm();  // written out as above (flightPathFrame would move the bits)
+  const Vec3 e_v = speed > 0.0 ? Vec3(v / speed) : Vec3::UnitX();
+  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
   LoadSample& o = s.loads;
   o = tail_;
-  o.FV_wing_aero_N = 2.0 * F_B.dot(path.e_L_B);
-  o.FH_wing_aero_N = 2.0 * F_B.dot(path.e_v_B);
+  o.FV_wing_aero_N = 2.0 * F_B.dot(e_L);
+  o.FH_wing_aero_N = 2.0 * F_B.dot(e_v);
   o.M_wing_aero_Nm = 2.0 * M_P1_B.y();
   o.separated_fraction = separated_fraction_;
   o.FV_N = o.FV_wing_aero_N + o.FV_tail_N;

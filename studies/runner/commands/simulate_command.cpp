@@ -14,6 +14,7 @@
 #include "core/model/frames.hpp"
 #include "trim/trim_solver.hpp"
 #include "studies/runner/commands/constrained_flight_output.hpp"
+#include "studies/runner/commands/cycle_means_json.hpp"
 #include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/commands/free_flight_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
@@ -196,12 +197,7 @@ JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
     summary.setNull("mean");
   } else {
     summary
-        .set("mean", JsonObject()
-                         .set("FV_N", s.mean.FV_N)
-                         .set("FH_N", s.mean.FH_N)
-                         .set("M_Nm", s.mean.M_Nm)
-                         .set("power_W", s.mean.power_aero_W)
-                         .set("hinge_power_W", s.mean.power_hinge_W))
+        .set("mean", cycleMeansJson(s.mean))
         .set("steady_state_cycle", s.steady_state_cycle)
         .set("last_cycle_change", s.last_cycle_change);
   }

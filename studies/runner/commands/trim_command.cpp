@@ -10,6 +10,7 @@
 
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
+#include "studies/runner/commands/cycle_means_json.hpp"
 #include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/output/atomic_file.hpp"
@@ -175,12 +176,7 @@ JsonObject stage1Object(const TrimSummary& s) {
       .set("speed_mps", p.speed_mps)
       .set("tail_angle_deg", p.tail_angle_rad * kRadToDeg)
       .set("residual", JsonObject().set("FV_N", r.FV_N).set("FH_N", r.FH_N).set("M_Nm", r.M_Nm))
-      .set("mean", JsonObject()
-                       .set("FV_N", s.mean.FV_N)
-                       .set("FH_N", s.mean.FH_N)
-                       .set("M_Nm", s.mean.M_Nm)
-                       .set("power_W", s.mean.power_aero_W)
-                       .set("hinge_power_W", s.mean.power_hinge_W));
+      .set("mean", cycleMeansJson(s.mean));
 }
 
 // Stage 2 (level settled free flight from stage 1): whether it ran, how it ended, how far it moved.
@@ -255,12 +251,7 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
                                   .set("tolerance", study.trim.residual_tol))
       .set("weight_N", s.reference.weight_N)
       .set("mean_chord_m", s.reference.length_m)
-      .set("mean", JsonObject()
-                       .set("FV_N", s.mean.FV_N)
-                       .set("FH_N", s.mean.FH_N)
-                       .set("M_Nm", s.mean.M_Nm)
-                       .set("power_W", s.mean.power_aero_W)
-                       .set("hinge_power_W", s.mean.power_hinge_W))
+      .set("mean", cycleMeansJson(s.mean))
       .set("residual_source",
            s.refined_in_free_flight
                ? "residual, residual_scaled and mean are stage 1 (the Eq. (4) tethered means at "

@@ -31,7 +31,7 @@ fs::path repo() { return fs::path(ORNI_SOURCE_DIR); }
 std::vector<std::string> textualDerivedKeys(const Study& s) {
   auto lines = [&](const Study& study) {
     TomlWriter out;
-    writeStudySections(study, s.sweep.run, out);
+    writeStudySections(study, s.sweep().run, out);
     std::vector<std::string> result;
     std::istringstream in(out.str());
     for (std::string l; std::getline(in, l);) result.push_back(l);
@@ -39,15 +39,15 @@ std::vector<std::string> textualDerivedKeys(const Study& s) {
   };
   const std::vector<std::string> base = lines(s);
   std::vector<bool> varies(base.size(), false);
-  for (const Study& p : s.sweep.points) {
+  for (const Study& p : s.sweep().points) {
     const std::vector<std::string> l = lines(p);
     if (l.size() != base.size()) continue;
     for (std::size_t i = 0; i < l.size(); ++i)
       if (l[i] != base[i]) varies[i] = true;
   }
   std::vector<std::string> swept;
-  const std::string section = s.sweep.run == StudyKind::kTrim ? "trim." : "simulate.";
-  for (const SweepAxis& a : s.sweep.axes)
+  const std::string section = s.sweep().run == StudyKind::kTrim ? "trim." : "simulate.";
+  for (const SweepAxis& a : s.sweep().axes)
     swept.push_back(a.key.rfind(section, 0) == 0 ? a.key : "vehicle." + a.key);
   std::vector<std::string> derived;
   std::string header;
@@ -249,11 +249,11 @@ TEST_F(ConfigSweepStudy, VehicleDefaultsThatFollowTheSweptKeysAreComparedByField
 run = "trim"
 axes = [{ key = "wing.root_chord_m", values = [0.104, 0.12] }, { key = "operating_point.freq_hz", values = [6, 7] }]
 )")));
-  ASSERT_EQ(s.sweep.points.size(), 4u);
-  EXPECT_EQ(s.sweep.points[3].vehicle.wing.p3_aft_of_le_m, 0.06);
-  EXPECT_EQ(s.sweep.derived_keys,
+  ASSERT_EQ(s.sweep().points.size(), 4u);
+  EXPECT_EQ(s.sweep().points[3].vehicle.wing.p3_aft_of_le_m, 0.06);
+  EXPECT_EQ(s.sweep().derived_keys,
             (std::vector<std::string>{"trim.freq_hz", "vehicle.wing.p3_aft_of_le_m"}));
-  EXPECT_EQ(s.sweep.derived_keys, textualDerivedKeys(s));
+  EXPECT_EQ(s.sweep().derived_keys, textualDerivedKeys(s));
   const std::string resolved = resolvedStudyToml(s);
   EXPECT_NE(resolved.find("# p3_aft_of_le_m: not fixed here"), std::string::npos);
 }
@@ -266,7 +266,7 @@ TEST_F(ConfigSweepStudy, DerivedKeysAreThoseOfTheLineComparison) {
                            "studies/paper/placement_sweep_magpie.toml"}) {
     SCOPED_TRACE(file);
     const Study s = loadStudyFile(repo() / file);
-    EXPECT_EQ(s.sweep.derived_keys, textualDerivedKeys(s));
+    EXPECT_EQ(s.sweep().derived_keys, textualDerivedKeys(s));
   }
   const Study t =
       loadStudyFile(write("t.toml", "kind = \"sweep\"\n" + vehicle("efw_magpie.toml") + R"(
@@ -274,8 +274,8 @@ TEST_F(ConfigSweepStudy, DerivedKeysAreThoseOfTheLineComparison) {
 run = "simulate"
 axes = [{ key = "operating_point.speed_mps", values = [8, 9] }, { key = "wing.semispan_m", values = [0.27, 0.3] }]
 )"));
-  EXPECT_EQ(t.sweep.derived_keys, textualDerivedKeys(t));
-  EXPECT_EQ(t.sweep.derived_keys, (std::vector<std::string>{"simulate.speed_mps"}));
+  EXPECT_EQ(t.sweep().derived_keys, textualDerivedKeys(t));
+  EXPECT_EQ(t.sweep().derived_keys, (std::vector<std::string>{"simulate.speed_mps"}));
 }
 
 TEST_F(ConfigSweepStudy, ExamplesLoad) {
