@@ -35,9 +35,13 @@ def temp_folders():
     return set(glob.glob(os.path.join(tempfile.gettempdir(), "ornithopter-*")))
 
 
-def test_ctrl_c_stops_an_aeromap_and_the_next_call_runs():
+def test_ctrl_c_stops_an_aeromap_and_the_next_call_runs(tmp_path, monkeypatch):
+    # A temporary folder of its own: other tests running at the same time (ctest -j) create and
+    # remove ornithopter-* folders in the shared one.
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
     v = ornithopter.load_vehicle(EFW)
     before = temp_folders()
+    assert before == set()
     # 20 x 10 x 21 points on two threads: ~10 s uninterrupted.
     late = interrupted(lambda: ornithopter.aeromap(v, range(6, 26), range(8, 18), range(0, 21),
                                                    threads=2))
