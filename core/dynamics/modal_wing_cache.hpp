@@ -22,7 +22,10 @@ namespace orni {
 std::shared_ptr<const structure::ModalWing> buildModalWingOf(
     const structure::WingStructure& wing_structure);
 
-/// The exact bytes of every structural input of the wing (no hashing, so no collisions).
+/// The exact bytes of every structural input of the wing (no hashing, so no collisions). Written
+/// as a list; ModalWingCache.KeyChangesWithEveryFieldThatChangesTheWing moves every wing and
+/// material number of the field table (vehicle_fields.hpp) and fails when one changes the built
+/// wing but not this key.
 std::string modalWingKey(const structure::WingStructure& wing_structure);
 
 class ModalWingCache {

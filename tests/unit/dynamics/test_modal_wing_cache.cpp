@@ -12,6 +12,7 @@
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/modal_wing_cache.hpp"
+#include "core/model/vehicle_fields.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
 namespace orni {
@@ -74,6 +75,86 @@ TEST(ModalWingCache, BuildsOncePerStructure) {
   w = v;
   w.wing.fe.mode_count = 4;
   expectRebuild(w, "the mode count");
+}
+
+/// True when two modal wings differ in anything the dynamics reads from them.
+bool differ(const structure::ModalWing& a, const structure::ModalWing& b) {
+  return a.frequencies_hz.size() != b.frequencies_hz.size() ||
+         a.frequencies_hz != b.frequencies_hz || a.damping_ratios != b.damping_ratios ||
+         a.mode_shapes.rows() != b.mode_shapes.rows() || a.mode_shapes != b.mode_shapes ||
+         a.nodal_mass_kg.size() != b.nodal_mass_kg.size() || a.nodal_mass_kg != b.nodal_mass_kg ||
+         a.wing_mass_kg != b.wing_mass_kg || a.mesh.strip_nodes.size() != b.mesh.strip_nodes.size();
+}
+
+// The key is written by hand; this proves it complete over the field table: every number of the
+// wing and its materials (vehicle_fields.hpp) is moved by 5 % (one step for an integer), the wing
+// built again, and whenever the built wing differs the key must differ too (else the cache would
+// hand out a stale wing). Numbers that do not change the wing may keep the key (the incidence is
+// aerodynamic only). A guard: most of them must change the wing, or the test proves nothing.
+TEST(ModalWingCache, KeyChangesWithEveryFieldThatChangesTheWing) {
+  const VehicleModel v = efw();
+  const auto base = buildModalWingOf(v);
+  const std::string base_key = modalWingKey(v);
+  int structural = 0, checked = 0;
+  for (const VehicleNumber& n : vehicleNumbers()) {
+    if (!(n.key.rfind("wing.", 0) == 0 || n.key.rfind("materials.", 0) == 0)) continue;
+    const std::size_t last = n.count(v) - 1;
+    for (std::size_t index : {std::size_t{0}, last}) {
+      const double x = n.get(v, index);
+      const bool integer = n.spec().type == FieldType::kInteger;
+      const ValueRange r = n.spec().siRange();
+      // The first move that is in range and gives a wing that builds (a member's end moved by
+      // 5 % may leave the planform or cross another member; 0.2 mm does not).
+      const std::vector<double> moves =
+          integer ? std::vector<double>{x + 1.0, x - 1.0}
+                  : std::vector<double>{1.05 * x, 0.95 * x, 1.01 * x, 0.99 * x, x + 2e-4, x - 2e-4};
+      VehicleModel w = v;
+      std::shared_ptr<const structure::ModalWing> built;
+      std::string why = "no move in range";
+      for (double moved : moves) {
+        if (moved == x || !r.contains(moved)) continue;
+        w = v;
+        n.set(w, index, moved);
+        if (n.component >= 0) {
+          // A member's end point: moved 1 % along the member, towards its other end, so that
+          // it stays in the planform and crosses no other member (both components move).
+          const WingMember& m0 = v.wing.members[index];
+          WingMember& m = w.wing.members[index];
+          const bool start = n.key.find("start") != std::string_view::npos;
+          const double ax = start ? m0.start_x_W_m : m0.end_x_W_m;
+          const double ay = start ? m0.start_y_W_m : m0.end_y_W_m;
+          const double bx = start ? m0.end_x_W_m : m0.start_x_W_m;
+          const double by = start ? m0.end_y_W_m : m0.start_y_W_m;
+          (start ? m.start_x_W_m : m.end_x_W_m) = ax + 0.01 * (bx - ax);
+          (start ? m.start_y_W_m : m.end_y_W_m) = ay + 0.01 * (by - ay);
+        }
+        try {
+          built = buildModalWingOf(w);
+          break;
+        } catch (const std::exception& e) {
+          why = e.what();
+        }
+      }
+      if (!built) {
+        ADD_FAILURE() << n.key << "[" << index << "] component " << n.component
+                      << ": no moved wing builds: " << why;
+        continue;
+      }
+      ++checked;
+      if (!differ(*built, *base)) {
+        std::printf("modal wing key: %.*s does not change the wing\n",
+                    static_cast<int>(n.key.size()), n.key.data());
+        continue;
+      }
+      ++structural;
+      EXPECT_NE(modalWingKey(w), base_key)
+          << n.key << "[" << index << "] component " << n.component
+          << " changes the modal wing but not the cache key";
+    }
+  }
+  std::printf("modal wing key: %d of %d moved wing numbers change the wing\n", structural, checked);
+  EXPECT_GE(checked, 30);
+  EXPECT_GE(structural, 20);
 }
 
 TEST(ModalWingCache, IsBoundedAndRebuildsTheSameWing) {
