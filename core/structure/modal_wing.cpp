@@ -7,6 +7,7 @@
 
 #include "core/structure/craig_bampton.hpp"
 #include "core/structure/dof_partition.hpp"
+#include "core/model/invalid_model_error.hpp"
 
 namespace orni::structure {
 namespace {
@@ -104,6 +105,15 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
   ModalWing w;
   w.selection = selectModes(freq_all, table_all, options.selection);
   const int m = w.selection.count;
+  // A flexible wing without one flexible mode is an input mistake (a cut-off below the first
+  // mode), not a rigid wing: the rigid wing is its own model. Reported, not built with empty
+  // mode shapes (whose row blocks would point into no storage).
+  if (m == 0)
+    throw InvalidModelError("buildModalWing: no mode kept: the cut-off " +
+                            std::to_string(options.selection.cutoff_hz) +
+                            " Hz lies below the first mode (" +
+                            std::to_string(freq_all.size() > 0 ? freq_all(0) : 0.0) +
+                            " Hz); raise wing.fe.cutoff_hz, or set it 0 for no cut-off");
   w.mesh = mesh;
   w.frequencies_hz = freq_all.head(m);
   w.damping_ratios.resize(m);

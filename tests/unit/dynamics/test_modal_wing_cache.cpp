@@ -104,10 +104,12 @@ TEST(ModalWingCache, KeyChangesWithEveryFieldThatChangesTheWing) {
       const bool integer = n.spec().type == FieldType::kInteger;
       const ValueRange r = n.spec().siRange();
       // The first move that is in range and gives a wing that builds (a member's end moved by
-      // 5 % may leave the planform or cross another member; 0.2 mm does not).
+      // 5 % may leave the planform or cross another member; 0.2 mm does not; a frequency
+      // cut-off of 0, i.e. none, moved to 0.2 mHz keeps no mode, 100 Hz keeps the lowest).
       const std::vector<double> moves =
           integer ? std::vector<double>{x + 1.0, x - 1.0}
-                  : std::vector<double>{1.05 * x, 0.95 * x, 1.01 * x, 0.99 * x, x + 2e-4, x - 2e-4};
+                  : std::vector<double>{1.05 * x, 0.95 * x, 1.01 * x, 0.99 * x, x + 2e-4, x - 2e-4,
+                                                x + 100.0};
       VehicleModel w = v;
       std::shared_ptr<const structure::ModalWing> built;
       std::string why = "no move in range";

@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
+#include "core/model/invalid_model_error.hpp"
 #include "core/structure/dof_partition.hpp"
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/modal_solver.hpp"
@@ -99,6 +101,16 @@ TEST(StructureFeModalWing, SelectionByCutoffAndEffectiveMass) {
             all.effective_mass.heave_cumulative(expected - 1) >= need &&
                 all.effective_mass.flap_cumulative(expected - 1) >= need);
   EXPECT_FALSE(em.selection.BriefReport().empty());
+
+  // A cut-off below the first mode with no effective-mass requirement keeps no mode: bad input,
+  // reported as such (and never a wing with empty mode shapes).
+  o.selection.min_effective_mass_fraction = 0.0;
+  try {
+    (void)buildModalWing(mw.vehicle, mw.mesh, o);
+    ADD_FAILURE() << "a wing without a mode was built";
+  } catch (const InvalidModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("wing.fe.cutoff_hz"), std::string::npos) << e.what();
+  }
 }
 
 TEST(StructureFeModalWing, CraigBamptonWithFreeP3RotationBoundsTheDirectSolution) {
