@@ -105,6 +105,10 @@ double FreeFlightPeriodMap::parameterScale(int j) const {
   }
 }
 
+double orbitScaleSpeed_mps(const VehicleModel& vehicle) {
+  return vehicle.operating_point.speed_mps > 0.0 ? vehicle.operating_point.speed_mps : 10.0;
+}
+
 std::vector<double> FreeFlightPeriodMap::parameters(const OperatingPoint& point, double cg_shift_m) {
   return {point.tail_angle_rad, point.freq_hz, cg_shift_m};
 }
@@ -145,7 +149,8 @@ void FreeFlightPeriodMap::prepare(const double* p) {
   sys_.reset();
   const FlightCoreModel& model = modelAt(p);
   sys_ = std::make_unique<FreeFlightSystem>(
-      model, model.flexible.get(), ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]});
+      model, model.flexible.get(), ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]},
+      orbitScaleSpeed_mps(base_.vehicle));
   sys_->setFrictionSpeed(options_.friction_speed_mps);
   using Imex = ModalImex<FreeFlightSystem>;
   if (sys_->hasModes())

@@ -45,6 +45,12 @@ enum FreeFlightPeriodParameter : int {
 /// Condition index: altitude gained over the period (m).
 constexpr int kPeriodAltitudeGain = 0;
 
+/// The speed that scales a periodic orbit's state and power tolerances (FreeFlightSystem's
+/// reference speed): the vehicle's design speed (its file's [operating_point]), 10 m/s when it has
+/// none. Fixed for a map's lifetime, so that the scales do not move with the friction speed
+/// while a continuation walks a branch.
+double orbitScaleSpeed_mps(const VehicleModel& vehicle);
+
 struct FreeFlightPeriodMapOptions {
   double rel_tol = 1e-6;               ///< step control of the grid, (0, 1e-2]
   double friction_speed_mps = 10.0;    ///< skin friction frozen at this speed, > 0

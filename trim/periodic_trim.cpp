@@ -36,7 +36,8 @@ double orbitCheck(const FlightCoreModel& model, const std::vector<double>& x,
                   const std::vector<double>& p, double friction_speed_mps, double rel_tol,
                   const FreeFlightPeriodMap& map) {
   FreeFlightSystem sys(model, model.flexible.get(),
-                       ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]});
+                       ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]},
+                       orbitScaleSpeed_mps(model.vehicle));
   sys.setFrictionSpeed(friction_speed_mps);
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
@@ -86,7 +87,7 @@ std::vector<double> periodicStartState(const FlightCoreModel& model,
   if (static_cast<int>(wing.size()) != map.stateCount() - 4) {
     // No tethered periodic state: the wing undeformed, quasi-steady aerodynamic states.
     FreeFlightSystem sys(model, model.flexible.get(),
-                         ControlInput{point.freq_hz, point.tail_angle_rad});
+                         ControlInput{point.freq_hz, point.tail_angle_rad}, point.speed_mps);
     std::vector<double> y(static_cast<std::size_t>(sys.stateCount()));
     sys.initialState(0.0, trimmedBodyState(point, 0.0), y.data());
     wing.assign(y.begin() + FreeFlightSystem::kBody, y.begin() + sys.powerOffset());

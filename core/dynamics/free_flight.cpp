@@ -134,7 +134,7 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
     throw std::invalid_argument("free flight: history keep_cycles must be >= 1");
   const FreeFlightOptions& fo = options.free;
   const ControlInput control{point.freq_hz, point.tail_angle_rad};
-  FreeFlightSystem sys(model, model.flexible.get(), control);
+  FreeFlightSystem sys(model, model.flexible.get(), control, point.speed_mps);
 
   FreeFlightSummary summary;
   summary.initial = trimmedBodyState(point, fo.initial_altitude_m);

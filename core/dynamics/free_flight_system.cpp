@@ -34,11 +34,12 @@ std::vector<FlexibleStrip> rigidStrips(const FlightCoreModel& model) {
 }  // namespace
 
 FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleWingModel* flex,
-                                   const ControlInput& control)
+                                   const ControlInput& control, double reference_speed_mps)
     : model_(model),
       flex_(flex),
       control_(control),
       M_(flex ? flex->mode_count : 0),
+      reference_speed_mps_(reference_speed_mps),
       n_aero_(model.aeroStateCount()),
       data_(model),
       strips_(flex ? flex->strips : rigidStrips(model)),
@@ -46,6 +47,8 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
                           : stackStrips(strips_, 0, Eigen::VectorXd(), Eigen::VectorXd())),
       kin_(flex ? flex->stacked : rigid_stacked_, M_),
       chol_(3 + M_) {
+  if (!(reference_speed_mps > 0.0) || !std::isfinite(reference_speed_mps))
+    throw std::invalid_argument("free flight: the reference speed must be > 0 m/s");
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw InvalidModelError(
         "free flight needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -154,9 +157,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   data_.batch.airy.setZero();
   data_.batch.airz.setZero();
   if (flex) split_ = std::make_unique<ModalImplicitSplit>(*flex, kBody, stateCount());
-  setFrictionSpeed(model.vehicle.operating_point.speed_mps > 0.0
-                       ? model.vehicle.operating_point.speed_mps
-                       : 10.0);
+  setFrictionSpeed(reference_speed_mps_);
 }
 
 void FreeFlightSystem::setFrictionSpeed(double speed_mps) {
@@ -196,10 +197,7 @@ void FreeFlightSystem::absoluteTolerances(double rel_tol, double lag_abs_tol,
   const int per = model_.aero_states_per_strip;
   for (int i = aeroOffset() + per - 1; i < powerOffset(); i += per)
     (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
-  const double U = model_.vehicle.operating_point.speed_mps > 0.0
-                       ? model_.vehicle.operating_point.speed_mps
-                       : 10.0;
-  const auto scales = quadratureScales(model_, U);
+  const auto scales = quadratureScales(model_, reference_speed_mps_);
   (*atol)[static_cast<std::size_t>(powerOffset())] = 0.1 * rel_tol * scales[3] / control_.freq_hz;
 }
 

@@ -45,10 +45,13 @@ class FreeFlightSystem {
  public:
   static constexpr int kBody = 6;  // x_I, h, theta, U, W, Q
 
-  /// `flex` null = rigid wing (mass properties of model.wing_mass). Throws std::invalid_argument
-  /// when the fuselage-only mass or pitch inertia (vehicle minus both wings) is not positive.
+  /// `flex` null = rigid wing (mass properties of model.wing_mass). `reference_speed_mps` is the
+  /// run's own flight speed (its operating point, never the vehicle file's): it freezes the skin
+  /// friction until initialState sets the initial speed, and scales the power quadrature's
+  /// absolute tolerance. Throws std::invalid_argument when it is not positive, or when the
+  /// fuselage-only mass or pitch inertia (vehicle minus both wings) is not positive.
   FreeFlightSystem(const FlightCoreModel& model, const FlexibleWingModel* flex,
-                   const ControlInput& control);
+                   const ControlInput& control, double reference_speed_mps);
 
   int modeCount() const { return M_; }
   int stateCount() const { return kBody + 2 * M_ + n_aero_ + 1; }
@@ -94,6 +97,7 @@ class FreeFlightSystem {
   ControlInput control_;
   Switches switches_;
   int M_ = 0;
+  double reference_speed_mps_ = 0.0;  ///< the run's flight speed (constructor)
   int n_aero_ = 0;
   FlightCoreData data_;
   std::vector<FlexibleStrip> strips_;        // rigid wing: strips with zero modes

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "core/dynamics/free_flight.hpp"
@@ -85,7 +86,7 @@ TEST(DynamicsFreeFlight, MasslessNonFlappingWingsReduceToPaperEq1) {
   ASSERT_LT(model.wing_mass.total.mass_kg, 1e-12);
   const ControlInput control{12.0, v.operating_point.tail_angle_rad};
 
-  FreeFlightSystem sys(model, nullptr, control);
+  FreeFlightSystem sys(model, nullptr, control, v.operating_point.speed_mps);
   const BodyState b0 = trimmedBodyState(v.operating_point, 10.0);
   std::vector<double> y(static_cast<std::size_t>(sys.stateCount()));
   sys.initialState(0.0, b0, y.data());
@@ -136,7 +137,8 @@ double energyDrift(StructureLevel level, double* energy_scale,
   v.wing.fe.inertial_stiffness = stiffness;
   v.flapping.amplitude_rad = 1e-12;
   const FlightCoreModel model(v);
-  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{12.0, 0.0});
+  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{12.0, 0.0},
+                       v.operating_point.speed_mps);
   sys.setSwitches({false, false, false});
   BodyState b;
   b.h_m = 10.0;
@@ -213,7 +215,7 @@ TEST(DynamicsFreeFlight, TailGliderSettlesToItsAnalyticSteadyGlide) {
   const double V = std::sqrt(2 * m * g * std::cos(gamma) / (rho * S * CL(a)));
 
   const FlightCoreModel model(v, kLimitTest);  // tail arm 0
-  FreeFlightSystem sys(model, nullptr, ControlInput{1.0, delta_T});
+  FreeFlightSystem sys(model, nullptr, ControlInput{1.0, delta_T}, V);
   sys.setSwitches({false, true, false});
   BodyState b;  // released 20 % too fast on a level path: the phugoid has to damp out
   b.h_m = 1000.0;
@@ -242,7 +244,42 @@ TEST(DynamicsFreeFlight, FuselageMassMustExceedTheWings) {
   VehicleModel v = efw(StructureLevel::kRigid);
   v.body.pitch_inertia_kgm2 = 1e-7;
   const FlightCoreModel model(v);
-  EXPECT_THROW(FreeFlightSystem(model, nullptr, ControlInput{12.0, 0.0}), std::invalid_argument);
+  EXPECT_THROW(FreeFlightSystem(model, nullptr, ControlInput{12.0, 0.0}, 10.0),
+               std::invalid_argument);
+}
+
+TEST(DynamicsFreeFlight, ReferenceSpeedMustBePositive) {
+  const VehicleModel v = efw(StructureLevel::kRigid);
+  const FlightCoreModel model(v);
+  for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN()})
+    EXPECT_THROW(FreeFlightSystem(model, nullptr, ControlInput{12.0, 0.0}, bad),
+                 std::invalid_argument);
+}
+
+// Issue 15 item 7: a free flight is defined by the model and the point it is given. The vehicle
+// file's [operating_point] (the design point, a default for the study) must not reach the run:
+// before, the free-flight core scaled its power tolerance by the file's speed, so a run at
+// --speed 8 depended on the file's 10.8 m/s. Two models that differ only there fly the same bits.
+TEST(DynamicsFreeFlight, TheVehicleFilesOperatingPointDoesNotReachTheRun) {
+  VehicleModel v = efw(StructureLevel::kRigid);
+  OperatingPoint p = v.operating_point;
+  p.speed_mps *= 0.9;
+  SimulationOptions o;
+  o.cycles = 3;
+  o.samples_per_cycle = 20;
+  FreeFlightHistory h1, h2;
+  const FreeFlightSummary s1 = simulateFree(FlightCoreModel(v), p, o, &h1);
+  v.operating_point.speed_mps *= 3.0;
+  v.operating_point.theta_rad *= 0.5;
+  const FreeFlightSummary s2 = simulateFree(FlightCoreModel(v), p, o, &h2);
+  ASSERT_EQ(s1.status, s2.status) << s1.message << " / " << s2.message;
+  EXPECT_EQ(s1.steps, s2.steps);
+  EXPECT_EQ(s1.rhs_evaluations, s2.rhs_evaluations);
+  ASSERT_EQ(h1.body.size(), h2.body.size());
+  ASSERT_FALSE(h1.body.empty());
+  EXPECT_EQ(h1.body.back().theta_rad, h2.body.back().theta_rad);
+  EXPECT_EQ(h1.body.back().U_mps, h2.body.back().U_mps);
+  EXPECT_EQ(h1.body.back().h_m, h2.body.back().h_m);
 }
 
 TEST(DynamicsFreeFlight, UntrimmedTailAngleIsReportedNotBoundedWithAReason) {

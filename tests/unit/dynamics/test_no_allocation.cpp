@@ -151,7 +151,8 @@ TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
   const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
   const OperatingPoint& p = v.operating_point;
-  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{p.freq_hz, p.tail_angle_rad});
+  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{p.freq_hz, p.tail_angle_rad},
+                       p.speed_mps);
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
   BodyState b;

@@ -55,7 +55,8 @@ TrimOptions periodicOptions(const VehicleModel& v) {
 std::vector<std::vector<double>> flyPeriods(const FlightCoreModel& model,
                                             const std::vector<double>& x, double tail_rad,
                                             double friction_mps, int cycles, double rel_tol) {
-  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{kFreqHz, tail_rad});
+  FreeFlightSystem sys(model, model.flexible.get(), ControlInput{kFreqHz, tail_rad},
+                       orbitScaleSpeed_mps(model.vehicle));
   sys.setFrictionSpeed(friction_mps);
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
@@ -249,7 +250,7 @@ TEST(PeriodicTrimGlide, MultipliersAreExpLambdaTOfTheLinearisedLongitudinalEquat
   mo.max_step_fraction = 0.0625;
   mo.friction_speed_mps = kFriction;
   FreeFlightPeriodMap map(model, mo);
-  FreeFlightSystem sys(model, nullptr, ControlInput{kFreqHz, guess.tail_angle_rad});
+  FreeFlightSystem sys(model, nullptr, ControlInput{kFreqHz, guess.tail_angle_rad}, kFriction);
   std::vector<double> y(static_cast<std::size_t>(sys.stateCount()), 0.0);
   sys.initialState(0.0, trimmedBodyState(guess, 0.0), y.data());
   sys.setFrictionSpeed(kFriction);
