@@ -10,7 +10,8 @@
 // 2 is the mirrored left wing. For a massless wing without aerodynamics this is paper Eq. (1).
 //
 // State: [x_I, h, theta, U, W, Q, q (M), q' (M), MST-TD states (2 per strip), power integral].
-// Workspace sized once; the RHS does not allocate.
+// The immutable model (free_flight_model.hpp) may be shared; the workspace is the run's, sized
+// once; the RHS does not allocate.
 #pragma once
 
 #include <array>
@@ -19,6 +20,7 @@
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/free_flight_model.hpp"
 #include "core/dynamics/modal_implicit_split.hpp"
 #include "core/dynamics/small_cholesky.hpp"
 #include "core/dynamics/strip_kinematics.hpp"
@@ -41,22 +43,57 @@ struct FreeFlightSample {
                                   ///< included) + strain energy of both wings
 };
 
+/// Per-run scratch of the right-hand side: sized once, reused by every evaluation (no heap
+/// allocation in rhs).
+struct FreeFlightWorkspace {
+  FreeFlightWorkspace(const FreeFlightModel& model);
+  FlightCoreData data;  ///< the kernel's strip batch (skin friction frozen per run)
+  StripKinematics kin;
+  int n_u = 3;          ///< generalised speeds (U, W, Q, q')
+  Eigen::VectorXd q, qd, ud, f, scratch_modes;
+  Eigen::VectorXd Gq_all, correction;  // K^_G q per load; u' correction (n_u)
+  Eigen::VectorXd Pq_all, Cq_all, Cqd_all, Sq{9}, Sqd{9};
+  Eigen::MatrixXd A;  // generalised mass matrix (lower triangle)
+  SmallCholesky chol;
+  Eigen::VectorXd b_strip, k_twist;           // 0.5 (1 + f) m_a and f k per strip
+  Eigen::VectorXd nuU, nuW, nuQ, nutQ;        // body partials of the apparent accelerations
+  Eigen::VectorXd extra_force, extra_couple;  // apparent-mass force and couple of u' (ns)
+  Eigen::VectorXd zero_ns, tmp_ns, packed;
+  Eigen::VectorXd twist_mid_ud;  // [psi_twist; psi_mid] of the modal accelerations (2 ns)
+};
+
+/// What the last evaluation found, read by rhs (power) and sample (loads, energies).
+struct FreeFlightEvaluation {
+  Vec3 F_aero_W = Vec3::Zero(), M_aero_P2_W = Vec3::Zero();  ///< one wing, kernel loads
+  double separated_fraction = 0.0;
+  LoadSample tail;                     ///< tail and fuselage drag, B components
+  Mat3 R_BW = Mat3::Identity();        ///< flap rotation
+  Vec3 omega_W = Vec3::Zero(), alpha0_W = Vec3::Zero();  ///< W frame rate, accel. at u' = 0
+  Vec3 a_O0_W = Vec3::Zero(), g_W = Vec3::Zero();        ///< P2 accel. at u' = 0, gravity
+  Vec3 c_W = Vec3::Zero();             ///< one wing's first moment about P2 (deformed)
+  Mat3 J_W = Mat3::Zero();             ///< one wing's inertia about P2 (deformed)
+};
+
 class FreeFlightSystem {
  public:
   static constexpr int kBody = 6;  // x_I, h, theta, U, W, Q
 
-  /// `flex` null = rigid wing (mass properties of model.wing_mass). `reference_speed_mps` is the
-  /// run's own flight speed (its operating point, never the vehicle file's): it freezes the skin
-  /// friction until initialState sets the initial speed, and scales the power quadrature's
-  /// absolute tolerance. Throws std::invalid_argument when it is not positive, or when the
-  /// fuselage-only mass or pitch inertia (vehicle minus both wings) is not positive.
+  /// A run of `model` (immutable, may be shared with other runs and threads). `reference_speed_mps`
+  /// is the run's own flight speed (its operating point, never the vehicle file's): it freezes
+  /// the skin friction until initialState sets the initial speed, and scales the power
+  /// quadrature's absolute tolerance. Throws std::invalid_argument when it is not positive.
+  FreeFlightSystem(std::shared_ptr<const FreeFlightModel> model, const ControlInput& control,
+                   double reference_speed_mps);
+  /// The same with a model of its own: `flex` null = rigid wing (mass properties of
+  /// model.wing_mass). Throws as FreeFlightModel's constructor does.
   FreeFlightSystem(const FlightCoreModel& model, const FlexibleWingModel* flex,
                    const ControlInput& control, double reference_speed_mps);
 
-  int modeCount() const { return M_; }
-  int stateCount() const { return kBody + 2 * M_ + n_aero_ + 1; }
-  int aeroOffset() const { return kBody + 2 * M_; }
-  int powerOffset() const { return kBody + 2 * M_ + n_aero_; }
+  int modeCount() const { return mode_count_; }
+  int stateCount() const { return kBody + 2 * mode_count_ + n_aero_ + 1; }
+  int aeroOffset() const { return kBody + 2 * mode_count_; }
+  int powerOffset() const { return kBody + 2 * mode_count_ + n_aero_; }
+  const FreeFlightModel& model() const { return *model_; }
 
   /// Body at `body` (x_I, h, theta, U, W, Q), wing undeformed at rest, quasi-steady aero states.
   /// Also freezes the skin-friction coefficients at the initial speed (setFrictionSpeed).
@@ -74,11 +111,11 @@ class FreeFlightSystem {
     return 0;
   }
   /// The linear modal part for implicit integration (flexible wing only: hasModes()).
-  bool hasModes() const { return M_ > 0; }
+  bool hasModes() const { return mode_count_ > 0; }
   ModalImplicitSplit& split() { return *split_; }
 
-  double fuselageMass_kg() const { return m_f_; }
-  double fuselagePitchInertia_kgm2() const { return I_f_; }
+  double fuselageMass_kg() const { return model_->fuselage_mass_kg; }
+  double fuselagePitchInertia_kgm2() const { return model_->fuselage_pitch_inertia_kgm2; }
 
   /// Switches for the tests (paper Eq. 1 reduction, energy conservation).
   struct Switches {
@@ -89,59 +126,30 @@ class FreeFlightSystem {
   void setSwitches(const Switches& s) { switches_ = s; }
 
  private:
-  // Strip kinematics, kernel, mass matrix and forcing at (t, y); solves for u'.
+  // The terms of one evaluation that its steps share: body state, flap, frame axes.
+  struct Frame;
+  // The generalised accelerations u' at (t, y) into ws_.ud (and the kernel's aerodynamic state
+  // derivatives when `aero_derivatives` is not null), in named steps: forces f and mass matrix A
+  // of [M_fuselage + 2 (M_wing + A_air)] u' = f, then the solve.
   void evaluate(double t_s, const double* y, double* aero_derivatives);
+  Frame frameAt(double t_s, const double* y);
+  void addWingAerodynamics(const Frame& fr, const double* y, double* aero_derivatives);
+  void addWingInertiaAndGravity(const Frame& fr);
+  void addWingMassMatrix(const Frame& fr);
+  void addModalRows();
+  void addFuselage(const Frame& fr);
+  void addTailAndBodyDrag(const Frame& fr);
+  void solveAccelerations(const Frame& fr);
+  void apparentAccelerations();
 
-  const FlightCoreModel& model_;
-  const FlexibleWingModel* flex_;
+  std::shared_ptr<const FreeFlightModel> model_;
   ControlInput control_;
   Switches switches_;
-  int M_ = 0;
-  double reference_speed_mps_ = 0.0;  ///< the run's flight speed (constructor)
+  int mode_count_ = 0;
   int n_aero_ = 0;
-  FlightCoreData data_;
-  std::vector<FlexibleStrip> strips_;        // rigid wing: strips with zero modes
-  StackedStrips rigid_stacked_;              // the rigid wing's (flexible: flex_->stacked)
-  StripKinematics kin_;
-  Eigen::VectorXd apparent_mass_kg_;
-  // Wing inertia invariants about P2 (W), one wing.
-  double m_w_ = 0.0;
-  Vec3 c0_ = Vec3::Zero();
-  Mat3 J0_ = Mat3::Zero();
-  Eigen::Matrix3Xd L_, H_;
-  std::array<Eigen::VectorXd, 9> S_;
-  Eigen::MatrixXd C_[3];   // C_x, C_y, C_z (skew)
-  Eigen::MatrixXd M_qq_;
-  Eigen::VectorXd S_trace_;  // sum_k S_kk
-  Eigen::VectorXd stiffness_, damping_;
-  double m_f_ = 0.0, I_f_ = 0.0;
-  Vec3 r2_B_ = Vec3::Zero();
-  Vec3 r_f_B_ = Vec3::Zero();  // fuselage CG from P1 (vehicle CG at P1 at zero flap)
-
-  // Workspace (evaluate).
-  int n_u_ = 3;
-  Eigen::VectorXd q_, qd_, ud_, f_, scratch_M_;
-  Eigen::MatrixXd Pstack_, Cstack_, Smat_;  // stacked invariants (constructor)
-  std::vector<structure::InertialLoad> linear_loads_;  // acceleration loads with a K_G
-  Eigen::MatrixXd Gstack_;                              // their K^_G, stacked
-  Eigen::VectorXd Gq_all_, correction_;  // K^_G q per load; u' correction (n_u)
-  Eigen::VectorXd Pq_all_, Cq_all_, Cqd_all_, Sq_{9}, Sqd_{9};
-  Eigen::MatrixXd A_;
-  SmallCholesky chol_;
-  Eigen::VectorXd b_strip_, k_twist_;           // 0.5 (1 + f) m_a and f k per strip
-  Eigen::VectorXd nuU_, nuW_, nuQ_, nutQ_;      // body partials of the apparent accelerations
-  Eigen::VectorXd extra_force_, extra_couple_;  // apparent-mass force and couple of u' (ns)
-  Eigen::VectorXd zero_ns_, tmp_ns_, packed_;
-  Eigen::VectorXd twist_mid_ud_;  // [psi_twist; psi_mid] of the modal accelerations (2 ns)
-  void apparentAccelerations();
-  // Results of the last evaluate.
-  Vec3 F_aero_W_ = Vec3::Zero(), M_aero_P2_W_ = Vec3::Zero();  // one wing, kernel loads
-  double power_aero_one_wing_W_ = 0.0, separated_fraction_ = 0.0;
-  LoadSample tail_;
-  Mat3 R_BW_ = Mat3::Identity();
-  Vec3 omega_W_ = Vec3::Zero(), alpha0_W_ = Vec3::Zero(), a_O0_W_ = Vec3::Zero();
-  Vec3 g_W_ = Vec3::Zero(), c_W_ = Vec3::Zero();
-  Mat3 J_W_ = Mat3::Zero();
+  double reference_speed_mps_ = 0.0;  ///< the run's flight speed (constructor)
+  FreeFlightWorkspace ws_;
+  FreeFlightEvaluation last_;
   std::unique_ptr<ModalImplicitSplit> split_;  // flexible wing only
 };
 
