@@ -20,7 +20,7 @@
 #include "core/model/vehicle_model.hpp"
 #include "trim/aero_map_options.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 /// Axes of the map, SI. Points are ordered speed (outermost), frequency, theta, tail (innermost):
 /// index = ((i_speed * n_freq + i_freq) * n_theta + i_theta) * n_tail + i_tail.
@@ -80,4 +80,4 @@ AeroMapSummary buildAeroMap(const FlightCoreModel& model, const AeroMapGrid& gri
                             const std::vector<std::optional<AeroMapPoint>>& known = {},
                             const AeroMapPointCallback& on_point = {});
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -16,7 +16,7 @@
 #include "studies/runner/config/vehicle_file.hpp"
 #include "trim/aero_map.hpp"
 
-namespace orni::trim {
+namespace orni {
 namespace {
 
 VehicleModel efw() {
@@ -233,4 +233,4 @@ TEST(TrimAeroMap, NotConvergedPointsKeepTheirReason) {
 }
 
 }  // namespace
-}  // namespace orni::trim
+}  // namespace orni
