@@ -38,15 +38,15 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
     : model_(model),
       flex_(flex),
       control_(control),
-      M_(flex ? flex->mode_count : 0),
+      mode_count_(flex ? flex->mode_count : 0),
       reference_speed_mps_(reference_speed_mps),
       n_aero_(model.aeroStateCount()),
       data_(model),
       strips_(flex ? flex->strips : rigidStrips(model)),
       rigid_stacked_(flex ? StackedStrips{}
                           : stackStrips(strips_, 0, Eigen::VectorXd(), Eigen::VectorXd())),
-      kin_(flex ? flex->stacked : rigid_stacked_, M_),
-      chol_(3 + M_) {
+      kin_(flex ? flex->stacked : rigid_stacked_, mode_count_),
+      chol_(3 + mode_count_) {
   if (!(reference_speed_mps > 0.0) || !std::isfinite(reference_speed_mps))
     throw std::invalid_argument("free flight: the reference speed must be > 0 m/s");
   if (!aero::batchKernelApplies(model.vehicle.aero))
@@ -113,32 +113,33 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
         " kg m^2) must exceed the pitch inertia of both wings about P1 (" +
         std::to_string(2.0 * wing_pitch_inertia_P1) + " kg m^2)");
 
-  n_u_ = 3 + M_;
-  q_.setZero(M_);
-  qd_.setZero(M_);
+  n_u_ = 3 + mode_count_;
+  q_.setZero(mode_count_);
+  qd_.setZero(mode_count_);
   ud_.setZero(n_u_);
   f_.setZero(n_u_);
-  scratch_M_.setZero(M_);
+  scratch_modes_.setZero(mode_count_);
   // Stacked invariants: one product per evaluation instead of one per matrix. Pstack_ holds the
   // stiffness of the inertial loads per w_k w_l, softening and stiffening (structure.md 3.3, 3.7),
   // Gstack_ the geometric stiffness of the acceleration loads that stress the wing.
-  Pstack_.setZero(9 * M_, M_);
-  Cstack_.setZero(3 * M_, M_);
-  Smat_.setZero(9, M_);
-  if (M_ > 0) {
+  Pstack_.setZero(9 * mode_count_, mode_count_);
+  Cstack_.setZero(3 * mode_count_, mode_count_);
+  Smat_.setZero(9, mode_count_);
+  if (mode_count_ > 0) {
     for (int k = 0; k < 9; ++k) {
-      Pstack_.middleRows(k * M_, M_) = flex->inertial_stiffness.spin[static_cast<std::size_t>(k)];
+      Pstack_.middleRows(k * mode_count_, mode_count_) =
+          flex->inertial_stiffness.spin[static_cast<std::size_t>(k)];
       Smat_.row(k) = S_[static_cast<std::size_t>(k)].transpose();
     }
-    for (int k = 0; k < 3; ++k) Cstack_.middleRows(k * M_, M_) = C_[k];
+    for (int k = 0; k < 3; ++k) Cstack_.middleRows(k * mode_count_, mode_count_) = C_[k];
     linear_loads_ = flex->inertial_stiffness.linear_loads;
     Gstack_ = flex->inertial_stiffness.linear_stack;
   }
   Gq_all_.setZero(Gstack_.rows());
   correction_.setZero(n_u_);
-  Pq_all_.setZero(9 * M_);
-  Cq_all_.setZero(3 * M_);
-  Cqd_all_.setZero(3 * M_);
+  Pq_all_.setZero(9 * mode_count_);
+  Cq_all_.setZero(3 * mode_count_);
+  Cqd_all_.setZero(3 * mode_count_);
   A_.setZero(n_u_, n_u_);
   const auto nsi = static_cast<Eigen::Index>(ns);
   b_strip_.setZero(nsi);
@@ -152,7 +153,7 @@ FreeFlightSystem::FreeFlightSystem(const FlightCoreModel& model, const FlexibleW
   zero_ns_.setZero(nsi);
   tmp_ns_.setZero(nsi);
   twist_mid_ud_.setZero(2 * nsi);
-  packed_.setZero(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2);
+  packed_.setZero(static_cast<Eigen::Index>(mode_count_) * (mode_count_ + 1) / 2);
   data_.batch.airx.setZero();
   data_.batch.airy.setZero();
   data_.batch.airz.setZero();
@@ -176,7 +177,7 @@ void FreeFlightSystem::initialState(double t_s, const BodyState& body, double* y
   y[3] = body.U_mps;
   y[4] = body.W_mps;
   y[5] = body.Q_radps;
-  for (int i = 0; i < 2 * M_; ++i) y[kBody + i] = 0.0;
+  for (int i = 0; i < 2 * mode_count_; ++i) y[kBody + i] = 0.0;
   BodyMotion bm;
   bm.v_P1_B = Vec3(body.U_mps, 0.0, body.W_mps);
   bm.theta_rad = body.theta_rad;
@@ -193,7 +194,7 @@ void FreeFlightSystem::absoluteTolerances(double rel_tol, double lag_abs_tol,
   // Body states at rel_tol times a scale: 10 m (x), 0.1 m (h), 0.1 rad, 1 m/s, 1 rad/s.
   const double scale[kBody] = {10.0, 0.1, 0.1, 1.0, 1.0, 1.0};
   for (int i = 0; i < kBody; ++i) (*atol)[static_cast<std::size_t>(i)] = rel_tol * scale[i];
-  modalAbsoluteTolerances(rel_tol, M_, kBody, atol);  // as the tethered flexible wing
+  modalAbsoluteTolerances(rel_tol, mode_count_, kBody, atol);  // as the tethered flexible wing
   const int per = model_.aero_states_per_strip;
   for (int i = aeroOffset() + per - 1; i < powerOffset(); i += per)
     (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
@@ -203,8 +204,8 @@ void FreeFlightSystem::absoluteTolerances(double rel_tol, double lag_abs_tol,
 
 void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_derivatives) {
   const double theta = y[2], U = y[3], W = y[4], Q = y[5];
-  q_ = Eigen::Map<const Eigen::VectorXd>(y + kBody, M_);
-  qd_ = Eigen::Map<const Eigen::VectorXd>(y + kBody + M_, M_);
+  q_ = Eigen::Map<const Eigen::VectorXd>(y + kBody, mode_count_);
+  qd_ = Eigen::Map<const Eigen::VectorXd>(y + kBody + mode_count_, mode_count_);
   const FlapState flap = flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
   R_BW_ = rotX(flap.phi_rad);
   const Mat3 Rt = R_BW_.transpose();
@@ -263,18 +264,19 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
       for (int c = 0; c <= r; ++c)
         A_(r, c) += 2.0 * (b_strip_.array() * nus[r]->array() * nus[c]->array()).sum();
     A_(2, 2) += 2.0 * (k_twist_.array() * nutQ_.array().square()).sum();
-    if (M_ > 0) {
+    if (mode_count_ > 0) {
       const StackedStrips& st = flex_->stacked;
-      kin_.modalForce(b, &scratch_M_);
-      f_.tail(M_) += 2.0 * scratch_M_;
-      auto Aqb = A_.block(3, 0, M_, 3);
+      kin_.modalForce(b, &scratch_modes_);
+      f_.tail(mode_count_) += 2.0 * scratch_modes_;
+      auto Aqb = A_.block(3, 0, mode_count_, 3);
       for (int c = 0; c < 3; ++c) {
         tmp_ns_ = b_strip_.cwiseProduct(*nus[c]);
         Aqb.col(c).noalias() += 2.0 * (st.psi_mid().transpose() * tmp_ns_);
       }
       tmp_ns_ = k_twist_.cwiseProduct(nutQ_);
       Aqb.col(2).noalias() += 2.0 * (st.psi_twist().transpose() * tmp_ns_);
-      addApparentModalMass(st, b.separation_f, 2.0, &packed_, A_.bottomRightCorner(M_, M_));
+      addApparentModalMass(st, b.separation_f, 2.0, &packed_,
+                           A_.bottomRightCorner(mode_count_, mode_count_));
     }
     separated_fraction_ = ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() /
                           (b.chord_m * b.width_m).sum();
@@ -289,7 +291,7 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   c_W_ = c0_;
   J_W_ = J0_;
   Vec3 Lqd = Vec3::Zero(), Mcor = Vec3::Zero();
-  if (M_ > 0) {
+  if (mode_count_ > 0) {
     c_W_.noalias() += L_ * q_;
     Lqd.noalias() = L_ * qd_;
     Sq_.noalias() = Smat_ * q_;
@@ -325,19 +327,19 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   A_(2, 0) += 2.0 * f1.z();
   A_(2, 1) += -2.0 * f1.x();
 
-  if (M_ > 0) {
-    auto Aqb = A_.block(3, 0, M_, 3);
+  if (mode_count_ > 0) {
+    auto Aqb = A_.block(3, 0, mode_count_, 3);
     Aqb.col(0).noalias() += 2.0 * (L_.transpose() * exW);
     Aqb.col(1).noalias() += 2.0 * (L_.transpose() * ezW);
     Aqb.col(2).noalias() += 2.0 * (L_.transpose() * dQlin + H_.transpose() * eyW);
-    A_.bottomRightCorner(M_, M_) += 2.0 * M_qq_;
+    A_.bottomRightCorner(mode_count_, mode_count_) += 2.0 * M_qq_;
 
     // Modal rows (structure.md 3.4): -L^T (a_O - g) - H^T alpha - h_w(w) - 2 C(w) q'
     // - [K_w(w) + K_G(p) + C(alpha)] q - D q' - K q, at u' = 0. The geometric stiffness K_G
     // (3.7) of the loads at u' = 0 here; its share of the body accelerations after the solve.
     const Vec3& w = omega_W_;
     const Vec3& al = alpha0_W_;
-    Eigen::VectorXd& r = scratch_M_;
+    Eigen::VectorXd& r = scratch_modes_;
     r.noalias() = -(L_.transpose() * (a_O0_W_ - g_W_));
     r.noalias() -= H_.transpose() * al;
     // [K_w + K_G](w) q = sum_kl w_k w_l spin_kl q (spin_kl = P_kl - delta_kl sum_j P_jj +
@@ -350,7 +352,7 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
       for (int l = 0; l < 3; ++l) {
         const double wkl = w[k] * w[l];
         const int idx = 3 * k + l;
-        r -= wkl * Pq_all_.segment(idx * M_, M_);
+        r -= wkl * Pq_all_.segment(idx * mode_count_, mode_count_);
         r -= wkl * S_[static_cast<std::size_t>(idx)];
       }
     r += w.squaredNorm() * S_trace_;
@@ -359,15 +361,15 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
       const Vec3 a_minus_g = a_O0_W_ - g_W_;
       for (std::size_t j = 0; j < linear_loads_.size(); ++j)
         r -= structure::linearLoadValue(linear_loads_[j], a_minus_g, al) *
-             Gq_all_.segment(static_cast<Eigen::Index>(j) * M_, M_);
+             Gq_all_.segment(static_cast<Eigen::Index>(j) * mode_count_, mode_count_);
     }
     for (int k = 0; k < 3; ++k) {
-      r -= (2.0 * w[k]) * Cqd_all_.segment(k * M_, M_);
-      r -= al[k] * Cq_all_.segment(k * M_, M_);
+      r -= (2.0 * w[k]) * Cqd_all_.segment(k * mode_count_, mode_count_);
+      r -= al[k] * Cq_all_.segment(k * mode_count_, mode_count_);
     }
     r.noalias() -= stiffness_.cwiseProduct(q_);
     if (switches_.damping) r.noalias() -= damping_.cwiseProduct(qd_);
-    f_.tail(M_).noalias() += 2.0 * r;
+    f_.tail(mode_count_).noalias() += 2.0 * r;
   }
 
   // Fuselage (paper Eq. 1) with its CG at r_f: m_f (g - a_f at u' = 0), and its moment about P1.
@@ -416,11 +418,11 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   const Vec3 da = ud_[0] * exW + ud_[1] * ezW + ud_[2] * dQlin;
   const Vec3 dal = ud_[2] * eyW;
   correction_.head<3>().setZero();
-  auto modal = correction_.tail(M_);
+  auto modal = correction_.tail(mode_count_);
   modal.setZero();
   for (std::size_t j = 0; j < linear_loads_.size(); ++j)
     modal -= (2.0 * structure::linearLoadValue(linear_loads_[j], da, dal)) *
-             Gq_all_.segment(static_cast<Eigen::Index>(j) * M_, M_);
+             Gq_all_.segment(static_cast<Eigen::Index>(j) * mode_count_, mode_count_);
   chol_.solveInPlace(correction_);
   ud_ += correction_;
 }
@@ -429,9 +431,9 @@ void FreeFlightSystem::apparentAccelerations() {
   // Normal mid-chord and pitch accelerations of u' per strip; force -b nu.u', couple -k nut.u'.
   extra_force_ = nuU_ * ud_[0] + nuW_ * ud_[1] + nuQ_ * ud_[2];
   extra_couple_ = nutQ_ * ud_[2];
-  if (M_ > 0) {
+  if (mode_count_ > 0) {
     const StackedStrips& st = flex_->stacked;
-    twist_mid_ud_.noalias() = st.apparentShapes() * ud_.tail(M_);
+    twist_mid_ud_.noalias() = st.apparentShapes() * ud_.tail(mode_count_);
     extra_force_ += twist_mid_ud_.tail(st.ns);
     extra_couple_ += twist_mid_ud_.head(st.ns);
   }
@@ -449,9 +451,9 @@ void FreeFlightSystem::rhs(double t_s, const double* y, double* ydot) {
   ydot[3] = ud_[0];
   ydot[4] = ud_[1];
   ydot[5] = ud_[2];
-  for (int i = 0; i < M_; ++i) {
-    ydot[kBody + i] = y[kBody + M_ + i];
-    ydot[kBody + M_ + i] = ud_[3 + i];
+  for (int i = 0; i < mode_count_; ++i) {
+    ydot[kBody + i] = y[kBody + mode_count_ + i];
+    ydot[kBody + mode_count_ + i] = ud_[3 + i];
   }
   // Aerodynamic power of both wings relative to the fuselage (kernel loads plus the apparent-mass
   // force and couple of u', which the kernel could not know).
@@ -500,7 +502,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   o.FV_N = o.FV_wing_aero_N + o.FV_tail_N;
   o.FH_N = o.FH_wing_aero_N + o.FH_tail_N + o.FH_body_N;
   o.M_Nm = o.M_wing_aero_Nm + o.M_tail_Nm;
-  if (M_ > 0) {
+  if (mode_count_ > 0) {
     const FlexibleStrip& tip = strips_.back();
     o.tip_deflection_m = -(tip.phi_L * q_).z();  // z_W is down
     o.tip_twist_rad = tip.psi_twist.dot(q_);
@@ -512,7 +514,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   u[0] = U;
   u[1] = W;
   u[2] = Q;
-  if (M_ > 0) u.tail(M_) = qd_;
+  if (mode_count_ > 0) u.tail(mode_count_) = qd_;
   // Kinetic energy from the structural mass matrix (apparent air mass excluded): rebuild it
   // without the air by evaluating with the aerodynamics switched off.
   const Switches saved = switches_;
@@ -524,7 +526,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   const Vec3 f1 = m_w_ * r2_B_ + R_BW_ * c_W_;
   const double wing_height = std::sin(theta) * f1.x() - std::cos(theta) * f1.z();
   double strain = 0.0;
-  if (M_ > 0) strain = q_.dot(stiffness_.cwiseProduct(q_));  // 2 wings x 1/2 q^T K q
+  if (mode_count_ > 0) strain = q_.dot(stiffness_.cwiseProduct(q_));  // 2 wings x 1/2 q^T K q
   const double fuselage_height = std::sin(theta) * r_f_B_.x() - std::cos(theta) * r_f_B_.z();
   s.potential_energy_J = g * (model_.vehicle.body.mass_kg * y[1] + m_f_ * fuselage_height +
                               2.0 * wing_height) +

@@ -53,10 +53,10 @@ class FreeFlightSystem {
   FreeFlightSystem(const FlightCoreModel& model, const FlexibleWingModel* flex,
                    const ControlInput& control, double reference_speed_mps);
 
-  int modeCount() const { return M_; }
-  int stateCount() const { return kBody + 2 * M_ + n_aero_ + 1; }
-  int aeroOffset() const { return kBody + 2 * M_; }
-  int powerOffset() const { return kBody + 2 * M_ + n_aero_; }
+  int modeCount() const { return mode_count_; }
+  int stateCount() const { return kBody + 2 * mode_count_ + n_aero_ + 1; }
+  int aeroOffset() const { return kBody + 2 * mode_count_; }
+  int powerOffset() const { return kBody + 2 * mode_count_ + n_aero_; }
 
   /// Body at `body` (x_I, h, theta, U, W, Q), wing undeformed at rest, quasi-steady aero states.
   /// Also freezes the skin-friction coefficients at the initial speed (setFrictionSpeed).
@@ -74,7 +74,7 @@ class FreeFlightSystem {
     return 0;
   }
   /// The linear modal part for implicit integration (flexible wing only: hasModes()).
-  bool hasModes() const { return M_ > 0; }
+  bool hasModes() const { return mode_count_ > 0; }
   ModalImplicitSplit& split() { return *split_; }
 
   double fuselageMass_kg() const { return m_f_; }
@@ -96,7 +96,7 @@ class FreeFlightSystem {
   const FlexibleWingModel* flex_;
   ControlInput control_;
   Switches switches_;
-  int M_ = 0;
+  int mode_count_ = 0;
   double reference_speed_mps_ = 0.0;  ///< the run's flight speed (constructor)
   int n_aero_ = 0;
   FlightCoreData data_;
@@ -120,7 +120,7 @@ class FreeFlightSystem {
 
   // Workspace (evaluate).
   int n_u_ = 3;
-  Eigen::VectorXd q_, qd_, ud_, f_, scratch_M_;
+  Eigen::VectorXd q_, qd_, ud_, f_, scratch_modes_;
   Eigen::MatrixXd Pstack_, Cstack_, Smat_;  // stacked invariants (constructor)
   std::vector<structure::InertialLoad> linear_loads_;  // acceleration loads with a K_G
   Eigen::MatrixXd Gstack_;                              // their K^_G, stacked
