@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/grid/point_pool.hpp"
 #include "core/model/field_table.hpp"
-#include "trim/point_pool.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 namespace {
 
@@ -164,4 +164,4 @@ AeroMapSummary buildAeroMap(const FlightCoreModel& model, const AeroMapGrid& gri
   return summary;
 }
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -2,9 +2,9 @@
 // map of paper Fig. 5 (mean FV and FH against U, theta and f) that trim starts from.
 //
 // Each grid point is one simulateTethered run (core/dynamics/tethered_simulation.hpp) that stops at
-// the periodic steady state. Points run on the thread pool of point_pool.hpp and share the const
-// FlightCoreModel (style.md habit 1: each run owns its workspace); results are stored by point
-// index, so they do not depend on the thread count. No file I/O here: the journal that makes a
+// the periodic steady state. Points run on the thread pool of core/grid/point_pool.hpp and share
+// the const FlightCoreModel (style.md habit 1: each run owns its workspace); results are stored by
+// point index, so they do not depend on the thread count. No file I/O here: the journal that makes a
 // map resumable lives in the runner, fed by the on_point callback and the `known` results.
 #pragma once
 
@@ -20,7 +20,7 @@
 #include "core/model/vehicle_model.hpp"
 #include "trim/aero_map_options.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 /// Axes of the map, SI. Points are ordered speed (outermost), frequency, theta, tail (innermost):
 /// index = ((i_speed * n_freq + i_freq) * n_theta + i_theta) * n_tail + i_tail.
@@ -80,4 +80,4 @@ AeroMapSummary buildAeroMap(const FlightCoreModel& model, const AeroMapGrid& gri
                             const std::vector<std::optional<AeroMapPoint>>& known = {},
                             const AeroMapPointCallback& on_point = {});
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -7,7 +7,7 @@
 
 #include "core/dynamics/simulation_options.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 /// Largest map the builder accepts (points).
 constexpr std::size_t kMaxAeroMapPoints = 10000000;
@@ -31,4 +31,4 @@ struct AeroMapOptions {
   bool IsValid(std::string* why) const;
 };
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -11,10 +11,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/grid/point_pool.hpp"
 #include "core/model/cancellation.hpp"
-#include "trim/point_pool.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 void streamAeroMap(const FlightCoreModel& model, const AeroMapGrid& grid,
                    const AeroMapOptions& options, std::size_t first,
@@ -80,4 +80,4 @@ void streamAeroMap(const FlightCoreModel& model, const AeroMapGrid& grid,
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -11,7 +11,7 @@
 #include "core/dynamics/flight_core.hpp"
 #include "trim/aero_map.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 /// Points a worker may run ahead of the oldest point not yet handed over, per thread.
 constexpr std::size_t kAeroMapLookaheadPerThread = 8;
@@ -25,4 +25,4 @@ void streamAeroMap(const FlightCoreModel& model, const AeroMapGrid& grid,
                    const AeroMapOptions& options, std::size_t first,
                    const AeroMapPointCallback& on_point);
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -24,7 +24,7 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FlightCoreModel& model,
     throw std::invalid_argument("free-flight period map: friction speed must be > 0");
   const OperatingPoint& op = model.vehicle.operating_point;
   prepare(parameters(op.freq_hz > 0.0 ? op : OperatingPoint{10.0, 10.0, 0.0, 0.0}).data());
-  modes_ = sys_->modeCount();
+  mode_count_ = sys_->modeCount();
   full_ = sys_->stateCount();
   power_ = sys_->powerOffset();
   n_ = power_ - kReducedOffset;
@@ -48,11 +48,11 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FlightCoreModel& model,
     info_.push_back({body[i], kinds[i], 0});
     units_.emplace_back(body_units[i]);
   }
-  for (int k = 1; k <= modes_; ++k) {
+  for (int k = 1; k <= mode_count_; ++k) {
     info_.push_back({"q" + std::to_string(k), FloquetStateKind::kModal, k});
     units_.emplace_back("m kg^0.5");
   }
-  for (int k = 1; k <= modes_; ++k) {
+  for (int k = 1; k <= mode_count_; ++k) {
     info_.push_back({"q" + std::to_string(k) + "_dot", FloquetStateKind::kModal, k});
     units_.emplace_back("m kg^0.5/s");
   }
@@ -75,7 +75,7 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FreeFlightPeriodMap& other, Clone
     : base_(other.base_),
       options_(other.options_),
       n_(other.n_),
-      modes_(other.modes_),
+      mode_count_(other.mode_count_),
       full_(other.full_),
       power_(other.power_),
       scale_(other.scale_),

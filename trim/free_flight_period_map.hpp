@@ -89,7 +89,7 @@ class FreeFlightPeriodMap final : public PeriodMap {
   /// Names and kinds of the states (Floquet labels, CSV columns) and their units.
   const std::vector<FloquetStateInfo>& stateInfo() const { return info_; }
   const std::vector<std::string>& stateUnits() const { return units_; }
-  int modeCount() const { return modes_; }
+  int modeCount() const { return mode_count_; }
 
   /// x from the body state (theta, U, W, Q) and the wing state [q, q', aero states] (the layout of
   /// SimulationSummary::final_wing_state).
@@ -124,7 +124,7 @@ class FreeFlightPeriodMap final : public PeriodMap {
 
   const FlightCoreModel& base_;
   FreeFlightPeriodMapOptions options_;
-  int n_ = 0, modes_ = 0, full_ = 0, power_ = 0;
+  int n_ = 0, mode_count_ = 0, full_ = 0, power_ = 0;
   std::vector<double> scale_;
   std::vector<FloquetStateInfo> info_;
   std::vector<std::string> units_;

@@ -17,18 +17,19 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       flex_(flex),
       body_(body),
       control_(control),
-      M_(flex.mode_count),
+      mode_count_(flex.mode_count),
       n_aero_(model.aeroStateCount()),
       data_(model),
-      q_(M_), qd_(M_), qdd_(M_), Q_(M_), rhs_vec_(M_), frame_inertia_(M_),
+      q_(mode_count_), qd_(mode_count_), qdd_(mode_count_), Q_(mode_count_), rhs_vec_(mode_count_),
+      frame_inertia_(mode_count_),
       mass_base_packed_(packedLower(flex.M_qq + flex.stacked.apparent_const)),
-      chol_(M_),
+      chol_(mode_count_),
       kin_(flex.stacked, flex.mode_count),
-      packed_(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2),
+      packed_(static_cast<Eigen::Index>(mode_count_) * (mode_count_ + 1) / 2),
       extra_force_(static_cast<Eigen::Index>(model.strips.size())),
       extra_couple_(static_cast<Eigen::Index>(model.strips.size())),
       twist_mid_qdd_(2 * static_cast<Eigen::Index>(model.strips.size())),
-      split_(flex, 0, 2 * M_ + n_aero_ + kQuadratureChannels) {
+      split_(flex, 0, 2 * mode_count_ + n_aero_ + kQuadratureChannels) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw InvalidModelError(
         "the flexible wing needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -45,7 +46,7 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
 }
 
 void FlexibleTetheredSystem::initialState(double t_s, double* y) const {
-  for (int i = 0; i < 2 * M_; ++i) y[i] = 0.0;
+  for (int i = 0; i < 2 * mode_count_; ++i) y[i] = 0.0;
   initialAeroStates(model_, body_, control_, t_s, y + aeroOffset());
   for (int c = 0; c < kQuadratureChannels; ++c) y[quadratureOffset() + c] = 0.0;
 }
@@ -54,7 +55,7 @@ void FlexibleTetheredSystem::absoluteTolerances(double rel_tol, double lag_abs_t
                                                 double separation_abs_tol,
                                                 std::vector<double>* atol) const {
   atol->assign(static_cast<std::size_t>(stateCount()), lag_abs_tol);
-  modalAbsoluteTolerances(rel_tol, M_, 0, atol);
+  modalAbsoluteTolerances(rel_tol, mode_count_, 0, atol);
   const int per = model_.aero_states_per_strip;
   for (int i = aeroOffset() + per - 1; i < quadratureOffset(); i += per)
     (*atol)[static_cast<std::size_t>(i)] = separation_abs_tol;
@@ -71,8 +72,8 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   R_BW_ = rotX(flap.phi_rad);
   omega_W_ = Vec3(flap.phi_dot_radps, 0.0, 0.0);  // the body does not rotate (tethered)
   alpha_W_ = Vec3(flap.phi_ddot_radps2, 0.0, 0.0);
-  q_ = Eigen::Map<const Eigen::VectorXd>(y, M_);
-  qd_ = Eigen::Map<const Eigen::VectorXd>(y + M_, M_);
+  q_ = Eigen::Map<const Eigen::VectorXd>(y, mode_count_);
+  qd_ = Eigen::Map<const Eigen::VectorXd>(y + mode_count_, mode_count_);
 
   // Strip kinematics from rigid motion plus modes (structure.md 4.2), all strips at once.
   WingFrameMotion m;
@@ -136,9 +137,9 @@ void FlexibleTetheredSystem::fuselageLoads(const AeroResult& aero, const Vec3& F
 void FlexibleTetheredSystem::rhs(double t_s, const double* y, double* ydot) {
   AeroResult aero;
   evaluate(t_s, y, ydot + aeroOffset(), &aero);
-  for (int i = 0; i < M_; ++i) {
-    ydot[i] = y[M_ + i];
-    ydot[M_ + i] = qdd_[i];
+  for (int i = 0; i < mode_count_; ++i) {
+    ydot[i] = y[mode_count_ + i];
+    ydot[mode_count_ + i] = qdd_[i];
   }
   LoadSample s;
   const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));

@@ -16,9 +16,9 @@ class FlexibleTetheredSystem {
   FlexibleTetheredSystem(const FlightCoreModel& model, const FlexibleWingModel& flex,
                          const BodyMotion& body, const ControlInput& control);
 
-  int stateCount() const { return 2 * M_ + n_aero_ + kQuadratureChannels; }
-  int aeroOffset() const { return 2 * M_; }
-  int quadratureOffset() const { return 2 * M_ + n_aero_; }
+  int stateCount() const { return 2 * mode_count_ + n_aero_ + kQuadratureChannels; }
+  int aeroOffset() const { return 2 * mode_count_; }
+  int quadratureOffset() const { return 2 * mode_count_ + n_aero_; }
   /// Undeformed wing at rest relative to the frame, quasi-steady aero states, zero integrals.
   void initialState(double t_s, double* y) const;
   /// Absolute tolerances per state for a relative tolerance rel_tol.
@@ -54,7 +54,7 @@ class FlexibleTetheredSystem {
   const FlexibleWingModel& flex_;
   BodyMotion body_;
   ControlInput control_;
-  int M_ = 0;
+  int mode_count_ = 0;
   int n_aero_ = 0;
   FlightCoreData data_;
   // Per-evaluation workspace.

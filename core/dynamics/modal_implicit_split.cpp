@@ -8,7 +8,7 @@ namespace orni {
 
 ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offset,
                                        int state_count)
-    : M_(flex.mode_count),
+    : mode_count_(flex.mode_count),
       off_(q_offset),
       n_(state_count),
 
@@ -18,40 +18,40 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
       S_chol_(flex.mode_count),
       w_(flex.mode_count),
       r_(flex.mode_count) {
-  if (M_ < 1 || q_offset < 0 || q_offset + 2 * M_ > state_count)
+  if (mode_count_ < 1 || q_offset < 0 || q_offset + 2 * mode_count_ > state_count)
     throw std::invalid_argument("ModalImplicitSplit: modal rows outside the state");
   // A0 = M_qq + A(f = 1) (lower triangle from addApparentModalMass, then mirrored).
   Eigen::MatrixXd lower = flex.M_qq;
-  Eigen::VectorXd packed(static_cast<Eigen::Index>(M_) * (M_ + 1) / 2);
+  Eigen::VectorXd packed(static_cast<Eigen::Index>(mode_count_) * (mode_count_ + 1) / 2);
   const Eigen::ArrayXd attached = Eigen::ArrayXd::Ones(flex.stacked.ns);
   addApparentModalMass(flex.stacked, attached, 1.0, &packed, lower);
   A0_ = lower.selfadjointView<Eigen::Lower>();
   const Eigen::LLT<Eigen::MatrixXd> llt(A0_);
   if (llt.info() != Eigen::Success)
     throw std::runtime_error("ModalImplicitSplit: reference modal mass is not positive definite");
-  GH_.resize(M_, 2 * M_);
-  GH_.leftCols(M_) = llt.solve(Eigen::MatrixXd(K_.asDiagonal()));
-  GH_.rightCols(M_) = llt.solve(Eigen::MatrixXd(D_.asDiagonal()));
+  GH_.resize(mode_count_, 2 * mode_count_);
+  GH_.leftCols(mode_count_) = llt.solve(Eigen::MatrixXd(K_.asDiagonal()));
+  GH_.rightCols(mode_count_) = llt.solve(Eigen::MatrixXd(D_.asDiagonal()));
 }
 
 void ModalImplicitSplit::stiffAcceleration(const double* y) {
-  w_.noalias() = GH_ * Eigen::Map<const Eigen::VectorXd>(y + off_, 2 * M_);
+  w_.noalias() = GH_ * Eigen::Map<const Eigen::VectorXd>(y + off_, 2 * mode_count_);
 }
 
 void ModalImplicitSplit::apply(const double* y, double* ydot) {
   for (int i = 0; i < n_; ++i) ydot[i] = 0.0;
   stiffAcceleration(y);
-  for (int i = 0; i < M_; ++i) {
-    ydot[off_ + i] = y[off_ + M_ + i];
-    ydot[off_ + M_ + i] = -w_[i];
+  for (int i = 0; i < mode_count_; ++i) {
+    ydot[off_ + i] = y[off_ + mode_count_ + i];
+    ydot[off_ + mode_count_ + i] = -w_[i];
   }
 }
 
 void ModalImplicitSplit::removeFrom(const double* y, double* ydot) {
   stiffAcceleration(y);
-  for (int i = 0; i < M_; ++i) {
-    ydot[off_ + i] -= y[off_ + M_ + i];
-    ydot[off_ + M_ + i] += w_[i];
+  for (int i = 0; i < mode_count_; ++i) {
+    ydot[off_ + i] -= y[off_ + mode_count_ + i];
+    ydot[off_ + mode_count_ + i] += w_[i];
   }
 }
 
@@ -64,13 +64,14 @@ void ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
     gamma_ = gamma;
   }
   for (int i = 0; i < n_; ++i) x[i] = b[i];
-  const Eigen::Map<const Eigen::VectorXd> bq(b + off_, M_), bqd(b + off_ + M_, M_);
+  const Eigen::Map<const Eigen::VectorXd> bq(b + off_, mode_count_),
+      bqd(b + off_ + mode_count_, mode_count_);
   r_.noalias() = A0_ * bqd;
   r_ -= gamma * K_.cwiseProduct(bq);
   S_chol_.solveInPlace(r_);
   w_ = r_;
-  for (int i = 0; i < M_; ++i) {
-    x[off_ + M_ + i] = w_[i];
+  for (int i = 0; i < mode_count_; ++i) {
+    x[off_ + mode_count_ + i] = w_[i];
     x[off_ + i] = bq[i] + gamma * w_[i];
   }
 }

@@ -43,7 +43,7 @@ class ModalImplicitSplit {
   // w = A0^{-1} (K q + D q-dot) = [A0^{-1} K, A0^{-1} D] (q; q-dot)
   void stiffAcceleration(const double* y);
 
-  int M_, off_, n_;
+  int mode_count_, off_, n_;
   Eigen::MatrixXd A0_;   // symmetric, full
   Eigen::MatrixXd GH_;   // [A0^{-1} K, A0^{-1} D], M x 2M
   Eigen::VectorXd K_, D_;

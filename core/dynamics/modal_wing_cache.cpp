@@ -26,7 +26,7 @@ std::string modalWingKey(const structure::WingStructure& wing_structure) {
     appendDouble(&k, d);
   appendBytes(&k, &w.strip_count, sizeof w.strip_count);  // the mesh samples every strip
   appendDouble(&k, w.member_diameter_scale);
-  appendBytes(&k, &w.fe.mode_count, sizeof w.fe.mode_count);
+  appendBytes(&k, &w.fe.max_modes, sizeof w.fe.max_modes);
   k.push_back(w.fe.p3_cross_axis_normal ? 'n' : 's');
   k.push_back(static_cast<char>('0' + static_cast<int>(w.fe.p3_joint)));
   k.push_back(w.fe.root_edge_pinned ? 'r' : '-');

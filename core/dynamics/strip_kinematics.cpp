@@ -6,7 +6,7 @@ namespace orni {
 
 StripKinematics::StripKinematics(const StackedStrips& stacked, int mode_count)
     : st_(stacked),
-      M_(mode_count),
+      mode_count_(mode_count),
       ns_(static_cast<int>(stacked.ns)),
       S_(stacked.points),
       rates_(Eigen::VectorXd::Zero(4 * ns_)),
@@ -20,7 +20,8 @@ StripKinematics::StripKinematics(const StackedStrips& stacked, int mode_count)
 void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
                               const WingFrameMotion& m, aero::StripBatch& b) {
   const Eigen::Index n = ns_;
-  if (M_ > 0) {  // [s_T; s_L] = x + [phi_T; phi_L] q, [u'_L; twist'] = [phi_L; psi_twist] q'
+  if (mode_count_ > 0) {
+    // [s_T; s_L] = x + [phi_T; phi_L] q, [u'_L; twist'] = [phi_L; psi_twist] q'
     S_ = st_.points;
     S_.noalias() += st_.pointShapes() * q;
     rates_.noalias() = st_.rateShapes() * qd;

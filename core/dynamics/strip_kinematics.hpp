@@ -59,7 +59,7 @@ class StripKinematics {
 
  private:
   const StackedStrips& st_;
-  int M_;
+  int mode_count_;
   int ns_;
   Eigen::VectorXd S_;      // deformed sample points [s_T; s_L] (6 ns)
   Eigen::VectorXd rates_;  // [u'_L (3 ns); twist' (ns)]

@@ -6,7 +6,8 @@
 //
 // Cancellation points (each at most one short unit of work apart):
 //   - every flapping cycle of a tethered or free-flight simulation (core/dynamics);
-//   - every point of a point pool or aero-map stream (aero maps, sweeps, sensitivities; trim/);
+//   - every point of a point pool or aero-map stream (aero maps, sweeps, sensitivities;
+//     core/grid/point_pool.cpp, trim/aero_map_stream.cpp);
 //   - every design evaluation of an optimisation (optimize/optimizer.cpp);
 //   - every accepted point of a continuation (the study command's callback).
 // A trim's solver (Ceres) is left through its cost function, which reports the evaluation as

@@ -59,7 +59,7 @@ std::vector<VehicleNumber> makeNumbers() {
       ORNI_MEMBER("wing.members[].end_xy_m", 1, end_y_W_m),
 
       ORNI_PLAIN("wing.fe.element_size_m", v.wing.fe.element_size_m),
-      ORNI_INTEGER("wing.fe.modes", v.wing.fe.mode_count),
+      ORNI_INTEGER("wing.fe.modes", v.wing.fe.max_modes),
       ORNI_PLAIN("wing.fe.cutoff_hz", v.wing.fe.cutoff_hz),
       ORNI_PLAIN("wing.fe.damping_ratio", v.wing.fe.damping_ratio),
 

@@ -70,7 +70,7 @@ enum class InertialStiffness {
 /// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6, 3.7).
 struct WingFeSettings {
   double element_size_m = 0.005;  ///< target element edge h, <= semispan
-  int mode_count = 12;            ///< fixed-interface modes kept (at most)
+  int max_modes = 12;             ///< fixed-interface modes kept (at most; file key "modes")
   double cutoff_hz = 0.0;         ///< keep only modes below this frequency; 0 = no cut-off
   double damping_ratio = 0.015;   ///< modal damping zeta of every mode
   bool p3_cross_axis_normal = true;  ///< universal-joint cross axis n_u = z_W (true) or y_W

@@ -135,7 +135,7 @@ void checkWing(Checker& c, const VehicleModel& v) {
           displayNumber(fe.element_size_m) + " (about " +
               displayNumber(std::round(estimatedMeshNodes(w))) + " nodes)");
   }
-  c.integer("wing.fe.modes", fe.mode_count);
+  c.integer("wing.fe.modes", fe.max_modes);
   c.number("wing.fe.cutoff_hz", fe.cutoff_hz);
   c.number("wing.fe.damping_ratio", fe.damping_ratio);
 }

@@ -74,7 +74,7 @@ Eigen::VectorXd ModalWing::dampingDiagonal() const {
 ModalWingOptions modalWingOptionsOf(const WingFeSettings& fe) {
   ModalWingOptions options;
   options.support = WingSupport::of(fe);
-  options.selection.max_modes = fe.mode_count;
+  options.selection.max_modes = fe.max_modes;
   options.selection.cutoff_hz = fe.cutoff_hz;
   options.damping_ratio = fe.damping_ratio;
   return options;

@@ -7,21 +7,20 @@
 
 #include <string>
 
+#include "core/grid/grid_spec.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 #include "trim/aero_map.hpp"
-#include "trim/grid_spec.hpp"
 
 namespace {
 
 using namespace orni;
 
-trim::AeroMapGrid fig5Grid() {
-  trim::AeroMapGrid g;
-  g.speed_mps = trim::gridValues(trim::parseGridSpec("10:20:6"));
-  g.freq_hz = trim::gridValues(trim::parseGridSpec("10:20:6"));
-  for (const double d : trim::gridValues(trim::parseGridSpec("0:20:5")))
-    g.theta_rad.push_back(d * kDegToRad);
+AeroMapGrid fig5Grid() {
+  AeroMapGrid g;
+  g.speed_mps = gridValues(parseGridSpec("10:20:6"));
+  g.freq_hz = gridValues(parseGridSpec("10:20:6"));
+  for (const double d : gridValues(parseGridSpec("0:20:5"))) g.theta_rad.push_back(d * kDegToRad);
   return g;
 }
 
@@ -29,17 +28,17 @@ void BM_AeroMapEfw180(benchmark::State& state) {
   const VehicleModel v =
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
   const FlightCoreModel model(v);
-  trim::AeroMapGrid grid = fig5Grid();
+  AeroMapGrid grid = fig5Grid();
   grid.tail_angle_rad = {v.operating_point.tail_angle_rad};
-  trim::AeroMapOptions options;
+  AeroMapOptions options;
   options.threads = static_cast<int>(state.range(0));
-  trim::AeroMapSummary map;
+  AeroMapSummary map;
   for (auto _ : state) {
-    map = trim::buildAeroMap(model, grid, options);
+    map = buildAeroMap(model, grid, options);
     benchmark::DoNotOptimize(map.points.data());
   }
   int cycles = 0;
-  for (const trim::AeroMapPoint& p : map.points) cycles += p.cycles_run;
+  for (const AeroMapPoint& p : map.points) cycles += p.cycles_run;
   state.counters["points"] = static_cast<double>(map.points.size());
   state.counters["ok"] = static_cast<double>(map.ok);
   state.counters["cycles_per_point"] = static_cast<double>(cycles) /

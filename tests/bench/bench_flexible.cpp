@@ -32,12 +32,12 @@ VehicleModel efwFlexible() {
 
 void BM_EfwModalWingBuild(benchmark::State& state) {
   VehicleModel v = efwFlexible();
-  if (state.range(0) > 0) v.wing.fe.mode_count = static_cast<int>(state.range(0));
+  if (state.range(0) > 0) v.wing.fe.max_modes = static_cast<int>(state.range(0));
   int elements = 0;
   for (auto _ : state) {
     const structure::WingMesh mesh = structure::buildWingMesh(v, v.wing.fe.element_size_m);
     structure::ModalWingOptions opts;
-    opts.selection.max_modes = v.wing.fe.mode_count;
+    opts.selection.max_modes = v.wing.fe.max_modes;
     const structure::ModalWing mw = structure::buildModalWing(v, mesh, opts);
     benchmark::DoNotOptimize(mw.frequencies_hz.data());
     elements = static_cast<int>(mesh.triangles.size() + mesh.beams.size());
@@ -49,7 +49,7 @@ BENCHMARK(BM_EfwModalWingBuild)->ArgName("modes")->Arg(0)->Arg(12)->Unit(benchma
 // explicit 0: the default, modal stiffness implicit; 1: the explicit ARK4(3)6L table.
 void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
   VehicleModel v = efwFlexible();
-  if (state.range(1) > 0) v.wing.fe.mode_count = static_cast<int>(state.range(1));
+  if (state.range(1) > 0) v.wing.fe.max_modes = static_cast<int>(state.range(1));
   const FlightCoreModel model(v);
   SimulationOptions opts;
   opts.cycles = 10;

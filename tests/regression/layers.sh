@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The layer check (issue 15): no #include in core/, trim/, optimize/, studies/ or python/ runs up
 # a layer (tests/support/layer_rules.sh: model < aero, integrate, structure, analysis < dynamics
-# < trim < optimize < studies < python). The checker is shown to catch an upward include and a
+# < trim < optimize < studies < python; grid beside aero..analysis, below trim). The checker is shown to catch an upward include and a
 # cycle in a scratch tree first, so that this test can fail; likewise a private header of a core
 # folder (ORNI_PRIVATE_HEADERS) included from another folder.
 #   usage: bash layers.sh <ornithopter-binary (unused)> <repo-root> <scratch-dir>
@@ -26,6 +26,20 @@ rm "$t/core/model/up.hpp"
 echo '#include "core/dynamics/c.hpp"' > "$t/core/analysis/cycle.hpp"
 check "an analysis -> dynamics cycle fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
 rm "$t/core/analysis/cycle.hpp"
+# core/grid sits beside aero..analysis: on core/model only, included from trim and above.
+mkdir -p "$t/core/grid"
+echo '#include "core/model/a.hpp"' > "$t/core/grid/g.hpp"
+echo '#include "core/grid/g.hpp"' > "$t/trim/h.cpp"
+echo '#include "core/grid/g.hpp"' > "$t/studies/i.cpp"
+check "core/grid on core/model, included from trim and studies, passes" check_layers "$t"
+for up in core/analysis/b.hpp core/dynamics/c.hpp trim/d.hpp; do
+  echo "#include \"$up\"" > "$t/core/grid/up.hpp"
+  check "an include from core/grid of ${up%/*} fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
+done
+rm "$t/core/grid/up.hpp"
+echo '#include "core/grid/g.hpp"' > "$t/core/dynamics/j.cpp"
+check "an include from core/dynamics of core/grid (not linked) fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
+rm "$t/core/dynamics/j.cpp"
 mkdir -p "$t/core/integrate"
 echo '#include <vector>' > "$t/core/integrate/callback_guard.hpp"
 echo '#include "core/integrate/callback_guard.hpp"' > "$t/core/integrate/e.cpp"

@@ -3,6 +3,9 @@
 # ("trim"). Lower layers first:
 #   core/model  <  core/aero, core/integrate, core/structure, core/analysis  <  core/dynamics
 #   <  trim  <  optimize  <  studies  <  python
+# and core/grid (grid specs, sweep points, the point pool) beside aero..analysis: it includes
+# core/model only; trim and the layers above may include it, core/dynamics (which does not link
+# it) may not.
 # core/version.hpp (generated) may be included from anywhere; tests/ and examples/ from anything.
 # Private headers: a core folder's internals (no public header of the folder includes them), which
 # only files of the same folder may include (and the unit tests, which are not checked here).
@@ -30,8 +33,10 @@ check_layers() {  # check_layers ROOT
       function allows(from, to) {
         if (from == to) return 1
         if (from == "core/model" || from == "core/integrate") return 0
-        if (from == "core/aero" || from == "core/structure" || from == "core/analysis") return to == "core/model"
-        if (from == "core/dynamics" || from == "trim") return to ~ /^core\//
+        if (from == "core/aero" || from == "core/structure" || from == "core/analysis" ||
+            from == "core/grid") return to == "core/model"
+        if (from == "core/dynamics") return to ~ /^core\// && to != "core/grid"
+        if (from == "trim") return to ~ /^core\//
         if (from == "optimize") return to ~ /^core\// || to == "trim"
         if (from == "studies") return to ~ /^core\// || to == "trim" || to == "optimize"
         if (from == "python") return to ~ /^core\// || to == "trim" || to == "optimize" || to == "studies"

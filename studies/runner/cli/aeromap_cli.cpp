@@ -34,11 +34,11 @@ int runAeromap(const AeromapArgs& a) {
   if (!a.tail.empty()) tail = axisOption("--tail", "aeromap.tail_angle_deg", a.tail);
   std::size_t points = speed.values.size() * freq.values.size() * theta.values.size();
   if (tail) points *= tail->values.size();
-  if (points > trim::kMaxAeroMapPoints)
+  if (points > kMaxAeroMapPoints)
     throw CliError(
         "command line: options --speed, --freq, --theta, --tail: expected a grid of "
         "at most " +
-        std::to_string(trim::kMaxAeroMapPoints) + " points, got " + std::to_string(points));
+        std::to_string(kMaxAeroMapPoints) + " points, got " + std::to_string(points));
   Study study = aeromapStudyFromVehicle(a.vehicle, std::move(speed), std::move(freq),
                                         std::move(theta), std::move(tail));
   if (a.cycles)

@@ -8,11 +8,11 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "core/grid/grid_spec.hpp"
 #include "core/model/field_table.hpp"
 #include "core/model/value_range.hpp"
 #include "studies/runner/commands/run_study.hpp"
 #include "studies/runner/config/input_error.hpp"
-#include "trim/grid_spec.hpp"
 
 namespace orni::studies::cli {
 
@@ -50,10 +50,10 @@ double optionValue(const std::string& flag, std::string_view key, const std::str
 GridAxis axisOption(const std::string& flag, std::string_view key, const std::string& text) {
   const FieldSpec& f = field(key);
   const std::string expected =
-      std::string("A:B:N (") + trim::kGridSpecMeaning + "), " + f.range.describe("each value");
-  trim::GridSpec spec;
+      std::string("A:B:N (") + kGridSpecMeaning + "), " + f.range.describe("each value");
+  GridSpec spec;
   std::string reason;
-  if (!trim::tryParseGridSpec(text, &spec, &reason))
+  if (!tryParseGridSpec(text, &spec, &reason))
     throw optionError(flag, key, expected, "'" + text + "' (" + reason + ")");
   GridAxis axis = gridAxis(spec);
   for (const double v : axis.values)

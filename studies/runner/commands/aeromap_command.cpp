@@ -34,8 +34,8 @@ namespace fs = std::filesystem;
 /// Largest chunks a worker may be ahead of the first point not yet journaled (distributed runs).
 constexpr std::size_t kAeromapFarmChunksAhead = 4;
 
-trim::AeroMapGrid gridOf(const AeromapSettings& a) {
-  trim::AeroMapGrid g;
+AeroMapGrid gridOf(const AeromapSettings& a) {
+  AeroMapGrid g;
   g.speed_mps = a.speed_mps.values;
   g.freq_hz = a.freq_hz.values;
   for (const double d : a.theta_deg.values) g.theta_rad.push_back(d * kDegToRad);
@@ -59,8 +59,8 @@ struct MapCounts {
 
 /// aeromap.csv (layout in aeromap_command.hpp; column numbers in AeromapCsvColumns), one row at a
 /// time from the journal, which holds every point in order: a map of any size in bounded memory.
-MapCounts writeMapTable(const fs::path& path, const AeromapSettings& a,
-                        const trim::AeroMapGrid& grid, const AeroMapJournal& journal) {
+MapCounts writeMapTable(const fs::path& path, const AeromapSettings& a, const AeroMapGrid& grid,
+                        const AeroMapJournal& journal) {
   CsvStreamWriter csv(path, {{"speed_mps", "m/s"},
                              {"freq_hz", "Hz"},
                              {"theta_deg", "deg"},
@@ -78,7 +78,7 @@ MapCounts writeMapTable(const fs::path& path, const AeromapSettings& a,
   auto cell = [](bool ok, double v) { return ok ? formatShortest(v) : std::string(); };
   MapCounts counts;
   std::vector<std::string> row(csv.columns());
-  journal.replay([&](std::size_t i, const trim::AeroMapPoint& p) {
+  journal.replay([&](std::size_t i, const AeroMapPoint& p) {
     const auto ax = grid.axisIndices(i);
     const bool ok = p.status == SimulationStatus::kOk;
     row = {formatShortest(a.speed_mps.values[ax[0]]),
@@ -138,8 +138,8 @@ std::string briefReport(const MapCounts& map, std::size_t computed, double wall_
 int runAeromapStudy(const Study& study, const fs::path& out_dir,
                     const AeromapRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
-  const trim::AeroMapGrid grid = gridOf(study.aeromap());
-  trim::AeroMapOptions options;
+  const AeroMapGrid grid = gridOf(study.aeromap());
+  AeroMapOptions options;
   options.simulation = study.aeromap().options;
   options.threads = run.threads;
   std::string why;
@@ -154,7 +154,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
     FarmJob job;
     job.threads = run.threads;
     job.work = [&](std::size_t index, const std::string&) {
-      return journalRecord(index, trim::computeAeroMapPoint(model, grid.point(index), options));
+      return journalRecord(index, computeAeroMapPoint(model, grid.point(index), options));
     };
     runFarm(job);
     return 0;
@@ -179,7 +179,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   std::optional<ProgressLine> progress;
   if (run.progress) progress.emplace("aeromap", grid.size(), resume.records);
   const auto t_map = std::chrono::steady_clock::now();
-  auto on_point = [&](std::size_t index, const trim::AeroMapPoint& point) {
+  auto on_point = [&](std::size_t index, const AeroMapPoint& point) {
     journal.append(index, point);
     if (progress) progress->pointDone();
     if (run.on_point) run.on_point(index, point);
@@ -199,7 +199,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
                       static_cast<std::size_t>(farmRanks() - 1);
     job.on_result = [&](std::size_t index, std::string record) {
       std::size_t parsed = 0;
-      trim::AeroMapPoint point;
+      AeroMapPoint point;
       if (record.empty() || record.back() != '\n' ||
           !parseJournalRecord(std::string_view(record).substr(0, record.size() - 1),
                               grid.size(), &parsed, &point) ||
@@ -210,7 +210,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
     };
     runFarm(job);
   } else {
-    trim::streamAeroMap(model, grid, options, resume.records, on_point);
+    streamAeroMap(model, grid, options, resume.records, on_point);
   }
   if (progress) progress->finish();
   const std::size_t computed = grid.size() - resume.records;

@@ -28,7 +28,7 @@ struct AeromapRunOptions {
   bool progress = true;         ///< progress line with ETA on stderr
   bool figures = true;          ///< draw the figures (gnuplot)
   /// Observer of each computed point (tests count them); called after the journal append.
-  trim::AeroMapPointCallback on_point;
+  AeroMapPointCallback on_point;
 };
 
 /// Journal file name in the output folder.

@@ -4,10 +4,10 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "core/grid/point_pool.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/progress_line.hpp"
-#include "trim/point_pool.hpp"
 
 namespace orni::studies {
 
@@ -84,7 +84,7 @@ std::optional<JournaledPoints> runJournaledPoints(const JournaledPointsJob& job)
     };
     runFarm(farm);
   } else {
-    trim::runPoints(
+    runPoints(
         todo, job.threads, [&](std::size_t i) { rows[i] = job.compute(i); },
         [&](std::size_t i) {
           journal.append(i, encodeSweepPoint(rows[i]));

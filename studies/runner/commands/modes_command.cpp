@@ -322,7 +322,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   // The deck first: it is useful even when our own eigen-solution fails.
   if (!export_ccx_path.empty()) {
     structure::CalculixDeckOptions deck_options;
-    deck_options.mode_count = fe.mode_count;
+    deck_options.mode_count = fe.max_modes;
     deck_options.p3_cross_axis_normal = fe.p3_cross_axis_normal;
     deck_options.p3_joint = fe.p3_joint;
     deck_options.root_edge_pinned = fe.root_edge_pinned;
@@ -386,7 +386,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
                        .set("p2_node", mesh.p2_node)
                        .set("p3_node", mesh.p3_node))
       .set("settings", JsonObject()
-                           .set("modes_requested", fe.mode_count)
+                           .set("modes_requested", fe.max_modes)
                            .set("cutoff_hz", fe.cutoff_hz)
                            .set("damping_ratio", fe.damping_ratio)
                            .set("p3_cross_axis", fe.p3_cross_axis_normal ? "normal" : "span")

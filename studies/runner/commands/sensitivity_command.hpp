@@ -3,7 +3,7 @@
 // its plausible range, each trimmed, flown freely and held tethered at its trim
 // (commands/sensitivity_point.hpp); how far each end moves each prediction from the base.
 //
-// Points run on `threads` threads (trim/point_pool.hpp) and are stored by point index, so the
+// Points run on `threads` threads (core/grid/point_pool.hpp) and are stored by point index, so the
 // outputs do not depend on the thread count. Resumable like a sweep: finished points go to
 // DIR/sensitivity.journal (output/point_journal.hpp) as they finish; a re-run of the same study
 // into the same folder takes them over and computes only the rest, then removes the journal.

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/grid/sweep_grid.hpp"
 #include "studies/runner/commands/journaled_points.hpp"
 #include "studies/runner/commands/point_counts.hpp"
 #include "studies/runner/commands/run_info.hpp"
@@ -21,7 +22,6 @@
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
-#include "trim/sweep_grid.hpp"
 
 namespace orni::studies {
 
@@ -29,14 +29,14 @@ namespace {
 
 namespace fs = std::filesystem;
 
-trim::SweepGrid gridOf(const SweepSettings& s) {
-  trim::SweepGrid g;
+SweepGrid gridOf(const SweepSettings& s) {
+  SweepGrid g;
   for (const SweepAxis& a : s.axes) g.sizes.push_back(a.values.values.size());
   return g;
 }
 
 /// sweep.csv: axes, status, the result columns, message.
-CsvTable sweepTable(const SweepSettings& s, const trim::SweepGrid& grid,
+CsvTable sweepTable(const SweepSettings& s, const SweepGrid& grid,
                     const std::vector<SweepColumn>& columns,
                     const std::vector<SweepPointResult>& rows) {
   CsvTable t;
@@ -65,7 +65,7 @@ CsvTable sweepTable(const SweepSettings& s, const trim::SweepGrid& grid,
 
 /// Gnuplot script: one panel per plotted column with a value somewhere, the column against the
 /// first axis, one line per combination of the other axes' values. Empty when nothing to plot.
-std::string sweepFigure(const Study& study, const trim::SweepGrid& grid,
+std::string sweepFigure(const Study& study, const SweepGrid& grid,
                         const std::vector<SweepColumn>& columns,
                         const std::vector<SweepPointResult>& rows) {
   const SweepSettings& s = study.sweep();
@@ -156,7 +156,7 @@ std::string sweepFigure(const Study& study, const trim::SweepGrid& grid,
 int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOptions& run) {
   const auto t0 = std::chrono::steady_clock::now();
   const SweepSettings& s = study.sweep();
-  const trim::SweepGrid grid = gridOf(s);
+  const SweepGrid grid = gridOf(s);
   std::string why;
   if (!grid.IsValid(&why)) throw std::invalid_argument("sweep grid: " + why);
   if (s.points.size() != grid.size())

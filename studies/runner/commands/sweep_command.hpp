@@ -1,7 +1,7 @@
 // `kind = "sweep"` studies (architecture.md 5): another kind (trim, or simulate tethered or free)
 // run at every point of a grid of vehicle or analysis values, one row per point. Points run on
-// `threads` threads (trim/point_pool.hpp), results are stored by point index, so the outputs do
-// not depend on the thread count. Resumable like an aero map: finished points go to
+// `threads` threads (core/grid/point_pool.hpp), results are stored by point index, so the outputs
+// do not depend on the thread count. Resumable like an aero map: finished points go to
 // DIR/sweep.journal (output/point_journal.hpp) as they finish; a re-run of the same study into
 // the same folder takes them over and computes only the rest, then removes the journal once
 // every output, figures included, is in place.

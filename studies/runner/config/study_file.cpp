@@ -152,9 +152,9 @@ void readAeromap(TableReader& am, Study& study) {
   }
   std::size_t points = 1;
   for (const GridAxis* axis : {&a.speed_mps, &a.freq_hz, &a.theta_deg, &a.tail_angle_deg}) {
-    if (axis->values.size() > trim::kMaxAeroMapPoints / points)
-      throw am.valueError("speed_mps", "a grid of at most " +
-                                           std::to_string(trim::kMaxAeroMapPoints) + " points",
+    if (axis->values.size() > kMaxAeroMapPoints / points)
+      throw am.valueError("speed_mps",
+                          "a grid of at most " + std::to_string(kMaxAeroMapPoints) + " points",
                           "a larger grid");
     points *= axis->values.size();
   }
@@ -172,7 +172,7 @@ void readAeromap(TableReader& am, Study& study) {
 GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range,
                       std::string_view note) {
   const bool bounded = std::isfinite(range.lo) || std::isfinite(range.hi);
-  const std::string expected = std::string("a grid spec \"A:B:N\" (") + trim::kGridSpecMeaning +
+  const std::string expected = std::string("a grid spec \"A:B:N\" (") + kGridSpecMeaning +
                                "), an array of values or a number" +
                                (bounded ? ", " + range.describe("each value") : std::string()) +
                                std::string(note);
@@ -180,9 +180,9 @@ GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range,
   if (!n) throw r.missingError(key, expected);
   GridAxis axis;
   if (const auto* text = n->as_string()) {
-    trim::GridSpec spec;
+    GridSpec spec;
     std::string reason;
-    if (!trim::tryParseGridSpec(text->get(), &spec, &reason))
+    if (!tryParseGridSpec(text->get(), &spec, &reason))
       throw r.valueError(key, expected, describeNode(*n) + " (" + reason + ")");
     axis = gridAxis(spec);
     for (const double v : axis.values)
@@ -216,15 +216,15 @@ GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range,
 
 void writeGridAxis(TomlWriter& out, std::string_view key, const GridAxis& axis) {
   if (axis.spec)
-    out.string(key, trim::toString(*axis.spec));
+    out.string(key, toString(*axis.spec));
   else
     out.numberArray(key, axis.values);
 }
 
-GridAxis gridAxis(const trim::GridSpec& spec) {
+GridAxis gridAxis(const GridSpec& spec) {
   GridAxis axis;
   axis.spec = spec;
-  axis.values = trim::gridValues(spec);
+  axis.values = gridValues(spec);
   return axis;
 }
 

@@ -62,8 +62,8 @@
 //                   [[sweep.axes]] tables. An array, not a table of key -> values, because the
 //                   axes' order matters and a TOML table has none (toml++ iterates it
 //                   alphabetically): the points are the full factorial, the FIRST axis
-//                   outermost and the last varying fastest (trim/sweep_grid.hpp), the row order
-//                   of sweep.csv.
+//                   outermost and the last varying fastest (core/grid/sweep_grid.hpp), the row
+//                   order of sweep.csv.
 //              key    a vehicle key exactly as in [override] ("tail.arm_m", "body.mass_kg",
 //                     "operating_point.freq_hz") or a key of the run's analysis section prefixed
 //                     with its name ("trim.freq_hz", "trim.initial.speed_mps",
@@ -94,13 +94,13 @@
 #include <vector>
 
 #include "core/dynamics/simulation_options.hpp"
+#include "core/grid/grid_spec.hpp"
 #include "core/model/vehicle_model.hpp"
 #include "optimize/design_options.hpp"
 #include "optimize/design_space.hpp"
 #include "optimize/optimizer_options.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "trim/aero_map_options.hpp"
-#include "trim/grid_spec.hpp"
 #include "trim/calibration_options.hpp"
 #include "trim/trim_continuation.hpp"
 #include "trim/trim_options.hpp"
@@ -127,8 +127,8 @@ std::optional<StudyKind> parseStudyKind(std::string_view text);
 
 /// One axis of an aero map in file units (m/s, Hz, deg): a grid spec "A:B:N" or a list.
 struct GridAxis {
-  std::optional<orni::trim::GridSpec> spec;  ///< set when the axis was given as "A:B:N"
-  std::vector<double> values;                ///< the values (gridValues(spec), or as listed)
+  std::optional<orni::GridSpec> spec;  ///< set when the axis was given as "A:B:N"
+  std::vector<double> values;          ///< the values (gridValues(spec), or as listed)
 };
 
 /// The [aeromap] section (kind "aeromap").
@@ -138,7 +138,7 @@ struct AeromapSettings {
   /// of paper Fig. 5; false = the whole vehicle (wings, tail at the tail angle, fuselage drag).
   bool wing_only = false;
   /// Per-point options; cycles is the maximum (default 40), stop_when_steady is always on.
-  orni::SimulationOptions options = orni::trim::AeroMapOptions::defaultSimulation();
+  orni::SimulationOptions options = orni::AeroMapOptions::defaultSimulation();
 };
 
 /// One axis of a sweep: a key and its values in the key's file units.
@@ -153,7 +153,7 @@ struct Study;
 struct SweepSettings {
   StudyKind run = StudyKind::kTrim;  ///< kTrim or kSimulate
   std::vector<SweepAxis> axes;       ///< in file order; the first is the outermost
-  /// One resolved study of kind `run` per point, in point order (trim/sweep_grid.hpp).
+  /// One resolved study of kind `run` per point, in point order (core/grid/sweep_grid.hpp).
   std::vector<Study> points;
   /// Keys of the base study's resolved sections whose value differs between points although no
   /// axis sets them (defaults that follow a swept key, e.g. "trim.freq_hz" when the axis is
@@ -249,7 +249,7 @@ bool isAnalysisKey(const std::string& key, StudyKind run);
 std::string keyUnit(const std::string& key);
 
 /// The axis of a grid spec (values = gridValues(spec)).
-GridAxis gridAxis(const orni::trim::GridSpec& spec);
+GridAxis gridAxis(const orni::GridSpec& spec);
 
 /// Reads and validates a study file and the vehicle it names. Throws InputError.
 Study loadStudyFile(const std::filesystem::path& study_file);

@@ -16,10 +16,10 @@
 #include <utility>
 #include <vector>
 
+#include "core/grid/sweep_grid.hpp"
 #include "core/model/vehicle_fields.hpp"
 #include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/trim_section.hpp"
-#include "trim/sweep_grid.hpp"
 
 namespace orni::studies {
 
@@ -82,12 +82,12 @@ struct AxisInput {
 };
 
 std::vector<AxisInput> readAxes(TableReader& sweep, StudyKind run) {
-  const std::string expected = "an array of 1 to " + std::to_string(trim::kMaxSweepAxes) +
+  const std::string expected = "an array of 1 to " + std::to_string(kMaxSweepAxes) +
                                " tables { key = \"...\", values = ... }";
   const toml::node* n = sweep.table().get("axes");
   if (!n) throw sweep.missingError("axes", expected);
   const toml::array* a = n->as_array();
-  if (!a || a->empty() || a->size() > trim::kMaxSweepAxes)
+  if (!a || a->empty() || a->size() > kMaxSweepAxes)
     throw sweep.valueError("axes", expected, describeNode(*n));
   std::vector<TableReader> readers = sweep.optionalTableArray("axes", {"key", "values"});
   std::vector<AxisInput> axes;
@@ -427,14 +427,14 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
             "\" at every point, with the settings of [" + sectionOf(run) + "]");
   }
 
-  trim::SweepGrid grid;
+  SweepGrid grid;
   for (const AxisInput& a : axes) grid.sizes.push_back(a.axis.values.values.size());
   std::string why;
   if (!grid.IsValid(&why))
-    throw sweep.valueError("axes",
-                           "at most " + std::to_string(trim::kMaxSweepPoints) +
-                               " points (the product of the axis sizes)",
-                           "a larger grid (" + why + ")");
+    throw sweep.valueError(
+        "axes",
+        "at most " + std::to_string(kMaxSweepPoints) + " points (the product of the axis sizes)",
+        "a larger grid (" + why + ")");
 
   // The base: the study without the axes. Its errors are ordinary study-file errors.
   const PointValues none(axes.size());

@@ -147,7 +147,7 @@ void readWing(TableReader& top, VehicleModel& v) {
                  "p3_joint", "root_edge", "inertial_stiffness"})) {
     WingFeSettings& f = wing.fe;
     f.element_size_m = fe->optionalDouble(field("wing.fe.element_size_m"), f.element_size_m);
-    f.mode_count = fe->optionalInt(field("wing.fe.modes"), f.mode_count);
+    f.max_modes = fe->optionalInt(field("wing.fe.modes"), f.max_modes);
     f.cutoff_hz = fe->optionalDouble(field("wing.fe.cutoff_hz"), f.cutoff_hz);
     f.damping_ratio =
         fe->optionalDouble(field("wing.fe.damping_ratio"), f.damping_ratio);
@@ -408,7 +408,7 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
   }
   out.header(path({"wing", "fe"}));
   out.number("element_size_m", w.fe.element_size_m);
-  out.integer("modes", w.fe.mode_count);
+  out.integer("modes", w.fe.max_modes);
   out.number("cutoff_hz", w.fe.cutoff_hz, w.fe.cutoff_hz > 0.0 ? "" : "0 = no cut-off");
   out.number("damping_ratio", w.fe.damping_ratio);
   out.string("p3_cross_axis", nameOf(kCrossAxes, w.fe.p3_cross_axis_normal));

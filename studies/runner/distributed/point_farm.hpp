@@ -7,7 +7,7 @@
 // progress; it hands out the indices of `todo` in ascending order, in chunks, to whichever worker
 // asks (dynamic load balancing: a stalled trim does not hold up the others), and receives each
 // point's result as bytes. The other ranks are workers: they compute the points they are given
-// (each chunk on `threads` threads, trim/point_pool.hpp) and write nothing.
+// (each chunk on `threads` threads, core/grid/point_pool.hpp) and write nothing.
 //
 // The result bytes are the point's journal payload (the exact, shortest round-trip serialisation
 // that a resumed run reads back bit-identically), so the master builds its outputs the way a
@@ -37,7 +37,7 @@ struct FarmJob {
   /// replay); empty when not set.
   std::function<std::string(std::size_t index)> task_input;
   /// Workers: computes point `index` and returns its result bytes. Called concurrently for
-  /// different indices (like trim::PointWork); a numerical failure must be part of the result (a
+  /// different indices (like PointWork); a numerical failure must be part of the result (a
   /// status), an escaping exception aborts the whole run.
   std::function<std::string(std::size_t index, const std::string& input)> work;
   /// Master: the result bytes of point `index`, on the master's thread, one call at a time.

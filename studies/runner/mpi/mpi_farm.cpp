@@ -15,9 +15,9 @@
 #include <utility>
 #include <vector>
 
+#include "core/grid/point_pool.hpp"
 #include "studies/runner/distributed/farm_messages.hpp"
 #include "studies/runner/distributed/farm_schedule.hpp"
-#include "trim/point_pool.hpp"
 
 // Open MPI's handles are macros with C casts (MPI_COMM_WORLD, MPI_BYTE, ...).
 #pragma GCC diagnostic ignored "-Wold-style-cast"
@@ -202,9 +202,8 @@ void MpiFarm::runWorker(const FarmJob& job) {
     std::vector<std::string> results(items.size());
     std::vector<std::size_t> slots(items.size());
     for (std::size_t k = 0; k < slots.size(); ++k) slots[k] = k;
-    trim::runPoints(slots, job.threads, [&](std::size_t k) {
-      results[k] = job.work(items[k].first, items[k].second);
-    });
+    runPoints(slots, job.threads,
+              [&](std::size_t k) { results[k] = job.work(items[k].first, items[k].second); });
     FarmItems done;
     done.reserve(items.size());
     for (std::size_t k = 0; k < items.size(); ++k)

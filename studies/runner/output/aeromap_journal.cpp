@@ -41,7 +41,7 @@ bool parseStatus(std::string_view s, SimulationStatus* status) {
 
 /// The record after "<index>,": status,cycles_run,steady_cycle,last_cycle_change,FV,FH,M,
 /// power_aero,power_hinge,message.
-std::string payloadOf(const trim::AeroMapPoint& p) {
+std::string payloadOf(const AeroMapPoint& p) {
   std::string payload = toString(p.status);
   payload += ',' + std::to_string(p.cycles_run) + ',' + std::to_string(p.steady_state_cycle);
   for (const double v : {p.last_cycle_change, p.mean.FV_N, p.mean.FH_N, p.mean.M_Nm,
@@ -52,7 +52,7 @@ std::string payloadOf(const trim::AeroMapPoint& p) {
   return payload;
 }
 
-bool decodePayload(std::string_view payload, trim::AeroMapPoint* point) {
+bool decodePayload(std::string_view payload, AeroMapPoint* point) {
   std::string_view field[kFields];
   std::size_t start = 0;
   for (int f = 0; f < kFields - 1; ++f) {
@@ -62,7 +62,7 @@ bool decodePayload(std::string_view payload, trim::AeroMapPoint* point) {
     start = comma + 1;
   }
   field[kFields - 1] = payload.substr(start);  // the message may contain commas
-  trim::AeroMapPoint p;
+  AeroMapPoint p;
   if (!parseStatus(field[0], &p.status)) return false;
   if (!parseWholeInt(field[1], &p.cycles_run) || !parseWholeInt(field[2], &p.steady_state_cycle))
     return false;
@@ -77,15 +77,15 @@ bool decodePayload(std::string_view payload, trim::AeroMapPoint* point) {
 
 }  // namespace
 
-std::string journalRecord(std::size_t index, const trim::AeroMapPoint& p) {
+std::string journalRecord(std::size_t index, const AeroMapPoint& p) {
   return pointJournalRecord(index, payloadOf(p));
 }
 
 bool parseJournalRecord(std::string_view line, std::size_t points, std::size_t* index,
-                        trim::AeroMapPoint* point) {
+                        AeroMapPoint* point) {
   std::size_t i = 0;
   std::string_view payload;
-  trim::AeroMapPoint p;
+  AeroMapPoint p;
   if (!parsePointJournalRecord(line, points, &i, &payload) || !decodePayload(payload, &p))
     return false;
   *index = i;
@@ -99,7 +99,7 @@ AeroMapJournal::AeroMapJournal(std::filesystem::path file, std::uint64_t fingerp
   JournalResume r;
   auto keep = [&](std::string_view line) {
     std::size_t index = 0;
-    trim::AeroMapPoint p;
+    AeroMapPoint p;
     if (!parseJournalRecord(line, points_, &index, &p) || index != records_) return false;
     ++records_;
     return true;
@@ -116,7 +116,7 @@ AeroMapJournal::AeroMapJournal(std::filesystem::path file, std::uint64_t fingerp
   if (resume) *resume = r;
 }
 
-void AeroMapJournal::append(std::size_t index, const trim::AeroMapPoint& point) {
+void AeroMapJournal::append(std::size_t index, const AeroMapPoint& point) {
   if (index != records_)
     throw std::logic_error("aeromap journal: point " + std::to_string(index) +
                            " appended where point " + std::to_string(records_) + " is next");
@@ -125,14 +125,14 @@ void AeroMapJournal::append(std::size_t index, const trim::AeroMapPoint& point) 
 }
 
 void AeroMapJournal::replay(
-    const std::function<void(std::size_t, const trim::AeroMapPoint&)>& visit) const {
+    const std::function<void(std::size_t, const AeroMapPoint&)>& visit) const {
   std::ifstream in(file_->path(), std::ios::binary);
   std::string line;
   if (!in || !std::getline(in, line))
     throw std::runtime_error("cannot read " + file_->path().string());
   for (std::size_t expected = 0; expected < records_; ++expected) {
     std::size_t index = 0;
-    trim::AeroMapPoint p;
+    AeroMapPoint p;
     if (!std::getline(in, line) || !parseJournalRecord(line, points_, &index, &p) ||
         index != expected)
       throw std::runtime_error(file_->path().string() + ": record of point " +

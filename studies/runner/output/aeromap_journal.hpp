@@ -35,11 +35,11 @@
 namespace orni::studies {
 
 /// One journal line (with its newline) for point `index`.
-std::string journalRecord(std::size_t index, const trim::AeroMapPoint& point);
+std::string journalRecord(std::size_t index, const AeroMapPoint& point);
 /// Parses one journal line (without its newline); false when it is not a valid record of a map of
 /// `points` points.
 bool parseJournalRecord(std::string_view line, std::size_t points, std::size_t* index,
-                        trim::AeroMapPoint* point);
+                        AeroMapPoint* point);
 
 /// What reopening a journal found.
 struct JournalResume {
@@ -63,12 +63,12 @@ class AeroMapJournal {
 
   /// Appends the record of point `index`, which must be the next one (records() before the call;
   /// std::logic_error otherwise), in one write. Throws std::runtime_error on failure.
-  void append(std::size_t index, const trim::AeroMapPoint& point);
+  void append(std::size_t index, const AeroMapPoint& point);
   /// Points recorded so far (kept on opening plus appended).
   std::size_t records() const { return records_; }
   /// Reads every record back, in point order, into visit(index, point), one at a time. Throws
   /// std::runtime_error when the file cannot be read or a record does not read back.
-  void replay(const std::function<void(std::size_t, const trim::AeroMapPoint&)>& visit) const;
+  void replay(const std::function<void(std::size_t, const AeroMapPoint&)>& visit) const;
   /// Closes and deletes the journal (after the final outputs are written).
   void remove();
 

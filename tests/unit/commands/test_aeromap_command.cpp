@@ -26,8 +26,8 @@ namespace fs = std::filesystem;
 Study smallMap() {
   return aeromapStudyFromVehicle(
       fs::path(ORNI_SOURCE_DIR) / "studies" / "vehicles" / "efw_magpie.toml",
-      gridAxis(trim::parseGridSpec("10:14:3")), gridAxis(trim::parseGridSpec("10:16:2")),
-      gridAxis(trim::parseGridSpec("0:15:3")), std::nullopt);
+      gridAxis(parseGridSpec("10:14:3")), gridAxis(parseGridSpec("10:16:2")),
+      gridAxis(parseGridSpec("0:15:3")), std::nullopt);
 }
 constexpr std::size_t kPoints = 18;
 
@@ -105,7 +105,7 @@ TEST_F(CommandsAeromap, ResumesFromATornJournalWithoutRecomputing) {
   const fs::path out = dir_ / "crashed";
   AeromapRunOptions crash = quiet(2);
   std::size_t calls = 0;
-  crash.on_point = [&](std::size_t, const trim::AeroMapPoint&) {
+  crash.on_point = [&](std::size_t, const AeroMapPoint&) {
     if (++calls == kPoints) throw std::runtime_error("simulated crash");
   };
   EXPECT_THROW(runAeromapStudy(study, out, crash), std::runtime_error);
@@ -124,7 +124,7 @@ TEST_F(CommandsAeromap, ResumesFromATornJournalWithoutRecomputing) {
     for (std::size_t i = 1; i <= kept; ++i) {
       cut << all[i] << "\n";
       std::size_t index = 0;
-      trim::AeroMapPoint p;
+      AeroMapPoint p;
       ASSERT_TRUE(parseJournalRecord(all[i], kPoints, &index, &p));
       finished.insert(index);
     }
@@ -135,7 +135,7 @@ TEST_F(CommandsAeromap, ResumesFromATornJournalWithoutRecomputing) {
   AeromapRunOptions resume = quiet(2);
   std::mutex m;
   std::set<std::size_t> computed;
-  resume.on_point = [&](std::size_t index, const trim::AeroMapPoint&) {
+  resume.on_point = [&](std::size_t index, const AeroMapPoint&) {
     std::lock_guard<std::mutex> lock(m);
     computed.insert(index);
   };
@@ -157,7 +157,7 @@ TEST_F(CommandsAeromap, JournalOfAnotherStudyIsDiscarded) {
     Study other = study;
     other.aeromap().options.steady_tol = 2e-3;
     AeromapRunOptions crash = quiet(1);
-    crash.on_point = [](std::size_t, const trim::AeroMapPoint&) {
+    crash.on_point = [](std::size_t, const AeroMapPoint&) {
       throw std::runtime_error("simulated crash");
     };
     EXPECT_THROW(runAeromapStudy(other, out, crash), std::runtime_error);
@@ -165,7 +165,7 @@ TEST_F(CommandsAeromap, JournalOfAnotherStudyIsDiscarded) {
   }
   AeromapRunOptions run = quiet(2);
   std::size_t computed = 0;
-  run.on_point = [&](std::size_t, const trim::AeroMapPoint&) { ++computed; };
+  run.on_point = [&](std::size_t, const AeroMapPoint&) { ++computed; };
   ASSERT_EQ(runAeromapStudy(study, out, run), 0);
   EXPECT_EQ(computed, kPoints);
 }

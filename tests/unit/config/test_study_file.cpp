@@ -303,10 +303,9 @@ TEST_F(ConfigStudyFile, AeromapSectionRules) {
 }
 
 TEST_F(ConfigStudyFile, AeromapStudyFromVehicle) {
-  const Study s = aeromapStudyFromVehicle(vehiclePath("efw_magpie.toml"),
-                                          gridAxis(trim::parseGridSpec("10:20:6")),
-                                          gridAxis(trim::parseGridSpec("12:12:1")),
-                                          gridAxis(trim::parseGridSpec("0:20:5")), std::nullopt);
+  const Study s = aeromapStudyFromVehicle(
+      vehiclePath("efw_magpie.toml"), gridAxis(parseGridSpec("10:20:6")),
+      gridAxis(parseGridSpec("12:12:1")), gridAxis(parseGridSpec("0:20:5")), std::nullopt);
   EXPECT_EQ(s.kind, StudyKind::kAeromap);
   EXPECT_EQ(s.name, "efw_magpie_aeromap");
   EXPECT_EQ(s.aeromap().tail_angle_deg.values, (std::vector<double>{11.85}));
@@ -316,10 +315,9 @@ TEST_F(ConfigStudyFile, AeromapStudyFromVehicle) {
 }
 
 TEST_F(ConfigStudyFile, KindSettingsOfAnotherKindAreALogicError) {
-  const Study map = aeromapStudyFromVehicle(vehiclePath("efw_magpie.toml"),
-                                            gridAxis(trim::parseGridSpec("10:20:6")),
-                                            gridAxis(trim::parseGridSpec("12:12:1")),
-                                            gridAxis(trim::parseGridSpec("0:20:5")), std::nullopt);
+  const Study map = aeromapStudyFromVehicle(
+      vehiclePath("efw_magpie.toml"), gridAxis(parseGridSpec("10:20:6")),
+      gridAxis(parseGridSpec("12:12:1")), gridAxis(parseGridSpec("0:20:5")), std::nullopt);
   EXPECT_NO_THROW((void)map.aeromap());
   try {
     (void)map.sweep();

@@ -52,7 +52,7 @@ void expectSameVehicle(const VehicleModel& a, const VehicleModel& b) {
     EXPECT_EQ(p.end_y_W_m, q.end_y_W_m);
   }
   EXPECT_EQ(a.wing.fe.element_size_m, b.wing.fe.element_size_m);
-  EXPECT_EQ(a.wing.fe.mode_count, b.wing.fe.mode_count);
+  EXPECT_EQ(a.wing.fe.max_modes, b.wing.fe.max_modes);
   EXPECT_EQ(a.wing.fe.cutoff_hz, b.wing.fe.cutoff_hz);
   EXPECT_EQ(a.wing.fe.damping_ratio, b.wing.fe.damping_ratio);
   EXPECT_EQ(a.wing.fe.p3_cross_axis_normal, b.wing.fe.p3_cross_axis_normal);
@@ -134,7 +134,7 @@ TEST(ConfigVehicleFile, LoadsEfwMagpieInSi) {
   }
 
   EXPECT_DOUBLE_EQ(v.wing.fe.element_size_m, 0.005);
-  EXPECT_EQ(v.wing.fe.mode_count, 24);  // chosen by convergence (the file says why)
+  EXPECT_EQ(v.wing.fe.max_modes, 24);  // chosen by convergence (the file says why)
   EXPECT_DOUBLE_EQ(v.wing.fe.cutoff_hz, 0.0);
   EXPECT_DOUBLE_EQ(v.wing.fe.damping_ratio, 0.015);
   EXPECT_FALSE(v.wing.fe.p3_cross_axis_normal);  // fitted: "span"
@@ -232,7 +232,7 @@ TEST(ConfigVehicleFile, WingFeSettingsRoundTrip) {
   // Non-default [wing.fe] values survive writing and reading; the table is always written.
   VehicleModel v = loadVehicleFile(vehiclePath("efw_magpie.toml"));
   v.wing.fe.element_size_m = 0.0035;
-  v.wing.fe.mode_count = 37;
+  v.wing.fe.max_modes = 37;
   v.wing.fe.cutoff_hz = 240.5;
   v.wing.fe.damping_ratio = 0.02;
   v.wing.fe.p3_cross_axis_normal = false;
@@ -275,7 +275,7 @@ theta_deg = 0.0
   const VehicleModel v = parseVehicleTable(t, "mem.toml");
   const WingFeSettings d;
   EXPECT_EQ(v.wing.fe.element_size_m, d.element_size_m);
-  EXPECT_EQ(v.wing.fe.mode_count, d.mode_count);
+  EXPECT_EQ(v.wing.fe.max_modes, d.max_modes);
   EXPECT_EQ(v.wing.fe.cutoff_hz, d.cutoff_hz);
   EXPECT_EQ(v.wing.fe.damping_ratio, d.damping_ratio);
   EXPECT_EQ(v.wing.fe.p3_cross_axis_normal, d.p3_cross_axis_normal);

@@ -23,7 +23,7 @@ VehicleModel efw(StructureLevel level) {
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
   v.wing.structure = level;
   v.wing.fe.element_size_m = 0.01;  // coarse mesh: fast test
-  v.wing.fe.mode_count = 6;
+  v.wing.fe.max_modes = 6;
   return v;
 }
 
@@ -204,7 +204,7 @@ TEST(DynamicsFlexibleTethered, CycleMeansConvergeInModeCountAndMeshSize) {
   };
   const auto ref = means(base);
   VehicleModel more_modes = base;
-  more_modes.wing.fe.mode_count *= 2;
+  more_modes.wing.fe.max_modes *= 2;
   VehicleModel finer = base;
   finer.wing.fe.element_size_m *= 0.5;
   const double c_mean = base.wing.semispan_m > 0.0

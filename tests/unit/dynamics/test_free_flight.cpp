@@ -24,7 +24,7 @@ VehicleModel efw(StructureLevel level) {
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
   v.wing.structure = level;
   v.wing.fe.element_size_m = 0.01;  // coarse mesh: fast test
-  v.wing.fe.mode_count = 6;
+  v.wing.fe.max_modes = 6;
   return v;
 }
 

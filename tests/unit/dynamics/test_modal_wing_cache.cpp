@@ -23,7 +23,7 @@ VehicleModel efw() {
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
   v.wing.structure = StructureLevel::kFlexible;
   v.wing.fe.element_size_m = 0.02;  // a coarse mesh: quick builds, same cache logic
-  v.wing.fe.mode_count = 6;
+  v.wing.fe.max_modes = 6;
   return v;
 }
 
@@ -73,7 +73,7 @@ TEST(ModalWingCache, BuildsOncePerStructure) {
   w.wing.fe.element_size_m *= 0.9;
   expectRebuild(w, "the element size");
   w = v;
-  w.wing.fe.mode_count = 4;
+  w.wing.fe.max_modes = 4;
   expectRebuild(w, "the mode count");
 }
 

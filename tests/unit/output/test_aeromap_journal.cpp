@@ -19,8 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-trim::AeroMapPoint samplePoint() {
-  trim::AeroMapPoint p;
+AeroMapPoint samplePoint() {
+  AeroMapPoint p;
   p.status = SimulationStatus::kOk;
   p.message = "periodic steady state reached at cycle 3 (change 4.6e-04, 1e-3), \"quoted\"";
   p.cycles_run = 3;
@@ -42,11 +42,11 @@ std::string readAll(const fs::path& f) {
 }
 
 TEST(OutputAeromapJournal, RecordsRoundTripExactly) {
-  const trim::AeroMapPoint p = samplePoint();
+  const AeroMapPoint p = samplePoint();
   const std::string line = journalRecord(17, p);
   ASSERT_EQ(line.back(), '\n');
   std::size_t index = 0;
-  trim::AeroMapPoint q;
+  AeroMapPoint q;
   ASSERT_TRUE(parseJournalRecord(std::string_view(line).substr(0, line.size() - 1), 18, &index,
                                  &q));
   EXPECT_EQ(index, 17u);
@@ -61,7 +61,7 @@ TEST(OutputAeromapJournal, RecordsRoundTripExactly) {
   EXPECT_EQ(q.mean.power_aero_W, p.mean.power_aero_W);
   EXPECT_EQ(q.mean.power_hinge_W, 0.0);
 
-  trim::AeroMapPoint failed;
+  AeroMapPoint failed;
   failed.status = SimulationStatus::kDiverged;
   failed.mean.FV_N = std::numeric_limits<double>::quiet_NaN();
   failed.message = "non-finite loads";
@@ -76,7 +76,7 @@ TEST(OutputAeromapJournal, RejectsTornAndCorruptRecords) {
   const std::string full = journalRecord(5, samplePoint());
   const std::string_view line = std::string_view(full).substr(0, full.size() - 1);
   std::size_t index = 0;
-  trim::AeroMapPoint q;
+  AeroMapPoint q;
   ASSERT_TRUE(parseJournalRecord(line, 6, &index, &q));
   for (std::size_t cut = 0; cut < line.size(); ++cut)
     EXPECT_FALSE(parseJournalRecord(line.substr(0, cut), 6, &index, &q)) << "cut at " << cut;
@@ -124,7 +124,7 @@ TEST(OutputAeromapJournal, ReopenKeepsOnlyTheValidRecordsInOrderOfTheSameStudy) 
     EXPECT_EQ(r.records, 3u);
     EXPECT_EQ(r.rejected_lines, 0u);
     std::vector<std::size_t> seen;
-    j.replay([&](std::size_t index, const trim::AeroMapPoint& p) {
+    j.replay([&](std::size_t index, const AeroMapPoint& p) {
       seen.push_back(index);
       EXPECT_EQ(p.message, samplePoint().message);
       EXPECT_EQ(p.mean.FV_N, samplePoint().mean.FV_N);

@@ -16,7 +16,7 @@
 #include "studies/runner/config/vehicle_file.hpp"
 #include "trim/aero_map.hpp"
 
-namespace orni::trim {
+namespace orni {
 namespace {
 
 VehicleModel efw() {
@@ -122,7 +122,7 @@ TEST(TrimAeroMap, FlexibleWingSharedBetweenThreads) {
   VehicleModel v = efw();
   v.wing.structure = StructureLevel::kFlexible;
   v.wing.fe.element_size_m = 0.01;  // coarse mesh: fast test
-  v.wing.fe.mode_count = 6;
+  v.wing.fe.max_modes = 6;
   const FlightCoreModel model(v);  // the modal wing is built here, once, before any thread
   ASSERT_TRUE(model.flexible);
   AeroMapGrid grid;
@@ -233,4 +233,4 @@ TEST(TrimAeroMap, NotConvergedPointsKeepTheirReason) {
 }
 
 }  // namespace
-}  // namespace orni::trim
+}  // namespace orni

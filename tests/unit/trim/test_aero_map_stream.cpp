@@ -12,7 +12,7 @@
 #include "trim/aero_map.hpp"
 #include "trim/aero_map_stream.hpp"
 
-namespace orni::trim {
+namespace orni {
 namespace {
 
 /// 3 speeds x 2 frequencies x 3 pitches = 18 points of the RFW rig.
@@ -65,4 +65,4 @@ TEST(TrimAeroMapStream, ACallbackFailureStopsTheMap) {
 }
 
 }  // namespace
-}  // namespace orni::trim
+}  // namespace orni

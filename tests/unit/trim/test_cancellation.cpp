@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "core/dynamics/tethered_simulation.hpp"
+#include "core/grid/point_pool.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/model/frames.hpp"
 #include "optimize/optimizer.hpp"
 #include "tests/support/magpie_vehicle.hpp"
-#include "trim/point_pool.hpp"
 #include "trim/trim_solver.hpp"
 
 namespace orni {
@@ -41,17 +41,17 @@ TEST(Cancellation, PointPoolStartsNoPointAfterTheRequest) {
     std::vector<std::size_t> todo(50);
     for (std::size_t i = 0; i < todo.size(); ++i) todo[i] = i;
     std::atomic<int> started{0};
-    EXPECT_THROW(trim::runPoints(todo, threads,
-                                 [&](std::size_t i) {
-                                   ++started;
-                                   if (i == 5) requestCancellation();
-                                 }),
+    EXPECT_THROW(runPoints(todo, threads,
+                           [&](std::size_t i) {
+                             ++started;
+                             if (i == 5) requestCancellation();
+                           }),
                  Cancelled);
     // Point 5 asked; at most the points already taken by the other worker ran after it.
     EXPECT_LE(started.load(), 6 + threads) << threads;
     clearCancellation();
     std::atomic<int> all{0};
-    trim::runPoints(todo, threads, [&](std::size_t) { ++all; });
+    runPoints(todo, threads, [&](std::size_t) { ++all; });
     EXPECT_EQ(all.load(), 50);
   }
 }

@@ -1,12 +1,12 @@
-// Grid axes of an aero map (paper Fig. 5: mean loads over speed, frequency and pitch): the text
-// "A:B:N" means N evenly spaced values from A to B inclusive.
+// Grid axes of an aero map (paper Fig. 5: mean loads over speed, frequency and pitch) and of a
+// sweep: the text "A:B:N" means N evenly spaced values from A to B inclusive.
 #pragma once
 
 #include <string>
 #include <string_view>
 #include <vector>
 
-namespace orni::trim {
+namespace orni {
 
 /// N evenly spaced values from `first` to `last` inclusive (descending when last < first).
 struct GridSpec {
@@ -41,4 +41,4 @@ std::vector<double> gridValues(const GridSpec& spec);
 /// Canonical text "A:B:N" with shortest round-trip numbers; parseGridSpec reads it back exactly.
 std::string toString(const GridSpec& spec);
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -11,7 +11,7 @@
 #include <functional>
 #include <vector>
 
-namespace orni::trim {
+namespace orni {
 
 /// Computes point `index` (called from a worker thread; calls for different indices run
 /// concurrently, so it must only write state owned by that index). Exceptions should be turned
@@ -35,4 +35,4 @@ void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWor
 /// exceptions (an escaping one terminates, as for any std::thread).
 void runOnThreads(std::size_t workers, const std::function<void()>& worker);
 
-}  // namespace orni::trim
+}  // namespace orni

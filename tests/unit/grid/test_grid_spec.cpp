@@ -6,12 +6,12 @@
 #include <string>
 #include <vector>
 
-#include "trim/grid_spec.hpp"
+#include "core/grid/grid_spec.hpp"
 
-namespace orni::trim {
+namespace orni {
 namespace {
 
-TEST(TrimGridSpec, ParsesAndSpacesEvenly) {
+TEST(GridSpecText, ParsesAndSpacesEvenly) {
   const GridSpec s = parseGridSpec("10:20:6");
   EXPECT_EQ(s.first, 10.0);
   EXPECT_EQ(s.last, 20.0);
@@ -24,7 +24,7 @@ TEST(TrimGridSpec, ParsesAndSpacesEvenly) {
   EXPECT_EQ(gridValues(parseGridSpec("1e1:2e1:2")), (std::vector<double>{10, 20}));
 }
 
-TEST(TrimGridSpec, EndsAreExactForAnySpacing) {
+TEST(GridSpecText, EndsAreExactForAnySpacing) {
   for (int n = 2; n <= 40; ++n) {
     const std::vector<double> v = gridValues(GridSpec{0.1, 0.7, n});
     ASSERT_EQ(v.size(), static_cast<std::size_t>(n));
@@ -34,7 +34,7 @@ TEST(TrimGridSpec, EndsAreExactForAnySpacing) {
   }
 }
 
-TEST(TrimGridSpec, CanonicalTextRoundTrips) {
+TEST(GridSpecText, CanonicalTextRoundTrips) {
   for (const char* text : {"10:20:6", "0:20:5", "-5:5:3", "0.1:0.7:13", "12.5:12.5:1"}) {
     const GridSpec s = parseGridSpec(text);
     EXPECT_EQ(toString(s), text);
@@ -46,7 +46,7 @@ TEST(TrimGridSpec, CanonicalTextRoundTrips) {
   EXPECT_EQ(toString(parseGridSpec("1e1:2e1:2")), "10:20:2");
 }
 
-TEST(TrimGridSpec, RejectsMalformedSpecs) {
+TEST(GridSpecText, RejectsMalformedSpecs) {
   const std::vector<std::pair<std::string, std::string>> bad = {
       {"", "three fields"},
       {"10:20", "three fields"},
@@ -88,4 +88,4 @@ TEST(TrimGridSpec, RejectsMalformedSpecs) {
 }
 
 }  // namespace
-}  // namespace orni::trim
+}  // namespace orni

@@ -1,11 +1,11 @@
-#include "trim/grid_spec.hpp"
+#include "core/grid/grid_spec.hpp"
 
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <system_error>
 
-namespace orni::trim {
+namespace orni {
 
 namespace {
 
@@ -92,4 +92,4 @@ std::string toString(const GridSpec& spec) {
   return shortest(spec.first) + ":" + shortest(spec.last) + ":" + std::to_string(spec.count);
 }
 
-}  // namespace orni::trim
+}  // namespace orni

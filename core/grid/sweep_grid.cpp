@@ -1,8 +1,8 @@
-#include "trim/sweep_grid.hpp"
+#include "core/grid/sweep_grid.hpp"
 
 #include <stdexcept>
 
-namespace orni::trim {
+namespace orni {
 
 std::size_t SweepGrid::size() const {
   std::size_t n = 1;
@@ -49,4 +49,4 @@ bool SweepGrid::IsValid(std::string* why) const {
   return true;
 }
 
-}  // namespace orni::trim
+}  // namespace orni

@@ -1,4 +1,4 @@
-#include "trim/point_pool.hpp"
+#include "core/grid/point_pool.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -9,7 +9,7 @@
 
 #include "core/model/cancellation.hpp"
 
-namespace orni::trim {
+namespace orni {
 
 void runPoints(const std::vector<std::size_t>& todo, int threads, const PointWork& work,
                const PointDone& on_done) {
@@ -71,4 +71,4 @@ void runOnThreads(std::size_t workers, const std::function<void()>& worker) {
   for (std::thread& t : pool) t.join();
 }
 
-}  // namespace orni::trim
+}  // namespace orni

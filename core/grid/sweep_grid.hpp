@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-namespace orni::trim {
+namespace orni {
 
 /// Largest sweep (points). Every point is a whole run (a trim, a simulation) and the runner keeps
 /// one resolved study per point.
@@ -34,4 +34,4 @@ struct SweepGrid {
   bool IsValid(std::string* why) const;
 };
 
-}  // namespace orni::trim
+}  // namespace orni

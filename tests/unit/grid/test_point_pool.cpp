@@ -1,58 +1,21 @@
-// The points of a sweep (trim/sweep_grid.hpp): full factorial, first axis outermost, and the
-// thread pool that runs them (trim/point_pool.hpp): every index exactly once, results by index
-// whatever the thread count, exceptions stop the pool and reach the caller.
+// The thread pool that runs independent points (core/grid/point_pool.hpp): every index exactly
+// once, results by index whatever the thread count, exceptions stop the pool and reach the caller.
 #include <gtest/gtest.h>
 
 #include <atomic>
 #include <chrono>
-#include <thread>
 #include <cstddef>
 #include <set>
 #include <stdexcept>
-#include <string>
+#include <thread>
 #include <vector>
 
-#include "trim/point_pool.hpp"
-#include "trim/sweep_grid.hpp"
+#include "core/grid/point_pool.hpp"
 
-namespace orni::trim {
+namespace orni {
 namespace {
 
-TEST(TrimSweepGrid, FirstAxisOutermostLastFastest) {
-  const SweepGrid g{{3, 2, 4}};
-  EXPECT_EQ(g.size(), 24u);
-  EXPECT_EQ(g.axisIndices(0), (std::vector<std::size_t>{0, 0, 0}));
-  EXPECT_EQ(g.axisIndices(1), (std::vector<std::size_t>{0, 0, 1}));
-  EXPECT_EQ(g.axisIndices(3), (std::vector<std::size_t>{0, 0, 3}));
-  EXPECT_EQ(g.axisIndices(4), (std::vector<std::size_t>{0, 1, 0}));
-  EXPECT_EQ(g.axisIndices(8), (std::vector<std::size_t>{1, 0, 0}));
-  EXPECT_EQ(g.axisIndices(23), (std::vector<std::size_t>{2, 1, 3}));
-  for (std::size_t i = 0; i < g.size(); ++i) EXPECT_EQ(g.pointIndex(g.axisIndices(i)), i);
-  // Rows of one combination of the inner axes are every (n_1 * n_2)-th row (the sweep figure).
-  for (std::size_t i0 = 0; i0 < 3; ++i0)
-    EXPECT_EQ(g.axisIndices(i0 * 8 + 5), (std::vector<std::size_t>{i0, 1, 1}));
-  EXPECT_THROW(g.pointIndex({0, 2, 0}), std::invalid_argument);
-  EXPECT_THROW(g.pointIndex({0, 0}), std::invalid_argument);
-
-  const SweepGrid one{{7}};
-  EXPECT_EQ(one.size(), 7u);
-  EXPECT_EQ(one.axisIndices(5), (std::vector<std::size_t>{5}));
-}
-
-TEST(TrimSweepGrid, Validity) {
-  std::string why;
-  EXPECT_TRUE((SweepGrid{{3, 3}}).IsValid(&why)) << why;
-  EXPECT_FALSE((SweepGrid{{}}).IsValid(&why));
-  EXPECT_NE(why.find("at least one axis"), std::string::npos);
-  EXPECT_FALSE((SweepGrid{{3, 0}}).IsValid(&why));
-  EXPECT_NE(why.find("at least one value"), std::string::npos);
-  EXPECT_FALSE((SweepGrid{{kMaxSweepPoints, 2}}).IsValid(&why));
-  EXPECT_NE(why.find("more than"), std::string::npos);
-  EXPECT_TRUE((SweepGrid{{kMaxSweepPoints}}).IsValid(&why));
-  EXPECT_FALSE((SweepGrid{std::vector<std::size_t>(kMaxSweepAxes + 1, 1)}).IsValid(&why));
-}
-
-TEST(TrimPointPool, EveryIndexOnceResultsByIndexForAnyThreadCount) {
+TEST(GridPointPool, EveryIndexOnceResultsByIndexForAnyThreadCount) {
   std::vector<std::size_t> todo;
   for (std::size_t i = 0; i < 50; i += 2) todo.push_back(i);  // a resumed run: every other point
   for (int threads : {1, 2, 3, 8, 64}) {
@@ -78,7 +41,7 @@ TEST(TrimPointPool, EveryIndexOnceResultsByIndexForAnyThreadCount) {
   EXPECT_THROW(runPoints(todo, 0, [](std::size_t) {}), std::invalid_argument);
 }
 
-TEST(TrimPointPool, AnExceptionStopsThePoolAndReachesTheCaller) {
+TEST(GridPointPool, AnExceptionStopsThePoolAndReachesTheCaller) {
   std::vector<std::size_t> todo(200);
   for (std::size_t i = 0; i < todo.size(); ++i) todo[i] = i;
   for (int threads : {1, 2}) {
@@ -111,4 +74,4 @@ TEST(TrimPointPool, AnExceptionStopsThePoolAndReachesTheCaller) {
 }
 
 }  // namespace
-}  // namespace orni::trim
+}  // namespace orni
