@@ -47,9 +47,9 @@ void readAeromapSection(StudyDocument doc, Study& study) {
   std::size_t points = 1;
   for (const GridAxis* axis : {&a.speed_mps, &a.freq_hz, &a.theta_deg, &a.tail_angle_deg}) {
     if (axis->values.size() > trim::kMaxAeroMapPoints / points)
-      throw am.valueError("speed_mps", "a grid of at most " +
-                                           std::to_string(trim::kMaxAeroMapPoints) + " points",
-                          "a larger grid");
+      throw am.valueError(
+          "speed_mps", "a grid of at most " + std::to_string(trim::kMaxAeroMapPoints) + " points",
+          "a larger grid");
     points *= axis->values.size();
   }
   a.wing_only = am.optionalBool("wing_only", a.wing_only);

@@ -11,8 +11,8 @@ namespace orni::studies {
 namespace {
 
 bool always(const Study&) { return true; }
-bool tethered(const Study& s) { return s.simulate.mode == FlightMode::kTethered; }
-bool freeFlight(const Study& s) { return s.simulate.mode == FlightMode::kFree; }
+bool tethered(const Study& s) { return s.simulate().options.mode == FlightMode::kTethered; }
+bool freeFlight(const Study& s) { return s.simulate().options.mode == FlightMode::kFree; }
 bool twoStage(const Study& s) { return s.trim.method != TrimMethod::kPeriodic; }
 bool periodic(const Study& s) { return s.trim.method == TrimMethod::kPeriodic; }
 
@@ -30,7 +30,7 @@ AnalysisValue boundsValue(const Study& s) {
 const std::vector<AnalysisField> kSimulateFields = {
     {"simulate.mode",
      [](const Study& s) -> AnalysisValue {
-       return std::string(s.simulate.mode == FlightMode::kFree ? "free" : "tethered");
+       return std::string(s.simulate().options.mode == FlightMode::kFree ? "free" : "tethered");
      },
      always},
     {"simulate.speed_mps", [](const Study& s) -> AnalysisValue { return s.point.speed_mps; },
@@ -40,40 +40,57 @@ const std::vector<AnalysisField> kSimulateFields = {
      always},
     {"simulate.tail_angle_deg",
      [](const Study& s) -> AnalysisValue { return s.point.tail_angle_rad; }, always},
-    {"simulate.cycles", [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.simulate.cycles); },
+    {"simulate.cycles",
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.simulate().options.cycles);
+     },
      always},
-    {"simulate.rel_tol", [](const Study& s) -> AnalysisValue { return s.simulate.rel_tol; },
-     always},
-    {"simulate.abs_tol", [](const Study& s) -> AnalysisValue { return s.simulate.abs_tol; },
-     always},
+    {"simulate.rel_tol",
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.rel_tol; }, always},
+    {"simulate.abs_tol",
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.abs_tol; }, always},
     {"simulate.separation_abs_tol",
-     [](const Study& s) -> AnalysisValue { return s.simulate.separation_abs_tol; }, always},
-    {"simulate.steady_tol", [](const Study& s) -> AnalysisValue { return s.simulate.steady_tol; },
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.separation_abs_tol; },
      always},
+    {"simulate.steady_tol",
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.steady_tol; }, always},
     {"simulate.samples_per_cycle",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.simulate.samples_per_cycle); },
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.simulate().options.samples_per_cycle);
+     },
      always},
     {"simulate.history_every",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.history_every); }, always},
-    {"simulate.wing_only", [](const Study& s) -> AnalysisValue { return s.wing_only; }, tethered},
-    {"simulate.at_trim", [](const Study& s) -> AnalysisValue { return s.at_trim; }, always},
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.simulate().history_every);
+     },
+     always},
+    {"simulate.wing_only", [](const Study& s) -> AnalysisValue { return s.simulate().wing_only; },
+     tethered},
+    {"simulate.at_trim", [](const Study& s) -> AnalysisValue { return s.simulate().at_trim; },
+     always},
     {"simulate.free.bound_speed_mps",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.bounds.U_mps; }, freeFlight},
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.bounds.U_mps; },
+     freeFlight},
     {"simulate.free.bound_W_mps",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.bounds.W_mps; }, freeFlight},
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.bounds.W_mps; },
+     freeFlight},
     {"simulate.free.bound_theta_deg",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.bounds.theta_rad; }, freeFlight},
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.bounds.theta_rad; },
+     freeFlight},
     {"simulate.free.bound_Q_degps",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.bounds.Q_radps; }, freeFlight},
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.bounds.Q_radps; },
+     freeFlight},
     {"simulate.free.bound_h_m",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.bounds.h_m; }, freeFlight},
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.bounds.h_m; },
+     freeFlight},
     {"simulate.free.transient_fraction",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.transient_fraction; },
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.transient_fraction; },
      freeFlight},
     {"simulate.free.divergence_ratio",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.divergence_ratio; }, freeFlight},
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.divergence_ratio; },
+     freeFlight},
     {"simulate.free.initial_altitude_m",
-     [](const Study& s) -> AnalysisValue { return s.simulate.free.initial_altitude_m; },
+     [](const Study& s) -> AnalysisValue { return s.simulate().options.free.initial_altitude_m; },
      freeFlight},
 };
 
@@ -88,7 +105,8 @@ const std::vector<AnalysisField> kTrimFields = {
      },
      always},
     {"trim.max_iterations",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.max_iterations); }, always},
+     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.max_iterations); },
+     always},
     {"trim.residual_tol", [](const Study& s) -> AnalysisValue { return s.trim.residual_tol; },
      always},
     {"trim.function_tol", [](const Study& s) -> AnalysisValue { return s.trim.function_tol; },
@@ -98,16 +116,22 @@ const std::vector<AnalysisField> kTrimFields = {
     {"trim.steady_tol",
      [](const Study& s) -> AnalysisValue { return s.trim.simulation.steady_tol; }, always},
     {"trim.max_cycles",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.simulation.cycles); }, always},
-    {"trim.derivative_cycles",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.derivative_cycles); }, always},
-    {"trim.method",
-     [](const Study& s) -> AnalysisValue { return std::string(toString(s.trim.method)); },
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.trim.simulation.cycles);
+     },
      always},
+    {"trim.derivative_cycles",
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.trim.derivative_cycles);
+     },
+     always},
+    {"trim.method",
+     [](const Study& s) -> AnalysisValue { return std::string(toString(s.trim.method)); }, always},
     {"trim.refine_in_free_flight",
      [](const Study& s) -> AnalysisValue { return s.trim.refine_in_free_flight; }, twoStage},
     {"trim.refine_cycles",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.refine_cycles); }, twoStage},
+     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.refine_cycles); },
+     twoStage},
     {"trim.initial.theta_mean_deg", initialValue<TrimUnknown::kThetaMean>, always},
     {"trim.initial.speed_mps", initialValue<TrimUnknown::kSpeed>, always},
     {"trim.initial.tail_angle_deg", initialValue<TrimUnknown::kTailAngle>, always},
@@ -119,15 +143,21 @@ const std::vector<AnalysisField> kTrimFields = {
     {"trim.periodic.rel_tol",
      [](const Study& s) -> AnalysisValue { return s.trim.periodic.rel_tol; }, periodic},
     {"trim.periodic.max_iterations",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.periodic.max_iterations); },
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.trim.periodic.max_iterations);
+     },
      periodic},
     {"trim.periodic.history_samples",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.periodic.history_samples); },
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.trim.periodic.history_samples);
+     },
      periodic},
     {"trim.periodic.floquet",
      [](const Study& s) -> AnalysisValue { return s.trim.periodic.floquet; }, periodic},
     {"trim.periodic.multipliers",
-     [](const Study& s) -> AnalysisValue { return static_cast<long long>(s.trim.periodic.multipliers); },
+     [](const Study& s) -> AnalysisValue {
+       return static_cast<long long>(s.trim.periodic.multipliers);
+     },
      periodic},
     {"trim.bounds.theta_mean_deg", boundsValue<TrimUnknown::kThetaMean>, always},
     {"trim.bounds.speed_mps", boundsValue<TrimUnknown::kSpeed>, always},

@@ -35,12 +35,10 @@ GridAxis readGridAxis(TableReader& r, std::string_view key, const Range& range,
       const std::optional<double> v = e.is_number() ? e.value<double>() : std::nullopt;
       if (!v) throw r.valueError(key, expected, describeNode(e) + " at index " + std::to_string(i));
       if (!range.contains(*v))
-        throw InputError::wrongValue(r.fileOf(key),
-                                     e.source().begin.line > 0
-                                         ? static_cast<int>(e.source().begin.line)
-                                         : r.lineOf(key),
-                                     r.keyPath(key), expected,
-                                     sourceText(e) + " at index " + std::to_string(i));
+        throw InputError::wrongValue(
+            r.fileOf(key),
+            e.source().begin.line > 0 ? static_cast<int>(e.source().begin.line) : r.lineOf(key),
+            r.keyPath(key), expected, sourceText(e) + " at index " + std::to_string(i));
       axis.values.push_back(*v);
     }
   } else if (n->is_number()) {

@@ -134,10 +134,8 @@ struct KindStep {
 };
 
 const std::vector<KindStep> kKindSteps = {
-    {{"simulate"}, readSimulateSection},
-    {{"aeromap"}, readAeromapSection},
-    {{"trim", "continuation"}, readTrimStudy},
-    {{"calibrate"}, readCalibrateStudy},
+    {{"simulate"}, readSimulateSection},       {{"aeromap"}, readAeromapSection},
+    {{"trim", "continuation"}, readTrimStudy}, {{"calibrate"}, readCalibrateStudy},
     {{"optimize"}, readOptimizeStudy},
 };
 

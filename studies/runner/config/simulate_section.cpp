@@ -20,7 +20,7 @@ const std::vector<std::pair<std::string, FlightMode>> kModes = {{"tethered", Fli
                                                                 {"free", FlightMode::kFree}};
 
 const std::vector<std::string> kFreeKeys = {
-    "bound_speed_mps", "bound_W_mps",        "bound_theta_deg",   "bound_Q_degps",
+    "bound_speed_mps", "bound_W_mps",        "bound_theta_deg",  "bound_Q_degps",
     "bound_h_m",       "transient_fraction", "divergence_ratio", "initial_altitude_m"};
 
 /// An angle key in degrees, stored in radians: `rad` is left alone when the key is absent.
@@ -94,8 +94,9 @@ void readSimulateSection(StudyDocument doc, Study& study) {
       "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
                    "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol", "samples_per_cycle",
                    "history_every", "wing_only", "at_trim", "free"});
+  SimulateSettings& settings = study.settings.emplace<SimulateSettings>();
   if (!sim) return;
-  SimulationOptions& o = study.simulate;
+  SimulationOptions& o = settings.options;
   OperatingPoint& p = study.point;
   o.mode = sim->optionalEnum("mode", o.mode, kModes);
   if (sim->has("free") && o.mode != FlightMode::kFree)
@@ -111,13 +112,14 @@ void readSimulateSection(StudyDocument doc, Study& study) {
   o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
   readTolerances(*sim, o, "simulate");
   o.samples_per_cycle = sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);
-  study.history_every = sim->optionalInt(field("simulate.history_every"), study.history_every);
-  study.wing_only = sim->optionalBool("wing_only", study.wing_only);
-  study.at_trim = sim->optionalBool("at_trim", study.at_trim);
-  if (study.at_trim && !study.vehicle.body.present)
+  settings.history_every =
+      sim->optionalInt(field("simulate.history_every"), settings.history_every);
+  settings.wing_only = sim->optionalBool("wing_only", settings.wing_only);
+  settings.at_trim = sim->optionalBool("at_trim", settings.at_trim);
+  if (settings.at_trim && !study.vehicle.body.present)
     throw sim->valueError("at_trim", "false for a vehicle without [body] (no weight to trim)",
                           "true");
-  if (study.wing_only && o.mode == FlightMode::kFree)
+  if (settings.wing_only && o.mode == FlightMode::kFree)
     throw sim->valueError("wing_only", "false in free flight (the main wing alone cannot fly)",
                           "true");
   std::string why;
@@ -130,9 +132,9 @@ void readSimulateSection(StudyDocument doc, Study& study) {
   sim->finish();
 }
 
-void writeSimulateSection(const Study& study, TomlWriter& out) {
-  const SimulationOptions& o = study.simulate;
-  const OperatingPoint& p = study.point;
+void writeSimulateSection(const SimulateSettings& settings, const OperatingPoint& p,
+                          TomlWriter& out) {
+  const SimulationOptions& o = settings.options;
   out.header({"simulate"});
   out.string("mode", o.mode == FlightMode::kFree ? "free" : "tethered");
   out.number("speed_mps", p.speed_mps);
@@ -142,10 +144,11 @@ void writeSimulateSection(const Study& study, TomlWriter& out) {
   out.integer("cycles", o.cycles);
   writeTolerances(o, out);
   out.integer("samples_per_cycle", o.samples_per_cycle);
-  out.integer("history_every", study.history_every);
+  out.integer("history_every", settings.history_every);
   if (o.mode == FlightMode::kTethered)
-    out.boolean("wing_only", study.wing_only, "true = the main wing alone (no tail, no body drag)");
-  out.boolean("at_trim", study.at_trim,
+    out.boolean("wing_only", settings.wing_only,
+                "true = the main wing alone (no tail, no body drag)");
+  out.boolean("at_trim", settings.at_trim,
               "true = at the trim point at freq_hz (speed, theta, tail: the initial guess)");
   if (o.mode == FlightMode::kFree) writeFreeFlightTable(o.free, {"simulate", "free"}, out);
 }

@@ -76,10 +76,11 @@ T& kindSettings(S& study, std::string_view accessor) {
 }  // namespace
 
 // Study::NAME() const and non-const: the alternative TYPE of `settings` (kindSettings).
-#define ORNI_STUDY_KIND_ACCESSORS(TYPE, NAME)                                            \
-  const TYPE& Study::NAME() const { return kindSettings<const TYPE>(*this, #NAME); }     \
+#define ORNI_STUDY_KIND_ACCESSORS(TYPE, NAME)                                        \
+  const TYPE& Study::NAME() const { return kindSettings<const TYPE>(*this, #NAME); } \
   TYPE& Study::NAME() { return kindSettings<TYPE>(*this, #NAME); }
 
+ORNI_STUDY_KIND_ACCESSORS(SimulateSettings, simulate)
 ORNI_STUDY_KIND_ACCESSORS(AeromapSettings, aeromap)
 ORNI_STUDY_KIND_ACCESSORS(orni::CalibrationOptions, calibrate)
 ORNI_STUDY_KIND_ACCESSORS(SweepSettings, sweep)
@@ -153,6 +154,7 @@ Study studyFromVehicle(const fs::path& vehicle_file, StudyKind kind) {
   study.name = runNameFromStem(vehicle_file);
   study.vehicle_path = vehicle_file;
   study.point = study.vehicle.operating_point;
+  if (kind == StudyKind::kSimulate) study.settings.emplace<SimulateSettings>();
   if (kind == StudyKind::kTrim) {
     if (!study.vehicle.body.present)
       throw InputError::missingKey(displayPath(vehicle_file), 0, "body",
@@ -221,7 +223,10 @@ void checkResolvedPoints(const Study& study, const fs::path& study_file, const s
 }
 
 void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
-  if (kind == StudyKind::kSimulate) writeSimulateSection(study, out);
+  if (kind == StudyKind::kSimulate)  // a simulate sweep writes its base's [simulate]
+    writeSimulateSection(
+        study.kind == StudyKind::kSweep ? study.sweep().base_simulate : study.simulate(),
+        study.point, out);
   if (kind == StudyKind::kAeromap) writeAeromapSection(study.aeromap(), out);
   if (kind == StudyKind::kTrim || kind == StudyKind::kContinuation)
     writeTrimSection(study.trim, out);

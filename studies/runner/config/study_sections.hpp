@@ -39,10 +39,12 @@ void rejectSectionsOfOtherKinds(const TableReader& top, const std::vector<std::s
 /// study's kind may not have it, and reads it (with its kind's checks) when the kind uses it.
 void readKindSections(StudyDocument doc, Study& study);
 
-/// [simulate] (optional; kind simulate): the operating point, the options and [simulate.free].
+/// [simulate] (optional; kind simulate): the operating point, the options and [simulate.free];
+/// sets study.settings to SimulateSettings (the defaults without a [simulate]).
 void readSimulateSection(StudyDocument doc, Study& study);
-/// Writes [simulate] with every option ([simulate.free] in free flight).
-void writeSimulateSection(const Study& study, TomlWriter& out);
+/// Writes [simulate] with every option ([simulate.free] in free flight) at `point`.
+void writeSimulateSection(const SimulateSettings& simulate, const orni::OperatingPoint& point,
+                          TomlWriter& out);
 
 /// [aeromap] (required; kind aeromap).
 void readAeromapSection(StudyDocument doc, Study& study);

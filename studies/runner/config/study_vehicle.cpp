@@ -41,7 +41,8 @@ VehicleFileInput readNamedVehicleFile(const TableReader& top, const toml::node& 
                                       const fs::path& given, const fs::path& study_file,
                                       const std::string& study_name) {
   const fs::path resolved = study_file.parent_path() / given;
-  const std::string expected = "the path of an existing vehicle file, relative to the study's folder";
+  const std::string expected =
+      "the path of an existing vehicle file, relative to the study's folder";
   // An error at 'vehicle': `what` says what the named file is instead.
   auto wrongFile = [&](const std::string& also_expected, const std::string& what) {
     return top.valueError("vehicle", expected + also_expected,

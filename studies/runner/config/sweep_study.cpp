@@ -413,7 +413,10 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
   Study study = base;
   study.kind = StudyKind::kSweep;
   study.study_path = study_file;
+  const SimulateSettings base_simulate =
+      run == StudyKind::kSimulate ? base.simulate() : SimulateSettings{};
   SweepSettings& sweep_settings = study.settings.emplace<SweepSettings>();
+  sweep_settings.base_simulate = base_simulate;
   sweep_settings.run = run;
   for (const AxisInput& a : axes) sweep_settings.axes.push_back(a.axis);
   sweep_settings.derived_keys = derivedKeys(base, points, run, axes);

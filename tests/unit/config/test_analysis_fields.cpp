@@ -51,52 +51,71 @@ const std::map<std::string, Change>& changes() {
   static const std::map<std::string, Change> kChanges = {
       {"simulate.mode",
        [](Study& s) {
-         s.simulate.mode =
-             s.simulate.mode == FlightMode::kFree ? FlightMode::kTethered : FlightMode::kFree;
+         s.simulate().options.mode = s.simulate().options.mode == FlightMode::kFree
+                                         ? FlightMode::kTethered
+                                         : FlightMode::kFree;
        }},
       {"simulate.speed_mps", [](Study& s) { s.point.speed_mps = moved(s.point.speed_mps); }},
       {"simulate.freq_hz", [](Study& s) { s.point.freq_hz = moved(s.point.freq_hz); }},
       {"simulate.theta_deg", [](Study& s) { s.point.theta_rad = moved(s.point.theta_rad); }},
       {"simulate.tail_angle_deg",
        [](Study& s) { s.point.tail_angle_rad = moved(s.point.tail_angle_rad); }},
-      {"simulate.cycles", [](Study& s) { s.simulate.cycles += 1; }},
-      {"simulate.rel_tol", [](Study& s) { s.simulate.rel_tol = moved(s.simulate.rel_tol); }},
-      {"simulate.abs_tol", [](Study& s) { s.simulate.abs_tol = moved(s.simulate.abs_tol); }},
+      {"simulate.cycles", [](Study& s) { s.simulate().options.cycles += 1; }},
+      {"simulate.rel_tol",
+       [](Study& s) { s.simulate().options.rel_tol = moved(s.simulate().options.rel_tol); }},
+      {"simulate.abs_tol",
+       [](Study& s) { s.simulate().options.abs_tol = moved(s.simulate().options.abs_tol); }},
       {"simulate.separation_abs_tol",
-       [](Study& s) { s.simulate.separation_abs_tol = moved(s.simulate.separation_abs_tol); }},
+       [](Study& s) {
+         s.simulate().options.separation_abs_tol = moved(s.simulate().options.separation_abs_tol);
+       }},
       {"simulate.steady_tol",
-       [](Study& s) { s.simulate.steady_tol = moved(s.simulate.steady_tol); }},
-      {"simulate.samples_per_cycle", [](Study& s) { s.simulate.samples_per_cycle += 1; }},
-      {"simulate.history_every", [](Study& s) { s.history_every += 1; }},
-      {"simulate.wing_only", [](Study& s) { s.wing_only = !s.wing_only; }},
-      {"simulate.at_trim", [](Study& s) { s.at_trim = !s.at_trim; }},
+       [](Study& s) { s.simulate().options.steady_tol = moved(s.simulate().options.steady_tol); }},
+      {"simulate.samples_per_cycle", [](Study& s) { s.simulate().options.samples_per_cycle += 1; }},
+      {"simulate.history_every", [](Study& s) { s.simulate().history_every += 1; }},
+      {"simulate.wing_only", [](Study& s) { s.simulate().wing_only = !s.simulate().wing_only; }},
+      {"simulate.at_trim", [](Study& s) { s.simulate().at_trim = !s.simulate().at_trim; }},
       {"simulate.free.bound_speed_mps",
-       [](Study& s) { s.simulate.free.bounds.U_mps = moved(s.simulate.free.bounds.U_mps); }},
+       [](Study& s) {
+         s.simulate().options.free.bounds.U_mps = moved(s.simulate().options.free.bounds.U_mps);
+       }},
       {"simulate.free.bound_W_mps",
-       [](Study& s) { s.simulate.free.bounds.W_mps = moved(s.simulate.free.bounds.W_mps); }},
+       [](Study& s) {
+         s.simulate().options.free.bounds.W_mps = moved(s.simulate().options.free.bounds.W_mps);
+       }},
       {"simulate.free.bound_theta_deg",
        [](Study& s) {
-         s.simulate.free.bounds.theta_rad = moved(s.simulate.free.bounds.theta_rad);
+         s.simulate().options.free.bounds.theta_rad =
+             moved(s.simulate().options.free.bounds.theta_rad);
        }},
       {"simulate.free.bound_Q_degps",
-       [](Study& s) { s.simulate.free.bounds.Q_radps = moved(s.simulate.free.bounds.Q_radps); }},
+       [](Study& s) {
+         s.simulate().options.free.bounds.Q_radps = moved(s.simulate().options.free.bounds.Q_radps);
+       }},
       {"simulate.free.bound_h_m",
-       [](Study& s) { s.simulate.free.bounds.h_m = moved(s.simulate.free.bounds.h_m); }},
+       [](Study& s) {
+         s.simulate().options.free.bounds.h_m = moved(s.simulate().options.free.bounds.h_m);
+       }},
       {"simulate.free.transient_fraction",
        [](Study& s) {
-         s.simulate.free.transient_fraction = moved(s.simulate.free.transient_fraction);
+         s.simulate().options.free.transient_fraction =
+             moved(s.simulate().options.free.transient_fraction);
        }},
       {"simulate.free.divergence_ratio",
-       [](Study& s) { s.simulate.free.divergence_ratio = moved(s.simulate.free.divergence_ratio); }},
+       [](Study& s) {
+         s.simulate().options.free.divergence_ratio =
+             moved(s.simulate().options.free.divergence_ratio);
+       }},
       {"simulate.free.initial_altitude_m",
        [](Study& s) {
-         s.simulate.free.initial_altitude_m = moved(s.simulate.free.initial_altitude_m);
+         s.simulate().options.free.initial_altitude_m =
+             moved(s.simulate().options.free.initial_altitude_m);
        }},
       {"trim.freq_hz", [](Study& s) { s.trim.initial.freq_hz = moved(s.trim.initial.freq_hz); }},
       {"trim.method",
        [](Study& s) {
-         s.trim.method = s.trim.method == TrimMethod::kPeriodic ? TrimMethod::kTwoStage
-                                                                : TrimMethod::kPeriodic;
+         s.trim.method =
+             s.trim.method == TrimMethod::kPeriodic ? TrimMethod::kTwoStage : TrimMethod::kPeriodic;
        }},
       {"trim.unknowns", [](Study& s) { s.trim.unknowns.pop_back(); }},
       {"trim.initial.theta_mean_deg",
@@ -182,8 +201,8 @@ TEST(AnalysisFields, SignOfZeroIsADifference) {
   EXPECT_FALSE(sameAnalysisValue(AnalysisValue(0.0), AnalysisValue(-0.0)));
   EXPECT_FALSE(sameAnalysisValue(AnalysisValue(std::vector<double>{0.0, 1.0}),
                                  AnalysisValue(std::vector<double>{-0.0, 1.0})));
-  EXPECT_TRUE(sameAnalysisValue(AnalysisValue(std::string("free")),
-                                AnalysisValue(std::string("free"))));
+  EXPECT_TRUE(
+      sameAnalysisValue(AnalysisValue(std::string("free")), AnalysisValue(std::string("free"))));
 }
 
 }  // namespace
