@@ -126,9 +126,9 @@ PYBIND11_MODULE(_ornithopter, m) {
   });
   m.def("study_settings", [](const Study& s) {
     py::dict d;
-    d["mode"] = s.simulate.mode == orni::FlightMode::kFree ? "free" : "tethered";
-    d["at_trim"] = s.at_trim;
-    d["history_every"] = s.history_every;
+    d["mode"] = s.simulate().options.mode == orni::FlightMode::kFree ? "free" : "tethered";
+    d["at_trim"] = s.simulate().at_trim;
+    d["history_every"] = s.simulate().history_every;
     return d;
   });
 }

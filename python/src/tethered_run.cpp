@@ -53,11 +53,11 @@ py::tuple simulateTetheredStudy(const VehicleObject& vehicle, const studies::Stu
       const auto t0 = std::chrono::steady_clock::now();
       const std::shared_ptr<const FlightCoreModel> whole = vehicle.coreModel();
       std::optional<FlightCoreModel> wing_alone;
-      if (study.wing_only) wing_alone.emplace(study.vehicle.mainWingAlone());
+      if (study.simulate().wing_only) wing_alone.emplace(study.vehicle.mainWingAlone());
       const FlightCoreModel& model = wing_alone ? *wing_alone : *whole;
       // Without histories the run samples nothing (as BM_TetheredRfw10Cycles): the summary then
       // lacks the last-cycle harmonics and the constrained flight test, which need the samples.
-      SimulationOptions opts = study.simulate;
+      SimulationOptions opts = study.simulate().options;
       opts.record_history = histories;
       const std::size_t samples =
           static_cast<std::size_t>(opts.cycles) * static_cast<std::size_t>(opts.samples_per_cycle) +

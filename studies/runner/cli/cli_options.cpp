@@ -94,7 +94,7 @@ std::filesystem::path outputFolder(const std::optional<std::string>& out_opt, co
 }
 
 void requireBodyForFreeFlight(const Study& study) {
-  if (study.simulate.mode == FlightMode::kFree && !study.vehicle.body.present)
+  if (study.simulate().options.mode == FlightMode::kFree && !study.vehicle.body.present)
     throw InputError::missingKey(inputFileOf(study), 0, "body",
                                  "a [body] table: free flight needs the vehicle's mass and pitch "
                                  "inertia");

@@ -22,7 +22,7 @@ struct SimulateArgs {
 int runSimulate(const SimulateArgs& a) {
   Study study = studyFromVehicle(a.vehicle);
   if (!a.mode.empty())
-    study.simulate.mode = a.mode == "free" ? FlightMode::kFree : FlightMode::kTethered;
+    study.simulate().options.mode = a.mode == "free" ? FlightMode::kFree : FlightMode::kTethered;
   if (a.speed) study.point.speed_mps = optionValue("--speed", "simulate.speed_mps", *a.speed);
   if (a.freq) study.point.freq_hz = optionValue("--freq", "simulate.freq_hz", *a.freq);
   if (a.theta)
@@ -31,7 +31,8 @@ int runSimulate(const SimulateArgs& a) {
     study.point.tail_angle_rad =
         optionValue("--tail", "simulate.tail_angle_deg", *a.tail) * kDegToRad;
   if (a.cycles)
-    study.simulate.cycles = static_cast<int>(optionValue("--cycles", "simulate.cycles", *a.cycles));
+    study.simulate().options.cycles =
+        static_cast<int>(optionValue("--cycles", "simulate.cycles", *a.cycles));
   requireBodyForFreeFlight(study);
   return runStudyLocked(study, outputFolder(a.out, study, false), 1);
 }

@@ -172,8 +172,9 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                        ModalWingCache* modal_wings) {
   const auto t0 = std::chrono::steady_clock::now();
   const FlightCoreModel model(study.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
-  std::optional<FreeFlightFiles> files(std::in_place, out_dir, study.history_every);
-  const FreeFlightSummary s = simulateFree(model, study.point, study.simulate, nullptr, &*files);
+  std::optional<FreeFlightFiles> files(std::in_place, out_dir, study.simulate().history_every);
+  const FreeFlightSummary s =
+      simulateFree(model, study.point, study.simulate().options, nullptr, &*files);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
@@ -232,7 +233,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
         .set("limit_cycle", limitCycleJson(s));
     writeFileAtomic(out_dir / "spectra.csv", spectrumTable(m).toString());
   }
-  const FreeFlightBounds& b = study.simulate.free.bounds;
+  const FreeFlightBounds& b = study.simulate().options.free.bounds;
   summary
       .set("bounds", JsonObject()
                          .set("U_mps", b.U_mps)
@@ -250,14 +251,14 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
       .set("structure", model.flexible ? "flexible" : "rigid")
       .set("integrator", JsonObject()
                              .set("method", s.integrator_method)
-                             .set("rel_tol", study.simulate.rel_tol)
+                             .set("rel_tol", study.simulate().options.rel_tol)
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (failed) return reportFailedRun(study, s.message, out_dir);
   // A long history is read in part (figure_rows.hpp): from the rows a figure shows on, every k-th.
-  const std::size_t spc = static_cast<std::size_t>(study.simulate.samples_per_cycle);
-  const std::size_t every = static_cast<std::size_t>(study.history_every);
+  const std::size_t spc = static_cast<std::size_t>(study.simulate().options.samples_per_cycle);
+  const std::size_t every = static_cast<std::size_t>(study.simulate().history_every);
   const std::size_t per_cycle = historyRowsPerCycle(spc, every);
   auto skipFrom = [&](int cycle) {  // the rows from the start of `cycle` (0-based) on
     return "skip 2" + figureEvery(history_rows,

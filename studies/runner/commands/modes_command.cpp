@@ -417,8 +417,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
 
 int runModesCommand(const fs::path& vehicle_file, const fs::path& out_dir,
                     const std::string& export_ccx_path) {
-  Study study = studyFromVehicle(vehicle_file);
-  study.kind = StudyKind::kModes;
+  Study study = studyFromVehicle(vehicle_file, StudyKind::kModes);
   return runModesStudy(study, out_dir, fs::path(export_ccx_path));
 }
 

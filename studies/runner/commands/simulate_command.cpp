@@ -136,8 +136,8 @@ std::string loadsFigure(const Study& study, const SimulationSummary& s, std::siz
   const double T = 1.0 / study.point.freq_hz;
   const int shown = std::min(3, s.cycles_run);
   const int first = s.cycles_run - shown;
-  const std::size_t spc = static_cast<std::size_t>(study.simulate.samples_per_cycle);
-  const std::size_t every = static_cast<std::size_t>(study.history_every);
+  const std::size_t spc = static_cast<std::size_t>(study.simulate().options.samples_per_cycle);
+  const std::size_t every = static_cast<std::size_t>(study.simulate().history_every);
   const std::string skip =
       "skip 2" + figureEvery(rows, historyRowOf(static_cast<std::size_t>(first) * spc, every),
                              historyRowsPerCycle(spc, every));
@@ -205,7 +205,7 @@ JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
       .set("freq_hz", study.point.freq_hz)
       .set("theta_deg", study.point.theta_rad * kRadToDeg)
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
-      .set("wing_only", study.wing_only);
+      .set("wing_only", study.simulate().wing_only);
   if (trim_point) summary.set("trim_point", *trim_point);
   summary
       .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
@@ -247,19 +247,19 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   Study study = given;
   JsonObject trim_point;
   ModalWingCache modal_wings;  // the trim's wing is the simulation's
-  if (study.at_trim) {
+  if (study.simulate().at_trim) {
     const SimulationTrim t = trimForSimulation(study, &modal_wings);
     trim_point = t.json;
     if (!t.converged) {
       JsonObject summary;
       summary.set("kind", "simulate")
           .set("status", "not_converged")
-          .set("message", "no trim at " + formatShortest(study.point.freq_hz) +
-                              " Hz to fly at: " + t.message)
-          .set("wall_time_s", std::chrono::duration<double>(std::chrono::steady_clock::now() - t0)
-                                  .count())
+          .set("message",
+               "no trim at " + formatShortest(study.point.freq_hz) + " Hz to fly at: " + t.message)
+          .set("wall_time_s",
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count())
           .set("version", versionString())
-          .set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered")
+          .set("mode", study.simulate().options.mode == FlightMode::kFree ? "free" : "tethered")
           .set("trim_point", trim_point);
       writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(given));
       // Nothing was flown: the outputs of an earlier run must not pass for this one's.
@@ -272,16 +272,17 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
     study.point = t.point;
   }
 
-  if (study.simulate.mode == FlightMode::kFree)
-    return runFreeFlightStudy(study, out_dir, study.at_trim ? &trim_point : nullptr, &given,
-                              &modal_wings);
+  if (study.simulate().options.mode == FlightMode::kFree)
+    return runFreeFlightStudy(study, out_dir, study.simulate().at_trim ? &trim_point : nullptr,
+                              &given, &modal_wings);
 
-  const FlightCoreModel model(study.wing_only ? study.vehicle.mainWingAlone() : study.vehicle,
-                              FlightCoreModel::Checks::kRequired, &modal_wings);
+  const FlightCoreModel model(
+      study.simulate().wing_only ? study.vehicle.mainWingAlone() : study.vehicle,
+      FlightCoreModel::Checks::kRequired, &modal_wings);
   TimeHistory history;  // the last cycle (the analyses below); every cycle streams to `files`
-  SimulationOptions opts = study.simulate;
+  SimulationOptions opts = study.simulate().options;
   opts.record_history = true;
-  std::optional<TetheredRunFiles> files(std::in_place, out_dir, study.history_every);
+  std::optional<TetheredRunFiles> files(std::in_place, out_dir, study.simulate().history_every);
   const SimulationSummary s = simulateTethered(model, study.point, opts, &history, &*files);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -305,7 +306,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   }
 
   const JsonObject summary = tetheredSummary(study, model, s, opts, history, cft, wall_s,
-                                             study.at_trim ? &trim_point : nullptr);
+                                             study.simulate().at_trim ? &trim_point : nullptr);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (failed) return reportFailedRun(study, s.message, out_dir);
   drawFigure(out_dir, "loads", loadsFigure(study, s, history_rows));

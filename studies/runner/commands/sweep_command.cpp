@@ -194,9 +194,9 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
       .set("version", versionString())
       .set("run", std::string(toString(s.run)));
   if (s.run == StudyKind::kSimulate)
-    summary.set("mode", study.simulate.mode == FlightMode::kFree ? "free" : "tethered");
+    summary.set("mode", s.base_simulate.options.mode == FlightMode::kFree ? "free" : "tethered");
   setPointCounts(summary, count, n);
-  if (s.run == StudyKind::kTrim || study.simulate.mode == FlightMode::kFree)
+  if (s.run == StudyKind::kTrim || s.base_simulate.options.mode == FlightMode::kFree)
     summary.set("points_bounded", static_cast<long>(count.bounded));
   summary.set("points_computed", static_cast<long>(done->computed))
       .set("points_resumed", static_cast<long>(done->resumed))

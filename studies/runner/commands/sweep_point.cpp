@@ -71,6 +71,13 @@ const std::vector<SweepColumn>& columnsOf(StudyKind run, FlightMode mode, TrimMe
   return mode == FlightMode::kFree ? freeColumns() : tetheredColumns();
 }
 
+/// The columns of a point of a sweep that runs `run` (a trim point has no [simulate]).
+const std::vector<SweepColumn>& pointColumns(const Study& point, StudyKind run) {
+  const FlightMode mode =
+      run == StudyKind::kSimulate ? point.simulate().options.mode : FlightMode::kTethered;
+  return columnsOf(run, mode, point.trim.method);
+}
+
 /// A number cell: shortest round-trip text, "" for a non-finite value (never NaN).
 std::string num(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
 
@@ -155,7 +162,7 @@ SweepPointResult tetheredPoint(const Study& point, ModalWingCache* modal_wings) 
   // sets the integrator's output times, so the means are bit-identical to a direct run's (the
   // history keeps only the last cycle).
   const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
-  SimulationOptions opts = point.simulate;
+  SimulationOptions opts = point.simulate().options;
   opts.record_history = true;
   TimeHistory history;
   const SimulationSummary s = simulateTethered(model, point.point, opts, &history);
@@ -178,7 +185,7 @@ SweepPointResult tetheredPoint(const Study& point, ModalWingCache* modal_wings) 
 SweepPointResult freePoint(const Study& point, ModalWingCache* modal_wings) {
   // As `ornithopter simulate --mode free` (free_flight_command.cpp).
   const FlightCoreModel model(point.vehicle, FlightCoreModel::Checks::kRequired, modal_wings);
-  const FreeFlightSummary s = simulateFree(model, point.point, point.simulate, nullptr);
+  const FreeFlightSummary s = simulateFree(model, point.point, point.simulate().options, nullptr);
   SweepPointResult r;
   r.status = toString(s.status);
   r.message = s.message;
@@ -207,7 +214,7 @@ SweepPointResult freePoint(const Study& point, ModalWingCache* modal_wings) {
 }  // namespace
 
 std::vector<SweepColumn> sweepResultColumns(const Study& sweep) {
-  return columnsOf(sweep.sweep().run, sweep.simulate.mode, sweep.trim.method);
+  return columnsOf(sweep.sweep().run, sweep.sweep().base_simulate.options.mode, sweep.trim.method);
 }
 
 SweepPointResult runSweepPoint(const Study& point, StudyKind run, ModalWingCache* modal_wings) {
@@ -217,7 +224,7 @@ SweepPointResult runSweepPoint(const Study& point, StudyKind run, ModalWingCache
       r = periodicTrimPoint(point, modal_wings);
     else if (run == StudyKind::kTrim)
       r = trimPoint(point, modal_wings);
-    else if (point.simulate.mode == FlightMode::kFree)
+    else if (point.simulate().options.mode == FlightMode::kFree)
       r = freePoint(point, modal_wings);
     else
       r = tetheredPoint(point, modal_wings);
@@ -225,9 +232,9 @@ SweepPointResult runSweepPoint(const Study& point, StudyKind run, ModalWingCache
     r = SweepPointResult();
     r.status = "failed";
     r.message = std::string("the run threw: ") + e.what();
-    r.cells.assign(columnsOf(run, point.simulate.mode, point.trim.method).size(), std::string());
+    r.cells.assign(pointColumns(point, run).size(), std::string());
   }
-  if (r.cells.size() != columnsOf(run, point.simulate.mode, point.trim.method).size())
+  if (r.cells.size() != pointColumns(point, run).size())
     throw std::logic_error("runSweepPoint: one cell per result column expected");
   r.message = oneLine(std::move(r.message));
   return r;

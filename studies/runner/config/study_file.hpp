@@ -141,6 +141,19 @@ struct AeromapSettings {
   orni::SimulationOptions options = orni::AeroMapOptions::defaultSimulation();
 };
 
+/// The [simulate] section (kind "simulate") beyond the operating point (Study::point): what only
+/// a simulation uses.
+struct SimulateSettings {
+  orni::SimulationOptions options;  ///< mode, cycles, tolerances, samples, [simulate.free]
+  bool wing_only = false;           ///< wing_only (tethered): the main wing alone
+  /// at_trim: fly at the vehicle's trim point at point.freq_hz (Eq. 4 refined in free flight,
+  /// trim/trim_solver.hpp) instead of the given theta, speed and tail angle, which are then the
+  /// trim's initial guess.
+  bool at_trim = false;
+  int history_every = 1;  ///< histories.csv keeps every n-th sample (output only; the analysis
+                          ///< uses all)
+};
+
 /// One axis of a sweep: a key and its values in the key's file units.
 struct SweepAxis {
   std::string key;  ///< "tail.arm_m" (a vehicle key) or "trim.freq_hz" (an analysis key)
@@ -160,6 +173,10 @@ struct SweepSettings {
   /// "operating_point.freq_hz"): study.resolved.toml leaves them out so that it re-runs the same
   /// points. Full dotted paths ("trim.freq_hz", "vehicle.wing.p3_aft_of_le_m").
   std::vector<std::string> derived_keys;
+  /// The base study's [simulate] settings (run = kSimulate; defaults for a trim sweep): the
+  /// sweep's own settings are this alternative, so the base's are kept here for the resolved
+  /// study and the result columns (tethered or free).
+  SimulateSettings base_simulate;
 };
 
 /// One parameter of a sensitivity study: a vehicle value the paper does not give, moved over its
@@ -193,9 +210,9 @@ struct OptimizeSettings {
 };
 
 /// The settings of a study's kind beyond the shared ones (Study::settings).
-using KindSettings =
-    std::variant<std::monostate, AeromapSettings, orni::CalibrationOptions, SweepSettings,
-                 OptimizeSettings, SensitivitySettings, orni::TrimContinuationOptions>;
+using KindSettings = std::variant<std::monostate, SimulateSettings, AeromapSettings,
+                                  orni::CalibrationOptions, SweepSettings, OptimizeSettings,
+                                  SensitivitySettings, orni::TrimContinuationOptions>;
 
 struct Study {
   StudyKind kind = StudyKind::kSimulate;
@@ -206,26 +223,25 @@ struct Study {
                                        ///< studyFromVehicle; empty for an inline vehicle
                                        ///< without vehicle_source
   orni::VehicleModel vehicle;          ///< resolved, overrides applied, SI
-  orni::OperatingPoint point;          ///< the vehicle's operating point with [simulate] applied
-  orni::SimulationOptions simulate;    ///< [simulate] options (defaults for other kinds)
-  bool wing_only = false;              ///< [simulate] wing_only (tethered): the main wing alone
-  /// [simulate] at_trim: fly at the vehicle's trim point at point.freq_hz (Eq. 4 refined in free
-  /// flight, trim/trim_solver.hpp) instead of the given theta, speed and tail angle, which are
-  /// then the trim's initial guess.
-  bool at_trim = false;
-  int history_every = 1;               ///< [simulate] history_every: histories.csv keeps every
-                                       ///< n-th sample (output only; the analysis uses all)
+  /// The vehicle's operating point, with [simulate] applied for kind simulate (the simulation's
+  /// point; the other kinds' runs do not read it, their defaults come from the vehicle).
+  orni::OperatingPoint point;
   orni::TrimOptions trim;              ///< [trim] options (kinds trim and continuation, the
                                        ///< base of a trim sweep, sensitivity points; SI)
-  /// The settings only one kind has: AeromapSettings (aeromap), CalibrationOptions (calibrate),
-  /// SweepSettings (sweep), OptimizeSettings (optimize), SensitivitySettings (sensitivity),
-  /// TrimContinuationOptions (continuation); monostate for simulate, modes and trim, whose
-  /// settings are the shared fields above (point, simulate, trim). A sweep's or sensitivity
-  /// study's vehicle, point, simulate and trim hold its base study; a continuation's trim the
-  /// periodic trim its branch starts from. Read it with the accessors below.
+  /// The settings only one kind has: SimulateSettings (simulate), AeromapSettings (aeromap),
+  /// CalibrationOptions (calibrate), SweepSettings (sweep), OptimizeSettings (optimize),
+  /// SensitivitySettings (sensitivity), TrimContinuationOptions (continuation); monostate for
+  /// modes (the vehicle alone) and trim, whose settings are the shared `trim` above: a trim
+  /// study's [trim] is also the base of a trim sweep's points, of every sensitivity point and of
+  /// a continuation's branch, so it stays a shared field rather than one kind's alternative. A
+  /// sweep's or sensitivity study's vehicle, point and trim hold its base study (a simulate
+  /// sweep's [simulate]: SweepSettings::base_simulate); a continuation's trim the periodic trim
+  /// its branch starts from. Read it with the accessors below.
   KindSettings settings;
 
   /// The kind's settings; std::logic_error naming the kind when `settings` holds another kind's.
+  const SimulateSettings& simulate() const;
+  SimulateSettings& simulate();
   const AeromapSettings& aeromap() const;
   AeromapSettings& aeromap();
   const orni::CalibrationOptions& calibrate() const;

@@ -10,7 +10,6 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -18,6 +17,7 @@
 
 #include "core/grid/sweep_grid.hpp"
 #include "core/model/vehicle_fields.hpp"
+#include "studies/runner/config/analysis_fields.hpp"
 #include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/trim_section.hpp"
 
@@ -221,70 +221,6 @@ std::string sectionsText(const Study& study, StudyKind run) {
   return out.str();
 }
 
-std::vector<std::string> splitLines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string l; std::getline(in, l);) lines.push_back(l);
-  return lines;
-}
-
-/// The dotted path of a header line "[a.b]" / "[[a.b]]" (quoted parts unquoted), "" otherwise.
-std::string headerPath(const std::string& line) {
-  if (line.empty() || line[0] != '[') return {};
-  std::size_t i = line[1] == '[' ? 2 : 1;
-  std::string path;
-  bool quoted = false;
-  for (; i < line.size(); ++i) {
-    const char c = line[i];
-    if (c == '"') {
-      quoted = !quoted;
-    } else if (c == '\\' && quoted && i + 1 < line.size()) {
-      path += line[++i];
-    } else if (c == ']' && !quoted) {
-      return path;
-    } else {
-      path += c;
-    }
-  }
-  return path;
-}
-
-/// The key of a "key = value" line (unquoted), "" for headers, comments and blank lines.
-std::string lineKey(const std::string& line) {
-  if (line.empty() || line[0] == '#' || line[0] == '[') return {};
-  const std::size_t eq = line.find(" = ");
-  if (eq == std::string::npos) return {};
-  std::string key = line.substr(0, eq);
-  if (key.size() >= 2 && key.front() == '"' && key.back() == '"')
-    key = key.substr(1, key.size() - 2);
-  return key;
-}
-
-/// Calls f(line index, full dotted key) for every key line of `lines`.
-template <typename F>
-void forEachKeyLine(const std::vector<std::string>& lines, F f) {
-  std::string header;
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    if (!lines[i].empty() && lines[i][0] == '[') {
-      header = headerPath(lines[i]);
-      continue;
-    }
-    const std::string key = lineKey(lines[i]);
-    if (!key.empty()) f(i, header.empty() ? key : header + "." + key);
-  }
-}
-
-/// The lines of the run's analysis section in the sections text (the vehicle, written last from
-/// its "[vehicle]" header on, is compared by field: vehicleLines).
-std::vector<std::string> analysisLines(const Study& study, StudyKind run) {
-  std::vector<std::string> lines = splitLines(sectionsText(study, run));
-  const auto vehicle = std::find(lines.begin(), lines.end(), "[vehicle]");
-  if (vehicle == lines.end())
-    throw std::logic_error("sweep: the resolved sections have no [vehicle]");
-  lines.erase(vehicle, lines.end());
-  return lines;
-}
-
 /// A key line of the resolved [vehicle]: its path ("vehicle.wing.members.diameter_m" for every
 /// member, "vehicle.materials.LE1.density_kgpm3") and the numbers it writes (a pair's two).
 struct VehicleLine {
@@ -326,22 +262,30 @@ std::vector<VehicleLine> vehicleLines(const orni::VehicleModel& v) {
 /// The same value as the resolved writer sees it (a sign of zero included).
 bool sameValue(double a, double b) { return a == b && std::signbit(a) == std::signbit(b); }
 
+/// The written analysis fields of `study`'s section of `run`, in the order of analysisFields.
+std::vector<const AnalysisField*> writtenFields(const Study& study, StudyKind run) {
+  std::vector<const AnalysisField*> fields;
+  for (const AnalysisField& f : analysisFields(run))
+    if (f.written(study)) fields.push_back(&f);
+  return fields;
+}
+
 /// The keys of the base's sections that vary between points although no axis sets them, in the
-/// order of the resolved sections. The vehicle's numbers are compared by field (their accessors);
-/// the run's analysis section ([trim], [simulate]) by the lines the resolved writer gives it.
+/// order of the resolved sections. Compared by value: the run's analysis section ([trim],
+/// [simulate]) through analysis_fields.hpp's getters, the vehicle's numbers through the field
+/// table's accessors (core/model/vehicle_fields.hpp).
 std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>& points,
                                      StudyKind run, const std::vector<AxisInput>& axes) {
-  const std::vector<std::string> base_lines = analysisLines(base, run);
+  const std::vector<const AnalysisField*> base_fields = writtenFields(base, run);
   const std::vector<VehicleLine> base_vehicle = vehicleLines(base.vehicle);
-  std::vector<bool> varies(base_lines.size(), false);
+  std::vector<bool> varies(base_fields.size(), false);
   std::vector<bool> vehicle_varies(base_vehicle.size(), false);
   for (const Study& p : points) {
-    const std::vector<std::string> lines = analysisLines(p, run);
     // A point of another shape is reported by the loader's self-check.
-    if (lines.size() != base_lines.size()) continue;
+    if (writtenFields(p, run) != base_fields) continue;
     if (vehicleLines(p.vehicle).size() != base_vehicle.size()) continue;
-    for (std::size_t i = 0; i < lines.size(); ++i)
-      if (lines[i] != base_lines[i]) varies[i] = true;
+    for (std::size_t i = 0; i < base_fields.size(); ++i)
+      if (!sameAnalysisValue(base_fields[i]->get(p), base_fields[i]->get(base))) varies[i] = true;
     for (std::size_t i = 0; i < base_vehicle.size(); ++i)
       for (const orni::VehicleNumberRef& n : base_vehicle[i].numbers)
         if (!sameValue(n.get(p.vehicle), n.get(base.vehicle))) vehicle_varies[i] = true;
@@ -354,9 +298,8 @@ std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>
         std::find(derived.begin(), derived.end(), key) == derived.end())
       derived.push_back(key);
   };
-  forEachKeyLine(base_lines, [&](std::size_t i, const std::string& key) {
-    if (varies[i]) note(key);
-  });
+  for (std::size_t i = 0; i < base_fields.size(); ++i)
+    if (varies[i]) note(std::string(base_fields[i]->key));
   for (std::size_t i = 0; i < base_vehicle.size(); ++i)
     if (vehicle_varies[i]) note(base_vehicle[i].path);
   return derived;
@@ -470,7 +413,10 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
   Study study = base;
   study.kind = StudyKind::kSweep;
   study.study_path = study_file;
+  const SimulateSettings base_simulate =
+      run == StudyKind::kSimulate ? base.simulate() : SimulateSettings{};
   SweepSettings& sweep_settings = study.settings.emplace<SweepSettings>();
+  sweep_settings.base_simulate = base_simulate;
   sweep_settings.run = run;
   for (const AxisInput& a : axes) sweep_settings.axes.push_back(a.axis);
   sweep_settings.derived_keys = derivedKeys(base, points, run, axes);
@@ -502,14 +448,11 @@ std::string resolvedSweepToml(const Study& study) {
   }
 
   // The base's sections; keys that follow the swept values are left to their defaults.
-  std::vector<std::string> lines = splitLines(sectionsText(study, s.run));
-  forEachKeyLine(lines, [&](std::size_t i, const std::string& key) {
-    if (std::find(s.derived_keys.begin(), s.derived_keys.end(), key) != s.derived_keys.end())
-      lines[i] = "# " + lineKey(lines[i]) +
-                 ": not fixed here: its default follows the swept keys at every point";
-  });
-  std::string text = out.str() + "\n";
-  for (const std::string& l : lines) text += l + "\n";
+  TomlWriter sections;
+  sections.leaveOut(s.derived_keys,
+                    "not fixed here: its default follows the swept keys at every point");
+  writeStudySections(study, s.run, sections);
+  const std::string text = out.str() + "\n" + sections.str();
   return text;
 }
 

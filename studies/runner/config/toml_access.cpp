@@ -620,15 +620,35 @@ void TomlWriter::header(const std::vector<std::string>& parts) {
   if (!out_.empty() && out_.back() == '\n' && out_.size() > 1 && out_[out_.size() - 2] != '\n')
     blank();
   out_ += "[" + headerText(parts) + "]\n";
+  setHeader(parts);
 }
 
 void TomlWriter::arrayHeader(const std::vector<std::string>& parts) {
   if (!out_.empty() && out_.back() == '\n' && out_.size() > 1 && out_[out_.size() - 2] != '\n')
     blank();
   out_ += "[[" + headerText(parts) + "]]\n";
+  setHeader(parts);
+}
+
+void TomlWriter::setHeader(const std::vector<std::string>& parts) {
+  header_path_.clear();
+  for (std::size_t i = 0; i < parts.size(); ++i) header_path_ += (i ? "." : "") + parts[i];
+}
+
+void TomlWriter::leaveOut(std::vector<std::string> paths, std::string note) {
+  left_out_ = std::move(paths);
+  left_out_note_ = std::move(note);
 }
 
 void TomlWriter::line(std::string_view key, const std::string& value, std::string_view note) {
+  if (!left_out_.empty()) {
+    const std::string path =
+        header_path_.empty() ? std::string(key) : header_path_ + "." + std::string(key);
+    if (std::find(left_out_.begin(), left_out_.end(), path) != left_out_.end()) {
+      out_ += "# " + std::string(key) + ": " + left_out_note_ + "\n";
+      return;
+    }
+  }
   out_ += keyText(key) + " = " + value;
   if (!note.empty()) out_ += "  # " + std::string(note);
   out_ += "\n";

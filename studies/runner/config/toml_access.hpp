@@ -215,6 +215,11 @@ class TomlWriter {
   void stringArray(std::string_view key, const std::vector<std::string>& values,
                    std::string_view note = {});
 
+  /// From now on, writes each key whose full dotted path (the current header's parts, unquoted,
+  /// then the key: "trim.freq_hz", "vehicle.wing.members.diameter_m") is in `paths` as the comment
+  /// "# KEY: NOTE" instead of its value (a sweep's keys that follow the swept ones).
+  void leaveOut(std::vector<std::string> paths, std::string note);
+
   const std::string& str() const { return out_; }
 
   /// Helpers, public for tests: TOML text of a float, a key, a string.
@@ -225,7 +230,11 @@ class TomlWriter {
 
  private:
   void line(std::string_view key, const std::string& value, std::string_view note);
+  void setHeader(const std::vector<std::string>& parts);
   std::string out_;
+  std::string header_path_;  ///< the current header's parts joined by '.', unquoted
+  std::vector<std::string> left_out_;
+  std::string left_out_note_;
 };
 
 }  // namespace orni::studies

@@ -41,7 +41,7 @@ class CommandsSimulate : public ::testing::Test {
 TEST_F(CommandsSimulate, FailedRunReportsItsCauseAndNoResult) {
   Study study =
       studyFromVehicle(fs::path(ORNI_SOURCE_DIR) / "studies" / "vehicles" / "rfw_tunnel.toml");
-  study.simulate.cycles = 2;
+  study.simulate().options.cycles = 2;
   study.point.freq_hz = 1e-9;
   // Outputs of an earlier run in the same folder must not pass for this run's.
   fs::create_directories(dir_);
@@ -67,8 +67,8 @@ TEST_F(CommandsSimulate, FailedRunReportsItsCauseAndNoResult) {
 TEST_F(CommandsSimulate, FailedFreeFlightReportsItsCauseAndNoResult) {
   Study study =
       studyFromVehicle(fs::path(ORNI_SOURCE_DIR) / "studies" / "vehicles" / "efw_magpie.toml");
-  study.simulate.mode = FlightMode::kFree;
-  study.simulate.cycles = 2;
+  study.simulate().options.mode = FlightMode::kFree;
+  study.simulate().options.cycles = 2;
   // The periodic start (tethered) fails in its first cycle; the rigid wing fails at once (the
   // flexible one takes minutes to give up).
   study.vehicle.wing.structure = StructureLevel::kRigid;
@@ -94,7 +94,7 @@ TEST_F(CommandsSimulate, FailedFreeFlightReportsItsCauseAndNoResult) {
 TEST_F(CommandsSimulate, FinishedRunKeepsItsMeans) {
   Study study =
       studyFromVehicle(fs::path(ORNI_SOURCE_DIR) / "studies" / "vehicles" / "rfw_tunnel.toml");
-  study.simulate.cycles = 2;
+  study.simulate().options.cycles = 2;
   EXPECT_EQ(runSimulateStudy(study, dir_), 0);
   const std::string summary = readAll(dir_ / "summary.json");
   EXPECT_NE(summary.find("\"mean\": {"), std::string::npos) << summary;

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <stdexcept>
 #include <string>
+#include <variant>
 
 #include "core/model/frames.hpp"
 #include "studies/runner/config/input_error.hpp"
@@ -62,8 +63,8 @@ TEST_F(ConfigStudyFile, LoadsExampleStudy) {
   EXPECT_EQ(s.vehicle_path, fs::path("../vehicles/rfw_tunnel.toml"));
   EXPECT_EQ(s.vehicle.name, "rfw_tunnel");
   EXPECT_DOUBLE_EQ(s.vehicle.aero.stall_width_rad, 2.0 * kDegToRad);
-  EXPECT_EQ(s.simulate.mode, FlightMode::kTethered);
-  EXPECT_EQ(s.simulate.cycles, 10);
+  EXPECT_EQ(s.simulate().options.mode, FlightMode::kTethered);
+  EXPECT_EQ(s.simulate().options.cycles, 10);
   EXPECT_DOUBLE_EQ(s.point.theta_rad, 20.0 * kDegToRad);
   EXPECT_DOUBLE_EQ(s.point.speed_mps, 6.0);  // from the vehicle's operating point
   EXPECT_DOUBLE_EQ(s.point.freq_hz, 4.0);
@@ -79,8 +80,8 @@ TEST_F(ConfigStudyFile, LoadsPaperStudies) {
   for (const Study* s : {&a, &b}) {
     EXPECT_DOUBLE_EQ(s->point.speed_mps, 6.0);
     EXPECT_DOUBLE_EQ(s->point.freq_hz, 4.0);
-    EXPECT_EQ(s->simulate.cycles, 10);
-    EXPECT_EQ(s->simulate.mode, FlightMode::kTethered);
+    EXPECT_EQ(s->simulate().options.cycles, 10);
+    EXPECT_EQ(s->simulate().options.mode, FlightMode::kTethered);
   }
 }
 
@@ -90,7 +91,9 @@ TEST_F(ConfigStudyFile, DefaultsAndNameFromStem) {
   EXPECT_EQ(s.kind, StudyKind::kTrim);
   EXPECT_EQ(s.name, "my_trim");
   EXPECT_EQ(s.point.theta_rad, s.vehicle.operating_point.theta_rad);
-  EXPECT_EQ(s.simulate.cycles, SimulationOptions{}.cycles);
+  // A trim study has no [simulate] settings (its settings are the shared `trim`).
+  EXPECT_TRUE(std::holds_alternative<std::monostate>(s.settings));
+  EXPECT_THROW((void)s.simulate(), std::logic_error);
 }
 
 TEST_F(ConfigStudyFile, OverridesApply) {
@@ -127,9 +130,9 @@ rel_tol = 1e-7
   EXPECT_EQ(s.vehicle.wing.members[0].name, "SPAR");
   EXPECT_EQ(s.vehicle.materials.size(), 5u);
   EXPECT_DOUBLE_EQ(s.vehicle.findMaterial("NEW")->youngs_modulus_pa, 1e9);
-  EXPECT_EQ(s.simulate.mode, FlightMode::kFree);
-  EXPECT_EQ(s.simulate.cycles, 20);
-  EXPECT_DOUBLE_EQ(s.simulate.rel_tol, 1e-7);
+  EXPECT_EQ(s.simulate().options.mode, FlightMode::kFree);
+  EXPECT_EQ(s.simulate().options.cycles, 20);
+  EXPECT_DOUBLE_EQ(s.simulate().options.rel_tol, 1e-7);
   EXPECT_DOUBLE_EQ(s.point.speed_mps, 10.0);
   EXPECT_DOUBLE_EQ(s.point.freq_hz, 12.0);
   EXPECT_DOUBLE_EQ(s.point.tail_angle_rad, 11.85 * kDegToRad);
@@ -341,7 +344,7 @@ TEST_F(ConfigStudyFile, StudyFromVehicle) {
   EXPECT_EQ(s.vehicle.name, "efw_magpie");
   EXPECT_EQ(s.point.freq_hz, 12.0);
   EXPECT_EQ(s.point.tail_angle_rad, s.vehicle.operating_point.tail_angle_rad);
-  EXPECT_EQ(s.simulate.cycles, SimulationOptions{}.cycles);
+  EXPECT_EQ(s.simulate().options.cycles, SimulationOptions{}.cycles);
   EXPECT_EQ(s.vehicle_path, vehiclePath("efw_magpie.toml"));
 }
 
@@ -354,14 +357,18 @@ void expectSameStudy(const Study& a, const Study& b) {
   EXPECT_EQ(a.point.freq_hz, b.point.freq_hz);
   EXPECT_EQ(a.point.theta_rad, b.point.theta_rad);
   EXPECT_EQ(a.point.tail_angle_rad, b.point.tail_angle_rad);
-  EXPECT_EQ(a.simulate.mode, b.simulate.mode);
-  EXPECT_EQ(a.simulate.cycles, b.simulate.cycles);
-  EXPECT_EQ(a.simulate.rel_tol, b.simulate.rel_tol);
-  EXPECT_EQ(a.simulate.abs_tol, b.simulate.abs_tol);
-  EXPECT_EQ(a.simulate.steady_tol, b.simulate.steady_tol);
-  EXPECT_EQ(a.simulate.samples_per_cycle, b.simulate.samples_per_cycle);
-  EXPECT_EQ(a.simulate.separation_abs_tol, b.simulate.separation_abs_tol);
-  const FreeFlightOptions &fa = a.simulate.free, &fb = b.simulate.free;
+  if (a.kind != StudyKind::kSimulate) return;
+  EXPECT_EQ(a.simulate().wing_only, b.simulate().wing_only);
+  EXPECT_EQ(a.simulate().at_trim, b.simulate().at_trim);
+  EXPECT_EQ(a.simulate().history_every, b.simulate().history_every);
+  EXPECT_EQ(a.simulate().options.mode, b.simulate().options.mode);
+  EXPECT_EQ(a.simulate().options.cycles, b.simulate().options.cycles);
+  EXPECT_EQ(a.simulate().options.rel_tol, b.simulate().options.rel_tol);
+  EXPECT_EQ(a.simulate().options.abs_tol, b.simulate().options.abs_tol);
+  EXPECT_EQ(a.simulate().options.steady_tol, b.simulate().options.steady_tol);
+  EXPECT_EQ(a.simulate().options.samples_per_cycle, b.simulate().options.samples_per_cycle);
+  EXPECT_EQ(a.simulate().options.separation_abs_tol, b.simulate().options.separation_abs_tol);
+  const FreeFlightOptions &fa = a.simulate().options.free, &fb = b.simulate().options.free;
   EXPECT_EQ(fa.bounds.U_mps, fb.bounds.U_mps);
   EXPECT_EQ(fa.bounds.W_mps, fb.bounds.W_mps);
   EXPECT_EQ(fa.bounds.theta_rad, fb.bounds.theta_rad);
@@ -419,8 +426,8 @@ divergence_ratio = 8
 initial_altitude_m = 50
 )");
   const Study s = loadStudyFile(f);
-  const FreeFlightOptions& o = s.simulate.free;
-  EXPECT_EQ(s.simulate.mode, FlightMode::kFree);
+  const FreeFlightOptions& o = s.simulate().options.free;
+  EXPECT_EQ(s.simulate().options.mode, FlightMode::kFree);
   EXPECT_EQ(o.bounds.U_mps, 1.5);
   EXPECT_EQ(o.bounds.W_mps, 2.5);
   EXPECT_EQ(o.bounds.theta_rad, 35 * kDegToRad);
@@ -446,7 +453,7 @@ initial_altitude_m = 50
   const Study d = loadStudyFile(writeStudy(
       "d.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n[simulate]\nmode = \"free\"\n"));
   const FreeFlightOptions defaults;
-  EXPECT_EQ(d.simulate.free.bounds.theta_rad, defaults.bounds.theta_rad);
+  EXPECT_EQ(d.simulate().options.free.bounds.theta_rad, defaults.bounds.theta_rad);
   const std::string dtext = resolvedStudyToml(d);
   EXPECT_NE(dtext.find("bound_theta_deg = 40.0\n"), std::string::npos) << dtext;
   EXPECT_NE(dtext.find("bound_Q_degps = 0.0"), std::string::npos) << dtext;
@@ -501,16 +508,16 @@ TEST_F(ConfigStudyFile, LoadsPaperFig6To9Studies) {
   const Study free = loadStudyFile(repo() / "studies" / "paper" / "fig6_8_free_flight.toml");
   const Study cft =
       loadStudyFile(repo() / "studies" / "paper" / "fig9_constrained_flight_test.toml");
-  EXPECT_EQ(free.simulate.mode, FlightMode::kFree);
-  EXPECT_EQ(free.simulate.cycles, 60);
-  EXPECT_EQ(cft.simulate.mode, FlightMode::kTethered);
-  EXPECT_GE(cft.simulate.cycles, 10);
+  EXPECT_EQ(free.simulate().options.mode, FlightMode::kFree);
+  EXPECT_EQ(free.simulate().options.cycles, 60);
+  EXPECT_EQ(cft.simulate().options.mode, FlightMode::kTethered);
+  EXPECT_GE(cft.simulate().options.cycles, 10);
   for (const Study* s : {&free, &cft}) {
     // The honest vehicle flies its own trim at 12 Hz (at_trim: solved first); the point in the
     // file is the trim's initial guess near that trim, not the paper's Table 3.
     EXPECT_EQ(s->kind, StudyKind::kSimulate);
     EXPECT_EQ(s->vehicle.name, "efw_magpie");
-    EXPECT_TRUE(s->at_trim);
+    EXPECT_TRUE(s->simulate().at_trim);
     EXPECT_DOUBLE_EQ(s->point.theta_rad, 15.0 * kDegToRad);
     EXPECT_DOUBLE_EQ(s->point.freq_hz, 12.0);
     EXPECT_DOUBLE_EQ(s->point.speed_mps, 15.0);

@@ -184,7 +184,7 @@ cycles = 3
   EXPECT_EQ(t.sweep().points[0].kind, StudyKind::kSimulate);
   EXPECT_EQ(t.sweep().points[3].point.theta_rad, 20.0 * kDegToRad);
   EXPECT_DOUBLE_EQ(t.sweep().points[3].vehicle.flapping.amplitude_rad, 30.0 * kDegToRad);
-  EXPECT_EQ(t.sweep().points[3].simulate.cycles, 3);
+  EXPECT_EQ(t.sweep().points[3].simulate().options.cycles, 3);
 
   const Study f =
       loadStudyFile(write("f.toml", "kind = \"sweep\"\n" + vehicle("efw_magpie.toml") + R"(
@@ -195,8 +195,8 @@ axes = [{ key = "simulate.free.bound_theta_deg", values = [30, 40] }]
 mode = "free"
 cycles = 5
 )"));
-  EXPECT_EQ(f.simulate.mode, FlightMode::kFree);
-  EXPECT_DOUBLE_EQ(f.sweep().points[0].simulate.free.bounds.theta_rad, 30.0 * kDegToRad);
+  EXPECT_EQ(f.sweep().base_simulate.options.mode, FlightMode::kFree);
+  EXPECT_DOUBLE_EQ(f.sweep().points[0].simulate().options.free.bounds.theta_rad, 30.0 * kDegToRad);
 }
 
 TEST_F(ConfigSweepStudy, DefaultsFollowTheSweptKeysAndTheResolvedStudyReproducesThePoints) {
