@@ -33,7 +33,7 @@ candidates=(
   "p3_three_quarter|P3 at 0.75 c0 (78 mm)|wing.p3_aft_of_le_m = 0.078"
   "root_chord_123|root chord 123 mm (Table 2's aspect ratio instead of its area)|wing.root_chord_m = 0.123"
   "rods_600gpa|every rod at 600 GPa (the top of carbon)|materials.LE1.youngs_modulus_gpa = 600.0;materials.LE2.youngs_modulus_gpa = 600.0;materials.CFRP_ROD.youngs_modulus_gpa = 600.0"
-  "rods_x100|every rod 100 times stiffer (a probe, not a design)|materials.LE1.youngs_modulus_gpa = 25000.0;materials.LE2.youngs_modulus_gpa = 10000.0;materials.CFRP_ROD.youngs_modulus_gpa = 17500.0"
+  "rods_1200gpa|every rod at 1200 GPa, twice any carbon (a probe, not a design; the field table's upper bound: the old 100-times probe is no longer a valid vehicle)|materials.LE1.youngs_modulus_gpa = 1200.0;materials.LE2.youngs_modulus_gpa = 1200.0;materials.CFRP_ROD.youngs_modulus_gpa = 1200.0"
   "skin_x10|skin 10 times stiffer (a probe: the skin's bending carries the chord)|materials.SKIN.youngs_modulus_gpa = 1000.0"
   "no_stall|no stall (stall angles +-60 deg)|aero.stall_angle_max_deg = 60.0;aero.stall_angle_min_deg = -60.0"
   "suction_half|leading-edge suction efficiency 0.5|aero.suction_efficiency = 0.5"

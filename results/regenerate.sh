@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Regenerate the committed paper results: run every study of studies/paper/ into results/paper/
-# and rebuild results/README.md from results/README.template.md and the new summaries/CSVs.
+# (and the literal wing's investigation, results/literal_wing_investigation.sh) and rebuild
+# results/README.md from results/README.template.md and the new summaries/CSVs.
 #
 #   bash results/regenerate.sh [ORNITHOPTER [ORNI_RESULTS]]
 #
@@ -31,16 +32,22 @@ for exe in "$bin" "$filler"; do
 done
 
 mkdir -p "$out"
-# Start clean: no journal of an older version is resumed, no stale file survives.
-for d in "$out"/*/; do
+studies=(studies/paper/*.toml)
+# Start clean: no journal of an older version is resumed, no stale file survives. Only the
+# studies' own folders: literal_wing_investigation/ is results/literal_wing_investigation.sh's
+# (run below; results/README.md quotes it).
+for s in "${studies[@]}"; do
+  d="$out/$(basename "$s" .toml)"
   if [[ -d "$d" ]]; then rm -rf "$d"; fi
 done
-
-studies=(studies/paper/*.toml)
 start=$(date +%s.%N)
 "$bin" run "${studies[@]}" -o "$out" -j "$jobs"
 end=$(date +%s.%N)
 rm -f "$out"/*/*.journal "$out"/*/*.tmp*
+
+# The literal wing's investigation flies the same core (tethered runs and trims): regenerated with
+# the studies so that the page never mixes two versions.
+bash results/literal_wing_investigation.sh "$bin" >/dev/null
 
 awk -v a="$start" -v b="$end" -v n="${#studies[@]}" -v j="$jobs" -v c="$(nproc 2>/dev/null || echo 0)" \
   'BEGIN { printf "{\n  \"command\": \"ornithopter run studies/paper/*.toml -o results/paper -j %s\",\n  \"studies\": %d,\n  \"cores\": %d,\n  \"wall_time_s\": %.1f\n}\n", j, n, c, b - a }' \

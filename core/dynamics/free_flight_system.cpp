@@ -7,6 +7,7 @@
 
 #include "core/aero/mst_strip.hpp"
 #include "core/dynamics/flapping.hpp"
+#include "core/dynamics/flight_path_frame.hpp"
 
 namespace orni {
 
@@ -345,13 +346,9 @@ void FreeFlightSystem::addTailAndBodyDrag(const Frame& fr) {
   bm.Q_radps = fr.Q;
   LoadSample& tail = last_.tail;
   addTailAndTotals(model_->core, bm, control_, &tail);
-  // The flight-path frame written out, not flightPathFrame(): with the shared helper GCC fuses
-  // these multiply-adds differently (-ffp-contract=fast, the C++ default) and the free-flight
-  // outputs move at 1e-12; kept until the outputs may change (issue 15 note).
-  const double speed = bm.v_P1_B.norm();
-  const Vec3 e_v = speed > 0.0 ? Vec3(bm.v_P1_B / speed) : Vec3::UnitX();
-  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
-  const Vec3 F_tail = (tail.FH_tail_N + tail.FH_body_N) * e_v + tail.FV_tail_N * e_L;
+  const FlightPathFrame path = flightPathFrame(bm.v_P1_B);
+  const Vec3 F_tail =
+      (tail.FH_tail_N + tail.FH_body_N) * path.e_v_B + tail.FV_tail_N * path.e_L_B;
   ws_.f[0] += F_tail.x();
   ws_.f[1] += F_tail.z();
   ws_.f[2] += tail.M_tail_Nm;
@@ -471,14 +468,11 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   }
   const Vec3 F_B = last_.R_BW * F;
   const Vec3 M_P1_B = last_.R_BW * M + md.p_P1P2_B_m.cross(F_B);
-  const Vec3 v(U, 0.0, W);
-  const double speed = v.norm();  // written out as above (flightPathFrame would move the bits)
-  const Vec3 e_v = speed > 0.0 ? Vec3(v / speed) : Vec3::UnitX();
-  const Vec3 e_L(e_v.z(), 0.0, -e_v.x());
+  const FlightPathFrame path = flightPathFrame(Vec3(U, 0.0, W));
   LoadSample& o = s.loads;
   o = last_.tail;
-  o.FV_wing_aero_N = 2.0 * F_B.dot(e_L);
-  o.FH_wing_aero_N = 2.0 * F_B.dot(e_v);
+  o.FV_wing_aero_N = 2.0 * F_B.dot(path.e_L_B);
+  o.FH_wing_aero_N = 2.0 * F_B.dot(path.e_v_B);
   o.M_wing_aero_Nm = 2.0 * M_P1_B.y();
   o.separated_fraction = last_.separated_fraction;
   o.FV_N = o.FV_wing_aero_N + o.FV_tail_N;

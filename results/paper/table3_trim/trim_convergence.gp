@@ -25,11 +25,11 @@ set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
 plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.35', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.32', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.98'
-7,16.3495292532295
+7,16.34948763141962
 e
-7,16.323385671142354
+7,16.323415640379345
 e
-7,19.978984354257186
+7,19.978944179280067
 e
 
 unset multiplot
@@ -58,11 +58,11 @@ set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
 plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.35', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.32', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.98'
-7,16.3495292532295
+7,16.34948763141962
 e
-7,16.323385671142354
+7,16.323415640379345
 e
-7,19.978984354257186
+7,19.978944179280067
 e
 
 unset multiplot
