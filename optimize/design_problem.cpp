@@ -355,16 +355,16 @@ void DesignProblem::observe(const std::vector<double>& /*x*/, const Evaluation& 
   ws.last_trim = p;
 }
 
-VehicleModel DesignProblem::designVehicle(const std::vector<double>& x,
-                                          const Evaluation& result) const {
-  VehicleModel v = applyDesign(base_, space_, x);
+VehicleDefinition DesignProblem::designVehicle(const std::vector<double>& x,
+                                               const Evaluation& result) const {
+  VehicleDefinition v{applyDesign(base_, space_, x), options_.trim.design_point};
   const std::vector<double>& r = result.values;
   if (result.status == EvaluationStatus::kOk && r.size() == value_info_.size() &&
       r[kTrimConverged] == 1.0) {
-    v.operating_point.theta_rad = r[kTrimTheta];
-    v.operating_point.speed_mps = r[kTrimSpeed];
-    v.operating_point.tail_angle_rad = r[kTrimTailAngle];
-    v.operating_point.freq_hz = r[kTrimFreq];
+    v.design_point.theta_rad = r[kTrimTheta];
+    v.design_point.speed_mps = r[kTrimSpeed];
+    v.design_point.tail_angle_rad = r[kTrimTailAngle];
+    v.design_point.freq_hz = r[kTrimFreq];
   }
   return v;
 }

@@ -153,9 +153,9 @@ class DesignProblem final : public Problem {
   const DesignProblemOptions& options() const { return options_; }
   /// The variables' bounds and initial values.
   VariableBox box() const;
-  /// The designed vehicle of x with the trim point of `result` (when it converged) as its
-  /// operating point: the vehicle file of a design.
-  VehicleModel designVehicle(const std::vector<double>& x, const Evaluation& result) const;
+  /// The designed vehicle of x with the trim point of `result` as its design point (when the trim
+  /// converged; otherwise the trim options' design point): the vehicle file of a design.
+  VehicleDefinition designVehicle(const std::vector<double>& x, const Evaluation& result) const;
 
  private:
   VehicleModel base_;

@@ -22,7 +22,7 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FlightCoreModel& model,
     throw std::invalid_argument("free-flight period map: rel_tol must be in (0, 1e-2]");
   if (!(options.friction_speed_mps > 0.0))
     throw std::invalid_argument("free-flight period map: friction speed must be > 0");
-  const OperatingPoint& op = model.vehicle.operating_point;
+  const OperatingPoint& op = options.design_point;
   prepare(parameters(op.freq_hz > 0.0 ? op : OperatingPoint{10.0, 10.0, 0.0, 0.0}).data());
   mode_count_ = sys_->modeCount();
   full_ = sys_->stateCount();
@@ -105,8 +105,8 @@ double FreeFlightPeriodMap::parameterScale(int j) const {
   }
 }
 
-double orbitScaleSpeed_mps(const VehicleModel& vehicle) {
-  return vehicle.operating_point.speed_mps > 0.0 ? vehicle.operating_point.speed_mps : 10.0;
+double orbitScaleSpeed_mps(const OperatingPoint& design_point) {
+  return design_point.speed_mps > 0.0 ? design_point.speed_mps : 10.0;
 }
 
 std::vector<double> FreeFlightPeriodMap::parameters(const OperatingPoint& point, double cg_shift_m) {
@@ -150,7 +150,7 @@ void FreeFlightPeriodMap::prepare(const double* p) {
   const FlightCoreModel& model = modelAt(p);
   sys_ = std::make_unique<FreeFlightSystem>(
       model, model.flexible.get(), ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]},
-      orbitScaleSpeed_mps(base_.vehicle));
+      orbitScaleSpeed_mps(options_.design_point));
   sys_->setFrictionSpeed(options_.friction_speed_mps);
   using Imex = ModalImex<FreeFlightSystem>;
   if (sys_->hasModes())

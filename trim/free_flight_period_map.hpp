@@ -46,15 +46,19 @@ enum FreeFlightPeriodParameter : int {
 constexpr int kPeriodAltitudeGain = 0;
 
 /// The speed that scales a periodic orbit's state and power tolerances (FreeFlightSystem's
-/// reference speed): the vehicle's design speed (its file's [operating_point]), 10 m/s when it has
-/// none. Fixed for a map's lifetime, so that the scales do not move with the friction speed
-/// while a continuation walks a branch.
-double orbitScaleSpeed_mps(const VehicleModel& vehicle);
+/// reference speed): the vehicle's design speed (its file's [operating_point],
+/// VehicleDefinition::design_point), 10 m/s when it has none. Fixed for a map's lifetime, so that
+/// the scales do not move with the friction speed while a continuation walks a branch.
+double orbitScaleSpeed_mps(const OperatingPoint& design_point);
 
 struct FreeFlightPeriodMapOptions {
   double rel_tol = 1e-6;               ///< step control of the grid, (0, 1e-2]
   double friction_speed_mps = 10.0;    ///< skin friction frozen at this speed, > 0
   double max_step_fraction = 0.125;    ///< largest step, fraction of the period (free flight: T/8)
+  /// The vehicle file's design point (TrimOptions::design_point): its speed scales the tolerances
+  /// (orbitScaleSpeed_mps); the map is first prepared at it (at 10 m/s and 10 Hz when it is
+  /// zero, i.e. none).
+  OperatingPoint design_point;
 };
 
 /// One period of the orbit, sampled uniformly (histories, cycle means).

@@ -34,10 +34,10 @@ int parameterIndex(PeriodicControl c) {
 // wing, the explicit ARK4(3)6L table for the rigid one), max |x(T) - x| in scales.
 double orbitCheck(const FlightCoreModel& model, const std::vector<double>& x,
                   const std::vector<double>& p, double friction_speed_mps, double rel_tol,
-                  const FreeFlightPeriodMap& map) {
+                  const FreeFlightPeriodMap& map, const OperatingPoint& design_point) {
   FreeFlightSystem sys(model, model.flexible.get(),
                        ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]},
-                       orbitScaleSpeed_mps(model.vehicle));
+                       orbitScaleSpeed_mps(design_point));
   sys.setFrictionSpeed(friction_speed_mps);
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
@@ -160,6 +160,7 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   FreeFlightPeriodMapOptions mo;
   mo.rel_tol = options.periodic.rel_tol;
   mo.friction_speed_mps = s.stage1.solution.speed_mps;
+  mo.design_point = options.design_point;
   FreeFlightPeriodMap map(model, mo);
   s.states = map.stateInfo();
   s.state_units = map.stateUnits();
@@ -278,7 +279,8 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   s.solution.tail_angle_rad = p[kPeriodTailAngle];
   s.solution.freq_hz = p[kPeriodFrequency];
   const FlightCoreModel& solved = map.modelAt(p.data());
-  s.orbit_check = orbitCheck(solved, x, p, s.friction_speed_mps, mo.rel_tol, map);
+  s.orbit_check =
+      orbitCheck(solved, x, p, s.friction_speed_mps, mo.rel_tol, map, options.design_point);
 
   s.status = TrimStatus::kOk;
   char buf[400];

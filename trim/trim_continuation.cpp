@@ -90,6 +90,7 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
   FreeFlightPeriodMapOptions mo;
   mo.rel_tol = o.periodic.rel_tol;
   mo.friction_speed_mps = s.start.friction_speed_mps;
+  mo.design_point = o.design_point;
   FreeFlightPeriodMap map(model, mo);
   s.friction_speed_mps = map.frictionSpeed_mps();
   const int parameter = mapIndex(options.parameter);

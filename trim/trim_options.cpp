@@ -97,9 +97,10 @@ bool TrimOptions::IsValid(std::string* why) const {
   return true;
 }
 
-TrimOptions defaultTrimOptions(const VehicleModel& vehicle) {
+TrimOptions defaultTrimOptions(const OperatingPoint& design_point) {
   TrimOptions o;
-  o.initial = vehicle.operating_point;
+  o.initial = design_point;
+  o.design_point = design_point;
   return o;
 }
 

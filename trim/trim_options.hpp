@@ -31,6 +31,10 @@ struct TrimOptions {
   /// frequency). The runner fills it from the vehicle's operating point, the study and the CLI.
   /// speed > 0, freq > 0, every unknown inside its bounds.
   OperatingPoint initial;
+  /// The vehicle file's design point ([operating_point], VehicleDefinition::design_point): the
+  /// default of `initial`; the periodic orbit scales its tolerances by its speed (fixed over a
+  /// continuation, FreeFlightPeriodMapOptions). Zero = none (10 m/s).
+  OperatingPoint design_point;
   /// Bounds per unknown (indexed by TrimUnknown), SI; lower < upper, speed and frequency lower
   /// > 0. Defaults: theta [-10, 40] deg, U [2, 30] m/s, delta_T [-30, 45] deg, f [1, 40] Hz.
   std::array<TrimBounds, kTrimUnknownCount> bounds = defaultBounds();
@@ -71,8 +75,9 @@ struct TrimOptions {
   static SimulationOptions defaultSimulation();
 };
 
-/// Default options with the vehicle's operating point as initial guess and fixed values.
-TrimOptions defaultTrimOptions(const VehicleModel& vehicle);
+/// Default options with the vehicle file's design point ([operating_point]) as initial guess and
+/// design point, and fixed values.
+TrimOptions defaultTrimOptions(const OperatingPoint& design_point);
 
 /// Switch `o` to the periodic method with that method's defaults of the Eq. (4) stage, which there
 /// is only the start of Newton's iteration: residual_tol 1e-3, simulation.rel_tol 1e-4,

@@ -95,10 +95,6 @@ std::vector<VehicleNumber> makeNumbers() {
       ORNI_PLAIN("tail.mass_kg", v.tail.mass_kg),
       ORNI_PLAIN("tail.downwash_factor", v.tail.downwash_factor),
 
-      ORNI_PLAIN("operating_point.speed_mps", v.operating_point.speed_mps),
-      ORNI_PLAIN("operating_point.freq_hz", v.operating_point.freq_hz),
-      ORNI_PLAIN("operating_point.theta_deg", v.operating_point.theta_rad),
-      ORNI_PLAIN("operating_point.tail_angle_deg", v.operating_point.tail_angle_rad),
   };
 }
 
@@ -131,6 +127,16 @@ std::size_t VehicleNumber::count(const VehicleModel& vehicle) const {
 
 const std::vector<VehicleNumber>& vehicleNumbers() {
   static const std::vector<VehicleNumber> numbers = makeNumbers();
+  return numbers;
+}
+
+const std::vector<DesignPointNumber>& designPointNumbers() {
+  static const std::vector<DesignPointNumber> numbers = {
+      {"operating_point.speed_mps", &OperatingPoint::speed_mps},
+      {"operating_point.freq_hz", &OperatingPoint::freq_hz},
+      {"operating_point.theta_deg", &OperatingPoint::theta_rad},
+      {"operating_point.tail_angle_deg", &OperatingPoint::tail_angle_rad},
+  };
   return numbers;
 }
 

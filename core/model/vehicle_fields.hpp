@@ -1,5 +1,6 @@
 // Accessors of the vehicle's numbers (issue 15 item 1): every number, integer and pair of the
-// field table's vehicle group is read and written here, in SI, by its key. The design variables
+// field table's vehicle group (the design point's [operating_point] through designPointNumbers)
+// is read and written here, in SI, by its key. The design variables
 // (optimize/design_space.hpp), the calibration parameters (trim/calibration.hpp) and the sweep's
 // comparison of points (studies/runner/config/sweep_study.cpp) go through these accessors instead
 // of their own lists of members; tests/unit/model/test_vehicle_fields.cpp fails when a vehicle
@@ -48,6 +49,20 @@ struct VehicleNumber {
 
 /// Every accessor, in the order of the field table (a pair's x before its y).
 const std::vector<VehicleNumber>& vehicleNumbers();
+
+/// One number of a vehicle file's design point ([operating_point], VehicleDefinition), in SI.
+/// Not a VehicleNumber: the point is not part of the VehicleModel (issue 15 item 7).
+struct DesignPointNumber {
+  std::string_view key;                  ///< the field-table key, "operating_point.freq_hz"
+  double OperatingPoint::*member = nullptr;
+
+  const FieldSpec& spec() const { return field(key); }
+  double get(const OperatingPoint& p) const { return p.*member; }
+  void set(OperatingPoint& p, double si) const { p.*member = si; }
+};
+
+/// The design point's accessors, in the order of the field table.
+const std::vector<DesignPointNumber>& designPointNumbers();
 
 /// The accessor of a field-table key ("wing.members[].diameter_m"; concrete keys
 /// "wing.members[2].diameter_m" are normalised as findField does), and of a pair's component;

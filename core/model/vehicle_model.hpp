@@ -152,7 +152,9 @@ struct TailModel {
   double downwash_factor = 0.0;    ///< d eps_w / d theta_mean; 0 = no wing downwash
 };
 
-/// The default operating point of the vehicle file (CLI flags and study files override it).
+/// A flight or wind-tunnel operating point: what a run flies at. Every simulation takes its point
+/// as an argument; the vehicle file's [operating_point] is its design point (VehicleDefinition),
+/// the default of a study's point, never read by core.
 struct OperatingPoint {
   double speed_mps = 0.0;       ///< U, flight or tunnel speed
   double freq_hz = 0.0;         ///< f, flapping frequency
@@ -169,7 +171,6 @@ struct VehicleModel {
   FlappingKinematics flapping;
   BodyModel body;
   TailModel tail;
-  OperatingPoint operating_point;
   std::vector<Material> materials;
 
   /// The main wing alone, as the paper's Fig. 5 and its load cells see it: the same vehicle
@@ -187,6 +188,15 @@ struct VehicleModel {
       if (m.name == material_name) return &m;
     return nullptr;
   }
+};
+
+/// What a vehicle file holds: the vehicle and its design operating point ([operating_point]: the
+/// default point of a study's run, the trim's first guess, the periodic-orbit map's scale speed).
+/// The point is kept apart from the VehicleModel (issue 15 item 7) so that core, which takes every
+/// run's point as an argument, cannot read a second, stale one.
+struct VehicleDefinition {
+  VehicleModel model;
+  OperatingPoint design_point;
 };
 
 }  // namespace orni

@@ -212,11 +212,23 @@ std::vector<ModelProblem> vehicleProblems(const VehicleModel& v) {
                 " (the tail is part of the vehicle mass)",
             displayNumber(t.mass_kg));
   }
-  const OperatingPoint& p = v.operating_point;
+  return problems;
+}
+
+std::vector<ModelProblem> designPointProblems(const OperatingPoint& p) {
+  std::vector<ModelProblem> problems;
+  Checker c(&problems);
   c.number("operating_point.speed_mps", p.speed_mps);
   c.number("operating_point.freq_hz", p.freq_hz);
   c.number("operating_point.theta_deg", p.theta_rad);
   c.number("operating_point.tail_angle_deg", p.tail_angle_rad);
+  return problems;
+}
+
+std::vector<ModelProblem> definitionProblems(const VehicleDefinition& definition) {
+  std::vector<ModelProblem> problems = vehicleProblems(definition.model);
+  for (ModelProblem& p : designPointProblems(definition.design_point))
+    problems.push_back(std::move(p));
   return problems;
 }
 

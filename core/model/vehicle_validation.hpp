@@ -41,6 +41,12 @@ struct ModelProblem {
 /// Every problem of `vehicle`, in the order of a vehicle file (empty = valid).
 std::vector<ModelProblem> vehicleProblems(const VehicleModel& vehicle);
 
+/// Every problem of a vehicle file's design point ([operating_point]; core never reads it).
+std::vector<ModelProblem> designPointProblems(const OperatingPoint& design_point);
+
+/// Every problem of a vehicle file's content: the vehicle's, then its design point's.
+std::vector<ModelProblem> definitionProblems(const VehicleDefinition& definition);
+
 /// Throws InvalidModelError("invalid vehicle: key '...': expected ..., got ...") for the first
 /// problem of `vehicle`.
 void requireValidVehicle(const VehicleModel& vehicle);

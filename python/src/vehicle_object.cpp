@@ -25,11 +25,11 @@ VehicleObject VehicleObject::load(const std::string& path) {
   return v;
 }
 
-void VehicleObject::adopt(VehicleModel model) {
-  model_ = std::move(model);
+void VehicleObject::adopt(VehicleDefinition definition) {
+  definition_ = std::move(definition);
   // The resolved document: writeVehicleToml writes numbers that read back exactly, so the model
   // re-read from it after a set is this one with only that value changed.
-  document_ = studies::parseTomlText(studies::vehicleToToml(model_), kPythonSource);
+  document_ = studies::parseTomlText(studies::vehicleToToml(definition_), kPythonSource);
   keys_ = leafKeys(document_);
   const std::lock_guard<std::mutex> lock(*core_mutex_);
   core_.reset();
@@ -51,19 +51,19 @@ void VehicleObject::set(const std::string& key, const py::handle& value) {
   studies::ReadContext context;
   context.file = kPythonSource;
   // The file reader, exactly: the field table's type and range, the cross-checks, unknown keys.
-  VehicleModel model = studies::parseVehicleTable(changed, context, std::string());
+  VehicleDefinition definition = studies::parseVehicleTable(changed, context, std::string());
   document_ = std::move(changed);
   keys_ = leafKeys(document_);
-  const std::lock_guard<std::mutex> lock(*core_mutex_);  // coreModel() reads model_ without the GIL
-  model_ = std::move(model);
+  const std::lock_guard<std::mutex> lock(*core_mutex_);  // coreModel() reads definition_ without the GIL
+  definition_ = std::move(definition);
   core_.reset();
 }
 
-std::string VehicleObject::toToml() const { return studies::vehicleToToml(model_); }
+std::string VehicleObject::toToml() const { return studies::vehicleToToml(definition_); }
 
 std::shared_ptr<const FlightCoreModel> VehicleObject::coreModel() const {
   const std::lock_guard<std::mutex> lock(*core_mutex_);
-  if (!core_) core_ = std::make_shared<const FlightCoreModel>(model_);
+  if (!core_) core_ = std::make_shared<const FlightCoreModel>(definition_.model);
   return core_;
 }
 

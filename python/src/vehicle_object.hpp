@@ -29,7 +29,7 @@ class VehicleObject {
   /// The complete vehicle document (every default filled in) as TOML text, file units.
   std::string toToml() const;
 
-  const VehicleModel& model() const { return model_; }
+  const VehicleModel& model() const { return definition_.model; }
   /// The vehicle as a TOML table (a study's inline [vehicle]).
   const toml::table& document() const { return document_; }
   const std::string& source() const { return source_; }
@@ -38,9 +38,9 @@ class VehicleObject {
   std::shared_ptr<const FlightCoreModel> coreModel() const;
 
  private:
-  void adopt(VehicleModel model);
+  void adopt(VehicleDefinition definition);
 
-  VehicleModel model_;
+  VehicleDefinition definition_;  ///< the vehicle and its design point ([operating_point])
   toml::table document_;  ///< the resolved vehicle in file units and key names
   std::vector<std::string> keys_;
   std::string source_;    ///< the file it was read from

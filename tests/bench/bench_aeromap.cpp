@@ -25,11 +25,12 @@ AeroMapGrid fig5Grid() {
 }
 
 void BM_AeroMapEfw180(benchmark::State& state) {
-  const VehicleModel v =
+  const VehicleDefinition file =
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  const VehicleModel& v = file.model;
   const FlightCoreModel model(v);
   AeroMapGrid grid = fig5Grid();
-  grid.tail_angle_rad = {v.operating_point.tail_angle_rad};
+  grid.tail_angle_rad = {file.design_point.tail_angle_rad};
   AeroMapOptions options;
   options.threads = static_cast<int>(state.range(0));
   AeroMapSummary map;

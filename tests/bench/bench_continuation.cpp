@@ -18,9 +18,10 @@ namespace {
 using namespace orni;
 
 void BM_ContinuationEfw(benchmark::State& state) {
-  const FlightCoreModel model(
-      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml"));
-  TrimOptions o = defaultTrimOptions(model.vehicle);
+  const VehicleDefinition file =
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  const FlightCoreModel model(file.model);
+  TrimOptions o = defaultTrimOptions(file.design_point);
   o.initial.freq_hz = static_cast<double>(state.range(0));
   usePeriodicMethod(&o);
   TrimContinuationOptions co;

@@ -23,9 +23,13 @@ namespace {
 
 using namespace orni;
 
+VehicleDefinition efwFile() {
+  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                  "/studies/vehicles/efw_magpie.toml");
+}
+
 VehicleModel efwFlexible() {
-  VehicleModel v =
-      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  VehicleModel v = efwFile().model;
   v.wing.structure = StructureLevel::kFlexible;
   return v;
 }
@@ -51,6 +55,7 @@ void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
   VehicleModel v = efwFlexible();
   if (state.range(1) > 0) v.wing.fe.max_modes = static_cast<int>(state.range(1));
   const FlightCoreModel model(v);
+  const OperatingPoint point = efwFile().design_point;
   SimulationOptions opts;
   opts.cycles = 10;
   opts.record_history = false;
@@ -58,7 +63,7 @@ void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
       state.range(0) == 0 ? ModalIntegration::kImplicit : ModalIntegration::kExplicit;
   long evals = 0;
   for (auto _ : state) {
-    const SimulationSummary s = simulateTethered(model, v.operating_point, opts, nullptr);
+    const SimulationSummary s = simulateTethered(model, point, opts, nullptr);
     benchmark::DoNotOptimize(s.mean.FV_N);
     evals = s.rhs_evaluations;
   }
@@ -78,7 +83,7 @@ BENCHMARK(BM_TetheredEfwFlexible10Cycles)
 void BM_FlexibleTetheredRhs(benchmark::State& state) {
   const VehicleModel v = efwFlexible();
   const FlightCoreModel model(v);
-  const OperatingPoint& op = v.operating_point;
+  const OperatingPoint op = efwFile().design_point;
   FlexibleTetheredSystem sys(model, *model.flexible,
                              tetheredBodyMotion(op.speed_mps, op.theta_rad),
                              ControlInput{op.freq_hz, op.tail_angle_rad});

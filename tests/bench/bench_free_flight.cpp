@@ -14,8 +14,9 @@ namespace {
 using namespace orni;
 
 void runFree(benchmark::State& state, StructureLevel level, bool periodic_start) {
-  VehicleModel v =
+  VehicleDefinition file =
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+  VehicleModel& v = file.model;
   v.wing.structure = level;
   const FlightCoreModel model(v);
   SimulationOptions opts;
@@ -27,7 +28,7 @@ void runFree(benchmark::State& state, StructureLevel level, bool periodic_start)
   opts.free.periodic_start_cycles = periodic_start ? 40 : 0;
   long evals = 0;
   for (auto _ : state) {
-    const FreeFlightSummary s = simulateFree(model, v.operating_point, opts, nullptr);
+    const FreeFlightSummary s = simulateFree(model, file.design_point, opts, nullptr);
     benchmark::DoNotOptimize(s.verdict.norm_ratio_max);
     evals = s.rhs_evaluations;
     if (s.cycles_run != 10) state.SkipWithError(s.message.c_str());

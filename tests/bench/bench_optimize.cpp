@@ -44,10 +44,12 @@ namespace {
 using namespace orni;
 using namespace orni::opt;
 
-VehicleModel magpie() {
+VehicleDefinition magpieFile() {
   return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
                                   "/studies/vehicles/efw_magpie.toml");
 }
+
+VehicleModel magpie() { return magpieFile().model; }
 
 DesignSpace space(const VehicleModel& v, bool stiffeners) {
   DesignSpace s;
@@ -80,7 +82,7 @@ void evaluate(benchmark::State& state, const Case& c) {
   VehicleModel v = magpie();
   if (c.flexible) v.wing.structure = StructureLevel::kFlexible;
   DesignProblemOptions o;
-  o.trim = defaultTrimOptions(v);
+  o.trim = defaultTrimOptions(magpieFile().design_point);
   o.trim.initial.freq_hz = c.freq_hz;
   constexpr double kDeg = 0.017453292519943295;
   if (c.freq_hz < 10.0) {  // the 6 Hz trim of README.md
@@ -131,7 +133,7 @@ BENCHMARK(BM_DesignEvaluationFlexibleBaseline)->Unit(benchmark::kMillisecond)->I
 void BM_DesignEvaluationPeriodicFloquetWarm(benchmark::State& state) {
   VehicleModel v = magpie();
   DesignProblemOptions o;
-  o.trim = defaultTrimOptions(v);
+  o.trim = defaultTrimOptions(magpieFile().design_point);
   o.trim.initial.freq_hz = 12.0;
   usePeriodicMethod(&o.trim);
   o.constraints.bounded = false;

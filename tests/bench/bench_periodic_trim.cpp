@@ -20,13 +20,15 @@ namespace {
 
 using namespace orni;
 
-VehicleModel magpie() {
+VehicleDefinition magpieFile() {
   return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
                                   "/studies/vehicles/efw_magpie.toml");
 }
 
-TrimOptions periodicOptions(const VehicleModel& v, int multipliers) {
-  TrimOptions o = defaultTrimOptions(v);
+VehicleModel magpie() { return magpieFile().model; }
+
+TrimOptions periodicOptions(const VehicleModel& /*v*/, int multipliers) {
+  TrimOptions o = defaultTrimOptions(magpieFile().design_point);
   o.initial.freq_hz = 12.0;
   usePeriodicMethod(&o);
   o.verify_free_flight = false;
@@ -68,6 +70,7 @@ void BM_FloquetLeadingAtOrbit(benchmark::State& state) {
   FreeFlightPeriodMapOptions mo;
   mo.rel_tol = o.periodic.rel_tol;
   mo.friction_speed_mps = t.friction_speed_mps;
+  mo.design_point = o.design_point;  // as the trim's map
   FreeFlightPeriodMap map(model, mo);
   const std::vector<double> p = FreeFlightPeriodMap::parameters(t.solution);
   std::string why;

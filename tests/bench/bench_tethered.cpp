@@ -15,7 +15,8 @@ using namespace orni;
 
 VehicleModel rfw(AeroModelKind kind) {
   VehicleModel v =
-      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/rfw_tunnel.toml");
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/rfw_tunnel.toml")
+          .model;
   v.aero.model = kind;
   return v;
 }

@@ -17,10 +17,10 @@ namespace {
 using namespace orni;
 
 void trimEfw(benchmark::State& state, double freq_hz) {
-  const VehicleModel v =
+  const VehicleDefinition file =
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
-  const FlightCoreModel model(v);
-  TrimOptions o = defaultTrimOptions(v);
+  const FlightCoreModel model(file.model);
+  TrimOptions o = defaultTrimOptions(file.design_point);
   o.initial.freq_hz = freq_hz;
   TrimSummary s;
   for (auto _ : state) {

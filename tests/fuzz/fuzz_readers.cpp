@@ -145,7 +145,7 @@ void readStudy(const std::string& text, const toml::table& parsed) {
 }
 
 void readVehicle(const toml::table& root) {
-  orni::VehicleModel v;
+  orni::VehicleDefinition v;
   try {
     v = orni::studies::parseVehicleTable(root, inputPath());
   } catch (const InputError&) {
@@ -155,13 +155,14 @@ void readVehicle(const toml::table& root) {
   if (hasNonFiniteNumber(written)) finding("the vehicle TOML holds a non-finite number");
   try {
     const toml::table again_root = orni::studies::parseTomlText(written, inputPath());
-    const orni::VehicleModel again = orni::studies::parseVehicleTable(again_root, inputPath());
+    const orni::VehicleDefinition again =
+        orni::studies::parseVehicleTable(again_root, inputPath());
     if (orni::studies::vehicleToToml(again) != written)
       finding("the written vehicle does not read back to itself");
   } catch (const InputError& e) {
     finding(std::string("the written vehicle is rejected: ") + e.what());
   }
-  if (insideMagnitudeEnvelope(root)) evaluateVehicle(v, v.operating_point);
+  if (insideMagnitudeEnvelope(root)) evaluateVehicle(v.model, v.design_point);
 }
 
 }  // namespace

@@ -8,9 +8,16 @@
 
 namespace orni::testing {
 
-inline VehicleModel magpieVehicle() {
+/// The file's vehicle and its design point ([operating_point]).
+inline VehicleDefinition magpieDefinition() {
   return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
                                   "/studies/vehicles/efw_magpie.toml");
 }
+
+inline VehicleModel magpieVehicle() { return magpieDefinition().model; }
+
+/// The file's [operating_point]: Table 3's published trim point (12 Hz, 10.8 m/s, 9.2 deg,
+/// tail 11.85 deg).
+inline OperatingPoint magpieDesignPoint() { return magpieDefinition().design_point; }
 
 }  // namespace orni::testing

@@ -19,8 +19,10 @@ inline VehicleModel rfwRig() {
   v.materials.push_back(Material{"CFRP", 135e9, 0.3, 1600.0});
   v.wing.members.push_back(WingMember{"LE", "CFRP", 0.003, 0.0, 0.0, 0.0, 0.27});
   v.flapping.amplitude_rad = 33.06 * kDegToRad;
-  v.operating_point = OperatingPoint{6.0, 4.0, 0.0, 0.0};
   return v;
 }
+
+/// The rig's point of studies/vehicles/rfw_tunnel.toml: 6 m/s, 4 Hz, theta 0.
+inline OperatingPoint rfwRigPoint() { return OperatingPoint{6.0, 4.0, 0.0, 0.0}; }
 
 }  // namespace orni::testing

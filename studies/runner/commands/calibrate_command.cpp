@@ -43,7 +43,8 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
     orni::setValue(&calibrated, o.variables[i].parameter, s.values[i]);
     values.set(orni::keyOf(o.variables[i].parameter), s.values[i]);
   }
-  writeFileAtomic(out_dir / "calibrated_vehicle.toml", vehicleToToml(calibrated));
+  writeFileAtomic(out_dir / "calibrated_vehicle.toml",
+                  vehicleToToml({calibrated, study.design_point}));
 
   JsonObject summary;
   summary.set("kind", "calibrate")

@@ -346,9 +346,9 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
           : kNaN;
 
   // The best design as a vehicle file (its trim point as the operating point).
-  orni::VehicleModel best_vehicle = problem.designVehicle(best->x, best->result);
-  best_vehicle.name = study.name + "_best";
-  best_vehicle.description = "Best design of optimisation '" + study.name + "' (" +
+  orni::VehicleDefinition best_vehicle = problem.designVehicle(best->x, best->result);
+  best_vehicle.model.name = study.name + "_best";
+  best_vehicle.model.description = "Best design of optimisation '" + study.name + "' (" +
                              (s.feasible ? "feasible" : "infeasible: no feasible design found") +
                              ") from vehicle '" + study.vehicle.name +
                              "'; operating point = its trim point";

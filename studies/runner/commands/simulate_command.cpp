@@ -76,7 +76,7 @@ struct SimulationTrim {
 // The trim a simulation flies at ([simulate] at_trim): Eq. (4) refined in free flight at the
 // study's frequency, from the study's point as the initial guess (trim/trim_solver.hpp).
 SimulationTrim trimForSimulation(const Study& study, ModalWingCache* modal_wings) {
-  TrimOptions options = defaultTrimOptions(study.vehicle);
+  TrimOptions options = defaultTrimOptions(study.design_point);
   options.initial = study.point;
   options.verify_free_flight = false;  // the simulation is the check
   const TrimSummary t = solveTrim(

@@ -11,9 +11,10 @@ std::vector<std::string> calibrateSectionKeys() {
           "window_cycles",  "tolerance", "max_iterations", "variables"};
 }
 
-orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::VehicleModel& vehicle) {
+orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::VehicleModel& vehicle,
+                                              const orni::OperatingPoint& design_point) {
   orni::CalibrationOptions o;
-  const orni::OperatingPoint& op = vehicle.operating_point;
+  const orni::OperatingPoint& op = design_point;
   o.target.theta_rad =
       c.optionalDouble(field("calibrate.theta_mean_deg"), op.theta_rad * kRadToDeg) * kDegToRad;
   o.target.speed_mps = c.optionalDouble(field("calibrate.speed_mps"), op.speed_mps);

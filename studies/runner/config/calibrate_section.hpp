@@ -28,8 +28,11 @@
 namespace orni::studies {
 
 std::vector<std::string> calibrateSectionKeys();
+/// Reads [calibrate]; the target defaults to `design_point` (the vehicle file's
+/// [operating_point]), a variable's initial value to `vehicle`'s.
 orni::CalibrationOptions readCalibrateSection(TableReader& section,
-                                              const orni::VehicleModel& vehicle);
+                                              const orni::VehicleModel& vehicle,
+                                              const orni::OperatingPoint& design_point);
 void writeCalibrateSection(const orni::CalibrationOptions& o, TomlWriter& out);
 
 }  // namespace orni::studies

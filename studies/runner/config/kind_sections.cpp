@@ -93,12 +93,12 @@ void readTrimStudy(StudyDocument doc, Study& study) {
   if (continuation) defaultToPeriodicTrim(doc);
   requireBody(doc.top, study, "its mass is the weight to trim");
   if (std::optional<TableReader> trim = doc.top.optionalTable("trim", trimSectionKeys())) {
-    study.trim = readTrimSection(*trim, study.vehicle);
+    study.trim = readTrimSection(*trim, study.design_point);
   } else {
     // No [trim]: the defaults, validated like an empty section.
     toml::table empty;
     TableReader none(empty, "trim", doc.context, trimSectionKeys());
-    study.trim = readTrimSection(none, study.vehicle);
+    study.trim = readTrimSection(none, study.design_point);
   }
   if (!continuation) return;
   TableReader c = doc.top.requiredTable("continuation", continuationSectionKeys());
@@ -116,14 +116,14 @@ void readTrimStudy(StudyDocument doc, Study& study) {
 void readCalibrateStudy(StudyDocument doc, Study& study) {
   requireBody(doc.top, study, "a calibration flies it");
   TableReader c = doc.top.requiredTable("calibrate", calibrateSectionKeys());
-  study.settings = readCalibrateSection(c, study.vehicle);
+  study.settings = readCalibrateSection(c, study.vehicle, study.design_point);
 }
 
 /// [optimize] (required; kind optimize).
 void readOptimizeStudy(StudyDocument doc, Study& study) {
   requireBody(doc.top, study, "its mass is the weight to trim");
   TableReader opt = doc.top.requiredTable("optimize", optimizeSectionKeys());
-  study.settings = readOptimizeSection(opt, study.vehicle);
+  study.settings = readOptimizeSection(opt, study.vehicle, study.design_point);
 }
 
 /// What readKindSections reads, in this order: for each step, the sections that must not be in a

@@ -148,7 +148,8 @@ std::vector<std::string> optimizeSectionKeys() {
           "trim"};
 }
 
-OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& vehicle) {
+OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& vehicle,
+                                     const orni::OperatingPoint& design_point) {
   OptimizeSettings s;
   orni::opt::OptimizerOptions& o = s.optimizer;
   orni::opt::DesignProblemOptions& p = s.problem;
@@ -159,7 +160,7 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
   o.starts = r.optionalInt(field("optimize.starts"), o.starts);
   o.seed = r.optionalInt(field("optimize.seed"), static_cast<int>(o.seed));
   const double freq_hz =
-      r.optionalDouble(field("optimize.freq_hz"), vehicle.operating_point.freq_hz);
+      r.optionalDouble(field("optimize.freq_hz"), design_point.freq_hz);
   o.initial_step = r.optionalDouble(field("optimize.initial_step"), o.initial_step);
   o.xtol = r.optionalDouble(field("optimize.xtol"), o.xtol);
   o.ftol_rel = r.optionalDouble(field("optimize.ftol_rel"), o.ftol_rel);
@@ -235,8 +236,8 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
   }
 
   // The trim of every evaluation: [optimize.trim] without freq_hz (that is optimize.freq_hz).
-  orni::VehicleModel at_freq = vehicle;
-  at_freq.operating_point.freq_hz = freq_hz;
+  orni::OperatingPoint at_freq = design_point;
+  at_freq.freq_hz = freq_hz;
   std::optional<TableReader> trim = r.optionalTable("trim", trimSectionKeys());
   if (trim && trim->has("freq_hz"))
     throw InputError::unknownKey(trim->fileOf("freq_hz"), trim->lineOf("freq_hz"),
@@ -250,6 +251,8 @@ OptimizeSettings readOptimizeSection(TableReader& r, const orni::VehicleModel& v
                      trimSectionKeys());
     p.trim = readTrimSection(none, at_freq);
   }
+  // The design point itself stays the file's (the periodic orbit's tolerance scale).
+  p.trim.design_point = design_point;
   r.finish();
 
   if (p.constraints.floquet_max_modulus > 0.0 &&

@@ -56,9 +56,11 @@ namespace orni::studies {
 /// The keys an [optimize] table may have.
 std::vector<std::string> optimizeSectionKeys();
 
-/// Reads an [optimize] table against `vehicle` (overrides applied). Calls finish(). Throws
+/// Reads an [optimize] table against `vehicle` (overrides applied) and its file's design point
+/// (the default of optimize.freq_hz and of the trim's initial guess). Calls finish(). Throws
 /// InputError.
-OptimizeSettings readOptimizeSection(TableReader& optimize, const orni::VehicleModel& vehicle);
+OptimizeSettings readOptimizeSection(TableReader& optimize, const orni::VehicleModel& vehicle,
+                                     const orni::OperatingPoint& design_point);
 
 /// Writes [optimize] with every key and its sub-tables, so that readOptimizeSection reproduces
 /// `settings`.

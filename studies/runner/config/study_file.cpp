@@ -150,16 +150,18 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
 Study studyFromVehicle(const fs::path& vehicle_file, StudyKind kind) {
   Study study;
   study.kind = kind;
-  study.vehicle = loadVehicleFile(vehicle_file);
+  orni::VehicleDefinition definition = loadVehicleFile(vehicle_file);
+  study.vehicle = std::move(definition.model);
+  study.design_point = definition.design_point;
   study.name = runNameFromStem(vehicle_file);
   study.vehicle_path = vehicle_file;
-  study.point = study.vehicle.operating_point;
+  study.point = study.design_point;
   if (kind == StudyKind::kSimulate) study.settings.emplace<SimulateSettings>();
   if (kind == StudyKind::kTrim) {
     if (!study.vehicle.body.present)
       throw InputError::missingKey(displayPath(vehicle_file), 0, "body",
                                    "a [body] table: a trim needs the vehicle's mass");
-    study.trim = orni::defaultTrimOptions(study.vehicle);
+    study.trim = orni::defaultTrimOptions(study.design_point);
   }
   return study;
 }
@@ -233,7 +235,7 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
   if (kind == StudyKind::kContinuation) writeContinuationSection(study.continuation(), out);
   if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate(), out);
   if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize(), out);
-  writeVehicleToml(study.vehicle, out, {"vehicle"});
+  writeVehicleToml({study.vehicle, study.design_point}, out, {"vehicle"});
 }
 
 }  // namespace orni::studies

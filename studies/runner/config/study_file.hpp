@@ -223,8 +223,11 @@ struct Study {
                                        ///< studyFromVehicle; empty for an inline vehicle
                                        ///< without vehicle_source
   orni::VehicleModel vehicle;          ///< resolved, overrides applied, SI
-  /// The vehicle's operating point, with [simulate] applied for kind simulate (the simulation's
-  /// point; the other kinds' runs do not read it, their defaults come from the vehicle).
+  /// The vehicle file's design point ([operating_point], overrides applied, SI): the default of
+  /// `point` and of the trim's initial guess; not part of `vehicle` (VehicleDefinition).
+  orni::OperatingPoint design_point;
+  /// The design point with [simulate] applied for kind simulate (the simulation's point; the
+  /// other kinds' runs do not read it, their defaults come from the design point).
   orni::OperatingPoint point;
   orni::TrimOptions trim;              ///< [trim] options (kinds trim and continuation, the
                                        ///< base of a trim sweep, sensitivity points; SI)
@@ -271,7 +274,7 @@ GridAxis gridAxis(const orni::GridSpec& spec);
 Study loadStudyFile(const std::filesystem::path& study_file);
 
 /// The study behind `ornithopter simulate VEHICLE.toml` (and `trim VEHICLE.toml` with kind trim):
-/// name = the vehicle file stem, point = the vehicle's operating point, default options (for trim:
+/// name = the vehicle file stem, point = the vehicle file's design point, default options (for trim:
 /// defaultTrimOptions, not yet validated against the bounds; the caller applies its flags and
 /// checks TrimOptions::IsValid). Throws InputError (also for a trim of a vehicle without [body]).
 Study studyFromVehicle(const std::filesystem::path& vehicle_file,

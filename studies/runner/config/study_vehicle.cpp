@@ -98,8 +98,11 @@ void readStudyVehicle(StudyDocument doc, const fs::path& study_file, Study& stud
       throw top.valueError("override", "a table [override] of vehicle keys", describeNode(*o));
     mergeOverride(vehicle.table, *ot);
   }
-  study.vehicle = parseVehicleTable(vehicle.table, vehicle.context, vehicle_root_path);
-  study.point = study.vehicle.operating_point;
+  orni::VehicleDefinition definition =
+      parseVehicleTable(vehicle.table, vehicle.context, vehicle_root_path);
+  study.vehicle = std::move(definition.model);
+  study.design_point = definition.design_point;
+  study.point = study.design_point;
 }
 
 }  // namespace orni::studies

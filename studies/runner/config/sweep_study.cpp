@@ -272,14 +272,17 @@ std::vector<const AnalysisField*> writtenFields(const Study& study, StudyKind ru
 
 /// The keys of the base's sections that vary between points although no axis sets them, in the
 /// order of the resolved sections. Compared by value: the run's analysis section ([trim],
-/// [simulate]) through analysis_fields.hpp's getters, the vehicle's numbers through the field
-/// table's accessors (core/model/vehicle_fields.hpp).
+/// [simulate]) through analysis_fields.hpp's getters, the vehicle's numbers and its design point
+/// through the field table's accessors (core/model/vehicle_fields.hpp).
 std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>& points,
                                      StudyKind run, const std::vector<AxisInput>& axes) {
   const std::vector<const AnalysisField*> base_fields = writtenFields(base, run);
   const std::vector<VehicleLine> base_vehicle = vehicleLines(base.vehicle);
   std::vector<bool> varies(base_fields.size(), false);
   std::vector<bool> vehicle_varies(base_vehicle.size(), false);
+  // The design point ([vehicle.operating_point]) is written last, after the vehicle's numbers.
+  const std::vector<orni::DesignPointNumber>& point_numbers = orni::designPointNumbers();
+  std::vector<bool> point_varies(point_numbers.size(), false);
   for (const Study& p : points) {
     // A point of another shape is reported by the loader's self-check.
     if (writtenFields(p, run) != base_fields) continue;
@@ -289,6 +292,9 @@ std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>
     for (std::size_t i = 0; i < base_vehicle.size(); ++i)
       for (const orni::VehicleNumberRef& n : base_vehicle[i].numbers)
         if (!sameValue(n.get(p.vehicle), n.get(base.vehicle))) vehicle_varies[i] = true;
+    for (std::size_t i = 0; i < point_numbers.size(); ++i)
+      if (!sameValue(point_numbers[i].get(p.design_point), point_numbers[i].get(base.design_point)))
+        point_varies[i] = true;
   }
   std::vector<std::string> swept;
   for (const AxisInput& a : axes) swept.push_back(resolvedPath(a.axis, run));
@@ -302,6 +308,8 @@ std::vector<std::string> derivedKeys(const Study& base, const std::vector<Study>
     if (varies[i]) note(std::string(base_fields[i]->key));
   for (std::size_t i = 0; i < base_vehicle.size(); ++i)
     if (vehicle_varies[i]) note(base_vehicle[i].path);
+  for (std::size_t i = 0; i < point_numbers.size(); ++i)
+    if (point_varies[i]) note("vehicle." + std::string(point_numbers[i].key));
   return derived;
 }
 

@@ -120,8 +120,8 @@ void rejectPeriodicMethod(TableReader& trim, const std::string& where) {
                           "\"periodic\"");
 }
 
-orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle) {
-  TrimOptions o = orni::defaultTrimOptions(vehicle);
+orni::TrimOptions readTrimSection(TableReader& trim, const orni::OperatingPoint& design_point) {
+  TrimOptions o = orni::defaultTrimOptions(design_point);
   const std::vector<std::string> names = unknownNames();
   if (trim.optionalEnum("method", orni::TrimMethod::kTwoStage, methodChoices()) ==
       orni::TrimMethod::kPeriodic)

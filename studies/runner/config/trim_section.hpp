@@ -58,9 +58,10 @@ std::vector<std::string> trimSectionKeys();
 /// (e.g. "a sweep") cannot run yet.
 void rejectPeriodicMethod(TableReader& trim, const std::string& where);
 
-/// Reads a [trim] table; `vehicle` supplies the defaults of the initial guess and the frequency.
-/// Calls trim.finish(). Throws InputError.
-orni::TrimOptions readTrimSection(TableReader& trim, const orni::VehicleModel& vehicle);
+/// Reads a [trim] table; `design_point` (the vehicle file's [operating_point]) supplies the
+/// defaults of the initial guess and the frequency, and TrimOptions::design_point. Calls
+/// trim.finish(). Throws InputError.
+orni::TrimOptions readTrimSection(TableReader& trim, const orni::OperatingPoint& design_point);
 
 /// Writes [trim] (or the table `prefix`, e.g. {"optimize", "trim"}) with every key (initial and
 /// bounds as sub-tables), so that readTrimSection reproduces `options`; freq_hz only when

@@ -271,13 +271,14 @@ InputError problemError(const toml::table& root, const std::shared_ptr<const Rea
 
 }  // namespace
 
-VehicleModel parseVehicleTable(const toml::table& root, const ReadContext& context,
-                               const std::string& root_path) {
+VehicleDefinition parseVehicleTable(const toml::table& root, const ReadContext& context,
+                                    const std::string& root_path) {
   auto ctx = std::make_shared<const ReadContext>(context);
   TableReader top(root, root_path, ctx,
                   {"name", "description", "air", "wing", "materials", "aero", "kinematics", "body",
                    "tail", "operating_point"});
-  VehicleModel v;
+  VehicleDefinition definition;
+  VehicleModel& v = definition.model;
   v.name = top.requiredString("name");
   v.description = top.optionalString("description", "", true);
 
@@ -336,7 +337,7 @@ VehicleModel parseVehicleTable(const toml::table& root, const ReadContext& conte
   {
     TableReader op = top.requiredTable("operating_point",
                                        {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg"});
-    OperatingPoint& p = v.operating_point;
+    OperatingPoint& p = definition.design_point;
     p.speed_mps = op.requiredDouble(field("operating_point.speed_mps"));
     p.freq_hz = op.requiredDouble(field("operating_point.freq_hz"));
     p.theta_rad = op.requiredDouble(field("operating_point.theta_deg")) * kDeg;
@@ -347,19 +348,19 @@ VehicleModel parseVehicleTable(const toml::table& root, const ReadContext& conte
   top.finish();
   // The rules that tie keys together (and every range once more): core's model checks, reported
   // at the file, line and key they concern.
-  const std::vector<orni::ModelProblem> problems = orni::vehicleProblems(v);
+  const std::vector<orni::ModelProblem> problems = orni::definitionProblems(definition);
   if (!problems.empty()) throw problemError(root, ctx, root_path, problems.front());
-  return v;
+  return definition;
 }
 
-VehicleModel parseVehicleTable(const toml::table& root,
-                               const std::filesystem::path& file_for_messages) {
+VehicleDefinition parseVehicleTable(const toml::table& root,
+                                    const std::filesystem::path& file_for_messages) {
   ReadContext context;
   context.file = displayPath(file_for_messages);
   return parseVehicleTable(root, context, std::string());
 }
 
-VehicleModel loadVehicleFile(const std::filesystem::path& file) {
+VehicleDefinition loadVehicleFile(const std::filesystem::path& file) {
   const toml::table root = parseTomlFile(file);
   if (const toml::node* kind = root.get("kind"))
     throw InputError::unknownKey(displayPath(file), static_cast<int>(kind->source().begin.line),
@@ -369,8 +370,9 @@ VehicleModel loadVehicleFile(const std::filesystem::path& file) {
   return parseVehicleTable(root, file);
 }
 
-void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
+void writeVehicleToml(const VehicleDefinition& definition, TomlWriter& out,
                       const std::vector<std::string>& prefix) {
+  const VehicleModel& v = definition.model;
   auto path = [&prefix](std::vector<std::string> parts) {
     std::vector<std::string> p = prefix;
     p.insert(p.end(), parts.begin(), parts.end());
@@ -466,7 +468,7 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
     out.number("downwash_factor", t.downwash_factor);
   }
 
-  const OperatingPoint& p = v.operating_point;
+  const OperatingPoint& p = definition.design_point;
   out.header(path({"operating_point"}));
   out.number("speed_mps", p.speed_mps);
   out.number("freq_hz", p.freq_hz);
@@ -474,9 +476,9 @@ void writeVehicleToml(const VehicleModel& v, TomlWriter& out,
   out.scaled("tail_angle_deg", p.tail_angle_rad, kDeg);
 }
 
-std::string vehicleToToml(const VehicleModel& vehicle) {
+std::string vehicleToToml(const VehicleDefinition& vehicle) {
   TomlWriter out;
-  out.comment("Vehicle " + vehicle.name + ", every value resolved (units in the key suffixes).");
+  out.comment("Vehicle " + vehicle.model.name + ", every value resolved (units in the key suffixes).");
   writeVehicleToml(vehicle, out, {});
   return out.str();
 }

@@ -100,9 +100,10 @@ TEST_F(CommandsOptimize, SameBytesForAnyThreadCount) {
     EXPECT_NE(summary.find(key), std::string::npos) << key;
 
   // The best design is a vehicle file whose operating point is its trim point.
-  const VehicleModel best = loadVehicleFile(dir_ / "j1" / "best_vehicle.toml");
+  const VehicleDefinition best_file = loadVehicleFile(dir_ / "j1" / "best_vehicle.toml");
+  const VehicleModel& best = best_file.model;
   EXPECT_EQ(best.name, "small_best");
-  EXPECT_EQ(best.operating_point.freq_hz, 12.0);
+  EXPECT_EQ(best_file.design_point.freq_hz, 12.0);
 }
 
 TEST_F(CommandsOptimize, ResumesAnInterruptedRunWithTheSameBytes) {

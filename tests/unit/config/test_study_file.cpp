@@ -68,7 +68,7 @@ TEST_F(ConfigStudyFile, LoadsExampleStudy) {
   EXPECT_DOUBLE_EQ(s.point.theta_rad, 20.0 * kDegToRad);
   EXPECT_DOUBLE_EQ(s.point.speed_mps, 6.0);  // from the vehicle's operating point
   EXPECT_DOUBLE_EQ(s.point.freq_hz, 4.0);
-  EXPECT_DOUBLE_EQ(s.vehicle.operating_point.theta_rad, 0.0);  // the vehicle is not changed
+  EXPECT_DOUBLE_EQ(s.design_point.theta_rad, 0.0);  // the vehicle is not changed
 }
 
 TEST_F(ConfigStudyFile, LoadsPaperStudies) {
@@ -90,7 +90,7 @@ TEST_F(ConfigStudyFile, DefaultsAndNameFromStem) {
   const Study s = loadStudyFile(f);
   EXPECT_EQ(s.kind, StudyKind::kTrim);
   EXPECT_EQ(s.name, "my_trim");
-  EXPECT_EQ(s.point.theta_rad, s.vehicle.operating_point.theta_rad);
+  EXPECT_EQ(s.point.theta_rad, s.design_point.theta_rad);
   // A trim study has no [simulate] settings (its settings are the shared `trim`).
   EXPECT_TRUE(std::holds_alternative<std::monostate>(s.settings));
   EXPECT_THROW((void)s.simulate(), std::logic_error);
@@ -119,7 +119,7 @@ cycles = 20
 rel_tol = 1e-7
 )");
   const Study s = loadStudyFile(f);
-  const VehicleModel base = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  const VehicleModel base = loadVehicleFile(vehiclePath("efw_magpie.toml")).model;
   EXPECT_DOUBLE_EQ(s.vehicle.tail.arm_m, 0.2);
   EXPECT_DOUBLE_EQ(s.vehicle.tail.area_m2, base.tail.area_m2);  // siblings kept
   EXPECT_EQ(s.vehicle.aero.model, AeroModelKind::kDeLaurier1993);
@@ -226,7 +226,7 @@ steady_tol = 2e-3
   // The tail defaults to the vehicle's operating point (11.85 deg), exactly in SI.
   ASSERT_EQ(a.tail_angle_deg.values.size(), 1u);
   EXPECT_EQ(a.tail_angle_deg.values[0], 11.85);
-  EXPECT_EQ(a.tail_angle_deg.values[0] * kDegToRad, s.vehicle.operating_point.tail_angle_rad);
+  EXPECT_EQ(a.tail_angle_deg.values[0] * kDegToRad, s.design_point.tail_angle_rad);
   EXPECT_EQ(a.options.cycles, 25);
   EXPECT_EQ(a.options.steady_tol, 2e-3);
   EXPECT_TRUE(a.options.stop_when_steady);
@@ -343,7 +343,7 @@ TEST_F(ConfigStudyFile, StudyFromVehicle) {
   EXPECT_EQ(s.name, "efw_magpie");
   EXPECT_EQ(s.vehicle.name, "efw_magpie");
   EXPECT_EQ(s.point.freq_hz, 12.0);
-  EXPECT_EQ(s.point.tail_angle_rad, s.vehicle.operating_point.tail_angle_rad);
+  EXPECT_EQ(s.point.tail_angle_rad, s.design_point.tail_angle_rad);
   EXPECT_EQ(s.simulate().options.cycles, SimulationOptions{}.cycles);
   EXPECT_EQ(s.vehicle_path, vehiclePath("efw_magpie.toml"));
 }
@@ -352,7 +352,8 @@ void expectSameStudy(const Study& a, const Study& b) {
   EXPECT_EQ(a.kind, b.kind);
   EXPECT_EQ(a.name, b.name);
   EXPECT_EQ(a.vehicle_path, b.vehicle_path);
-  EXPECT_EQ(vehicleToToml(a.vehicle), vehicleToToml(b.vehicle));  // exact (writer test)
+  EXPECT_EQ(vehicleToToml({a.vehicle, a.design_point}),
+            vehicleToToml({b.vehicle, b.design_point}));  // exact (writer test)
   EXPECT_EQ(a.point.speed_mps, b.point.speed_mps);
   EXPECT_EQ(a.point.freq_hz, b.point.freq_hz);
   EXPECT_EQ(a.point.theta_rad, b.point.theta_rad);
@@ -397,9 +398,10 @@ steady_tol = 3e-5
     // The [vehicle] part alone reproduces the vehicle through parseVehicleTable.
     const toml::table doc = toml::parse(std::string_view(text), std::string("resolved.toml"));
     ASSERT_NE(doc.get_as<toml::table>("vehicle"), nullptr);
-    const VehicleModel v = parseVehicleTable(*doc.get_as<toml::table>("vehicle"), "resolved.toml");
-    EXPECT_EQ(vehicleToToml(v), vehicleToToml(s.vehicle));
-    EXPECT_EQ(v.tail.arm_m, s.vehicle.tail.arm_m);
+    const VehicleDefinition v =
+        parseVehicleTable(*doc.get_as<toml::table>("vehicle"), "resolved.toml");
+    EXPECT_EQ(vehicleToToml(v), vehicleToToml({s.vehicle, s.design_point}));
+    EXPECT_EQ(v.model.tail.arm_m, s.vehicle.tail.arm_m);
 
     // The whole document is itself a study that loads into the same Study.
     const fs::path again = writeStudy("study.resolved.toml", text);

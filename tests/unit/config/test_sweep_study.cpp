@@ -230,7 +230,7 @@ axes = [{ key = "operating_point.freq_hz", values = "6:8:3" }, { key = "tail.arm
     EXPECT_EQ(b.trim.initial.freq_hz, a.trim.initial.freq_hz);
     EXPECT_EQ(b.trim.initial.speed_mps, a.trim.initial.speed_mps);
     EXPECT_EQ(b.vehicle.tail.arm_m, a.vehicle.tail.arm_m);
-    EXPECT_EQ(b.vehicle.operating_point.freq_hz, a.vehicle.operating_point.freq_hz);
+    EXPECT_EQ(b.design_point.freq_hz, a.design_point.freq_hz);
   }
 }
 

@@ -24,7 +24,9 @@ fs::path vehiclePath(const std::string& name) {
 }
 
 /// Field-by-field exact equality of two models (doubles compared with ==).
-void expectSameVehicle(const VehicleModel& a, const VehicleModel& b) {
+void expectSameVehicle(const VehicleDefinition& file_a, const VehicleDefinition& file_b) {
+  const VehicleModel& a = file_a.model;
+  const VehicleModel& b = file_b.model;
   EXPECT_EQ(a.name, b.name);
   EXPECT_EQ(a.description, b.description);
   EXPECT_EQ(a.air.density_kgpm3, b.air.density_kgpm3);
@@ -92,14 +94,15 @@ void expectSameVehicle(const VehicleModel& a, const VehicleModel& b) {
   EXPECT_EQ(a.tail.height_m, b.tail.height_m);
   EXPECT_EQ(a.tail.mass_kg, b.tail.mass_kg);
   EXPECT_EQ(a.tail.downwash_factor, b.tail.downwash_factor);
-  EXPECT_EQ(a.operating_point.speed_mps, b.operating_point.speed_mps);
-  EXPECT_EQ(a.operating_point.freq_hz, b.operating_point.freq_hz);
-  EXPECT_EQ(a.operating_point.theta_rad, b.operating_point.theta_rad);
-  EXPECT_EQ(a.operating_point.tail_angle_rad, b.operating_point.tail_angle_rad);
+  EXPECT_EQ(file_a.design_point.speed_mps, file_b.design_point.speed_mps);
+  EXPECT_EQ(file_a.design_point.freq_hz, file_b.design_point.freq_hz);
+  EXPECT_EQ(file_a.design_point.theta_rad, file_b.design_point.theta_rad);
+  EXPECT_EQ(file_a.design_point.tail_angle_rad, file_b.design_point.tail_angle_rad);
 }
 
 TEST(ConfigVehicleFile, LoadsEfwMagpieInSi) {
-  const VehicleModel v = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  const VehicleDefinition file = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  const VehicleModel& v = file.model;
   EXPECT_EQ(v.name, "efw_magpie");
   EXPECT_DOUBLE_EQ(v.air.density_kgpm3, 1.225);
   EXPECT_DOUBLE_EQ(v.air.kinematic_viscosity_m2ps, 1.5e-5);
@@ -176,14 +179,15 @@ TEST(ConfigVehicleFile, LoadsEfwMagpieInSi) {
   EXPECT_DOUBLE_EQ(v.tail.mass_kg, 0.0015);
   EXPECT_DOUBLE_EQ(v.tail.downwash_factor, 0.0);
 
-  EXPECT_DOUBLE_EQ(v.operating_point.speed_mps, 10.8);
-  EXPECT_DOUBLE_EQ(v.operating_point.freq_hz, 12.0);
-  EXPECT_DOUBLE_EQ(v.operating_point.theta_rad, 9.2 * kDegToRad);
-  EXPECT_DOUBLE_EQ(v.operating_point.tail_angle_rad, 11.85 * kDegToRad);
+  EXPECT_DOUBLE_EQ(file.design_point.speed_mps, 10.8);
+  EXPECT_DOUBLE_EQ(file.design_point.freq_hz, 12.0);
+  EXPECT_DOUBLE_EQ(file.design_point.theta_rad, 9.2 * kDegToRad);
+  EXPECT_DOUBLE_EQ(file.design_point.tail_angle_rad, 11.85 * kDegToRad);
 }
 
 TEST(ConfigVehicleFile, LoadsRfwTunnelWithDefaults) {
-  const VehicleModel v = loadVehicleFile(vehiclePath("rfw_tunnel.toml"));
+  const VehicleDefinition file = loadVehicleFile(vehiclePath("rfw_tunnel.toml"));
+  const VehicleModel& v = file.model;
   EXPECT_EQ(v.name, "rfw_tunnel");
   EXPECT_EQ(v.wing.planform, Planform::kRectangular);
   EXPECT_DOUBLE_EQ(v.wing.root_chord_m, 0.0967742);
@@ -198,18 +202,18 @@ TEST(ConfigVehicleFile, LoadsRfwTunnelWithDefaults) {
   ASSERT_NE(v.findMaterial("CFRP"), nullptr);
   EXPECT_DOUBLE_EQ(v.findMaterial("CFRP")->youngs_modulus_pa, 135e9);
   EXPECT_DOUBLE_EQ(v.findMaterial("RIPSTOP")->youngs_modulus_pa, 2e9);
-  EXPECT_DOUBLE_EQ(v.operating_point.speed_mps, 6.0);
-  EXPECT_DOUBLE_EQ(v.operating_point.freq_hz, 4.0);
-  EXPECT_DOUBLE_EQ(v.operating_point.theta_rad, 0.0);
+  EXPECT_DOUBLE_EQ(file.design_point.speed_mps, 6.0);
+  EXPECT_DOUBLE_EQ(file.design_point.freq_hz, 4.0);
+  EXPECT_DOUBLE_EQ(file.design_point.theta_rad, 0.0);
 }
 
 TEST(ConfigVehicleFile, WriterRoundTripsExactly) {
   for (const char* name : {"efw_magpie.toml", "rfw_tunnel.toml"}) {
     SCOPED_TRACE(name);
-    const VehicleModel v = loadVehicleFile(vehiclePath(name));
+    const VehicleDefinition v = loadVehicleFile(vehiclePath(name));
     const std::string text = vehicleToToml(v);
     const toml::table t = toml::parse(std::string_view(text), std::string("resolved.toml"));
-    const VehicleModel back = parseVehicleTable(t, "resolved.toml");
+    const VehicleDefinition back = parseVehicleTable(t, "resolved.toml");
     expectSameVehicle(v, back);
     EXPECT_EQ(vehicleToToml(back), text);  // idempotent
     // Values appear in file units with their short decimal form.
@@ -219,10 +223,10 @@ TEST(ConfigVehicleFile, WriterRoundTripsExactly) {
 
 TEST(ConfigVehicleFile, WriterRoundTripsModelDefaults) {
   // The struct defaults in radians (not written by a file) survive the degree conversion.
-  VehicleModel v = loadVehicleFile(vehiclePath("rfw_tunnel.toml"));
-  v.aero = AeroParameters{};
-  v.wing.incidence_rad = 0.1;
-  v.operating_point.theta_rad = -0.3;
+  VehicleDefinition v = loadVehicleFile(vehiclePath("rfw_tunnel.toml"));
+  v.model.aero = AeroParameters{};
+  v.model.wing.incidence_rad = 0.1;
+  v.design_point.theta_rad = -0.3;
   const std::string text = vehicleToToml(v);
   const toml::table t = toml::parse(std::string_view(text), std::string("resolved.toml"));
   expectSameVehicle(v, parseVehicleTable(t, "resolved.toml"));
@@ -230,14 +234,15 @@ TEST(ConfigVehicleFile, WriterRoundTripsModelDefaults) {
 
 TEST(ConfigVehicleFile, WingFeSettingsRoundTrip) {
   // Non-default [wing.fe] values survive writing and reading; the table is always written.
-  VehicleModel v = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  VehicleDefinition file = loadVehicleFile(vehiclePath("efw_magpie.toml"));
+  VehicleModel& v = file.model;
   v.wing.fe.element_size_m = 0.0035;
   v.wing.fe.max_modes = 37;
   v.wing.fe.cutoff_hz = 240.5;
   v.wing.fe.damping_ratio = 0.02;
   v.wing.fe.p3_cross_axis_normal = false;
   v.wing.fe.inertial_stiffness = InertialStiffness::kSofteningOnly;
-  const std::string text = vehicleToToml(v);
+  const std::string text = vehicleToToml(file);
   EXPECT_NE(text.find("[wing.fe]\nelement_size_m = 0.0035\nmodes = 37\ncutoff_hz = 240.5\n"
                       "damping_ratio = 0.02\np3_cross_axis = \"span\"\n"
                       "p3_joint = \"universal\"\nroot_edge = \"free\"\n"
@@ -245,8 +250,8 @@ TEST(ConfigVehicleFile, WingFeSettingsRoundTrip) {
             std::string::npos)
       << text;
   const toml::table t = toml::parse(std::string_view(text), std::string("resolved.toml"));
-  const VehicleModel back = parseVehicleTable(t, "resolved.toml");
-  expectSameVehicle(v, back);
+  const VehicleDefinition back = parseVehicleTable(t, "resolved.toml");
+  expectSameVehicle(file, back);
   EXPECT_EQ(vehicleToToml(back), text);
 }
 
@@ -272,7 +277,7 @@ freq_hz = 4.0
 theta_deg = 0.0
 )";
   const toml::table t = toml::parse(std::string_view(text), std::string("mem.toml"));
-  const VehicleModel v = parseVehicleTable(t, "mem.toml");
+  const VehicleModel v = parseVehicleTable(t, "mem.toml").model;
   const WingFeSettings d;
   EXPECT_EQ(v.wing.fe.element_size_m, d.element_size_m);
   EXPECT_EQ(v.wing.fe.max_modes, d.max_modes);

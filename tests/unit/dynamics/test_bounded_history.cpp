@@ -94,9 +94,10 @@ struct FreeRecord : FreeFlightObserver {
 
 TEST(DynamicsBoundedHistory, FreeFlightAnalysesOnTheWayWhatTheWholeHistoryGives) {
   // The frozen rigid-wing magpie (it flies bounded at the paper's trim point).
-  const VehicleModel v = studies::loadVehicleFile(
+  const VehicleDefinition file = studies::loadVehicleFile(
       std::string(ORNI_SOURCE_DIR) + "/tests/data/sensitivity/magpie_rigid_fixture.toml");
-  const FlightCoreModel model(v);
+  const FlightCoreModel model(file.model);
+  const OperatingPoint& point = file.design_point;
   SimulationOptions o;
   o.mode = FlightMode::kFree;
   o.cycles = 30;
@@ -106,7 +107,7 @@ TEST(DynamicsBoundedHistory, FreeFlightAnalysesOnTheWayWhatTheWholeHistoryGives)
   FreeFlightHistory kept;
   kept.keep_cycles = 2;
   FreeRecord all;
-  const FreeFlightSummary s = simulateFree(model, v.operating_point, o, &kept, &all);
+  const FreeFlightSummary s = simulateFree(model, point, o, &kept, &all);
   ASSERT_EQ(s.status, SimulationStatus::kOk) << s.message;
   ASSERT_TRUE(s.analysed);
   const std::size_t spc = 20, n = 30 * spc + 1;
@@ -119,7 +120,7 @@ TEST(DynamicsBoundedHistory, FreeFlightAnalysesOnTheWayWhatTheWholeHistoryGives)
   // The verdict of the whole stored history after the transient, bit for bit.
   const BodyState& r = s.initial;
   const FreeFlightBounds& b = o.free.bounds;
-  const double R_Q = 2.0 * kPi * v.operating_point.freq_hz * b.theta_rad;
+  const double R_Q = 2.0 * kPi * point.freq_hz * b.theta_rad;
   const BoundedNormResult whole =
       boundedNorm(all.t_s,
                   {{&all.U, r.U_mps, b.U_mps, "U"},
@@ -135,11 +136,11 @@ TEST(DynamicsBoundedHistory, FreeFlightAnalysesOnTheWayWhatTheWholeHistoryGives)
   // Theta extremes over every judged cycle; the rest over the last 10 cycles.
   const LimitCycleMetrics judged =
       analyseLimitCycle(all.t_s, all.delta, all.theta, all.h, 6 * spc, 20,
-                        v.operating_point.freq_hz);
+                        point.freq_hz);
   EXPECT_EQ(s.limit_cycle.theta_min_rad, judged.theta_min_rad);
   EXPECT_EQ(s.limit_cycle.theta_max_rad, judged.theta_max_rad);
   const LimitCycleMetrics last10 = analyseLimitCycle(
-      all.t_s, all.delta, all.theta, all.h, 20 * spc, 20, v.operating_point.freq_hz);
+      all.t_s, all.delta, all.theta, all.h, 20 * spc, 20, point.freq_hz);
   EXPECT_EQ(s.limit_cycle.altitude_p2p_fast_m, last10.altitude_p2p_fast_m);
   EXPECT_EQ(s.limit_cycle.altitude_p2p_slow_m, last10.altitude_p2p_slow_m);
   EXPECT_EQ(s.limit_cycle.climb_rate_mps, last10.climb_rate_mps);

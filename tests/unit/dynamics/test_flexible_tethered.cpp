@@ -18,9 +18,17 @@ namespace {
 /// Analytic-limit vehicles (outside the physical ranges on purpose) skip core's model checks.
 constexpr FlightCoreModel::Checks kLimitTest = FlightCoreModel::Checks::kSkippedForLimitTests;
 
+/// The file's design point ([operating_point]: Table 3's published trim point).
+OperatingPoint efwPoint() {
+  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                  "/studies/vehicles/efw_magpie.toml")
+      .design_point;
+}
+
 VehicleModel efw(StructureLevel level) {
   VehicleModel v =
-      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml")
+          .model;
   v.wing.structure = level;
   v.wing.fe.element_size_m = 0.01;  // coarse mesh: fast test
   v.wing.fe.max_modes = 6;
@@ -32,7 +40,7 @@ SimulationSummary run(const VehicleModel& v,
   const FlightCoreModel model(v, checks);
   SimulationOptions opts;
   opts.cycles = 6;
-  return simulateTethered(model, v.operating_point, opts, nullptr);
+  return simulateTethered(model, efwPoint(), opts, nullptr);
 }
 
 TEST(DynamicsFlexibleTethered, RunsToAPeriodicStateAndDiffersFromTheRigidWing) {
@@ -59,8 +67,8 @@ TEST(DynamicsFlexibleTethered, StiffWingApproachesTheRigidWing) {
   const SimulationSummary rigid = run(efw(StructureLevel::kRigid));
   ASSERT_EQ(flex.status, SimulationStatus::kOk) << flex.message;
   EXPECT_NEAR(flex.mean.FV_N, rigid.mean.FV_N, 0.02 * std::abs(rigid.mean.FV_N));
-  const double q_S = 0.5 * stiff.air.density_kgpm3 * stiff.operating_point.speed_mps *
-                     stiff.operating_point.speed_mps *
+  const double q_S = 0.5 * stiff.air.density_kgpm3 * efwPoint().speed_mps *
+                     efwPoint().speed_mps *
                      FlightCoreModel(stiff, kLimitTest).wing_area_both_m2;
   EXPECT_NEAR(flex.mean.FH_N, rigid.mean.FH_N,
               0.02 * std::abs(rigid.mean.FH_N) + SimulationOptions{}.steady_tol * q_S);
@@ -187,18 +195,20 @@ TEST(DynamicsFlexibleTethered, InertialStiffnessModelsDifferByTheirMatrices) {
 // mesh moves FV by 0.02 %.
 TEST(DynamicsFlexibleTethered, CycleMeansConvergeInModeCountAndMeshSize) {
   VehicleModel base =
-      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
+      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml")
+          .model;
   ASSERT_EQ(base.wing.structure, StructureLevel::kFlexible);
-  base.operating_point.theta_rad = 16.35 * kDegToRad;
-  base.operating_point.speed_mps = 16.32;
-  base.operating_point.tail_angle_rad = 19.98 * kDegToRad;
-  base.operating_point.freq_hz = 12.0;
-  auto means = [](const VehicleModel& v) {
+  OperatingPoint point;
+  point.theta_rad = 16.35 * kDegToRad;
+  point.speed_mps = 16.32;
+  point.tail_angle_rad = 19.98 * kDegToRad;
+  point.freq_hz = 12.0;
+  auto means = [&point](const VehicleModel& v) {
     const FlightCoreModel model(v);
     SimulationOptions opts;
     opts.cycles = 10;
     opts.record_history = false;
-    const SimulationSummary s = simulateTethered(model, v.operating_point, opts, nullptr);
+    const SimulationSummary s = simulateTethered(model, point, opts, nullptr);
     EXPECT_EQ(s.status, SimulationStatus::kOk) << s.message;
     return s.mean;
   };

@@ -138,7 +138,7 @@ void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>
 TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
   const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
-  const OperatingPoint& p = v.operating_point;
+  const OperatingPoint p = testing::magpieDesignPoint();
   FlexibleTetheredSystem sys(model, *model.flexible, tetheredBodyMotion(p.speed_mps, p.theta_rad),
                              ControlInput{p.freq_hz, p.tail_angle_rad});
   const int n = sys.stateCount();
@@ -150,7 +150,7 @@ TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
 TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
   const VehicleModel v = testing::magpieVehicle();
   const FlightCoreModel model(v);
-  const OperatingPoint& p = v.operating_point;
+  const OperatingPoint p = testing::magpieDesignPoint();
   FreeFlightSystem sys(model, model.flexible.get(), ControlInput{p.freq_hz, p.tail_angle_rad},
                        p.speed_mps);
   const int n = sys.stateCount();

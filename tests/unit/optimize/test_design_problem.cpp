@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/magpie_vehicle.hpp"
 #include "core/model/frames.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 VehicleModel magpie() {
   return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
+                                  "/studies/vehicles/efw_magpie.toml").model;
 }
 
 // The design-problem machinery on a frozen rigid-wing fixture (the magpie of commit 70ab58e, before
@@ -33,7 +34,8 @@ VehicleModel magpie() {
 // 5.44 deg, U 12.25 m/s, tail 10.2 deg; no free-flight refinement here), at 6 Hz it does not.
 VehicleModel rigidMagpie() {
   VehicleModel v = studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                            "/tests/data/sensitivity/magpie_rigid_fixture.toml");
+                                            "/tests/data/sensitivity/magpie_rigid_fixture.toml")
+                       .model;
   EXPECT_EQ(v.wing.structure, StructureLevel::kRigid);
   return v;
 }
@@ -108,7 +110,7 @@ DesignProblem tailProblem(double freq_hz) {
     s.variables.push_back(var);
   }
   DesignProblemOptions o;
-  o.trim = defaultTrimOptions(v);
+  o.trim = defaultTrimOptions(testing::magpieDesignPoint());
   o.trim.initial.freq_hz = freq_hz;
   o.trim.refine_in_free_flight = false;
   o.trim.initial.theta_rad = 5.4 * kDegToRad;
@@ -169,7 +171,7 @@ TEST(OptimizeDesignProblem, InvalidDesignIsAFailedEvaluation) {
   end.initial = -0.0624;
   s.variables = {end};
   DesignProblemOptions o;
-  o.trim = defaultTrimOptions(v);
+  o.trim = defaultTrimOptions(testing::magpieDesignPoint());
   const DesignProblem p(v, s, o);
   auto ws = p.makeWorkspace();
   const Evaluation e = p.evaluate({-0.15}, *ws);
@@ -195,7 +197,7 @@ TEST(OptimizeDesignProblem, WarmStartFollowsTheLastConvergedTrim) {
 TEST(OptimizeDesignProblem, RejectsInconsistentSetups) {
   const VehicleModel v = rigidMagpie();
   DesignProblemOptions o;
-  o.trim = defaultTrimOptions(v);
+  o.trim = defaultTrimOptions(testing::magpieDesignPoint());
   EXPECT_THROW(DesignProblem(v, DesignSpace{}, o), std::invalid_argument);  // no variables
   DesignSpace s;
   DesignVariable d;
@@ -239,7 +241,7 @@ TEST(OptimizeDesignProblem, PeriodicTrimGivesTheFloquetConstraint) {
   area.upper = 2.0 * area.initial;
   s.variables = {area};
   DesignProblemOptions o;
-  o.trim = defaultTrimOptions(v);
+  o.trim = defaultTrimOptions(testing::magpieDesignPoint());
   o.trim.initial.freq_hz = 12.0;
   usePeriodicMethod(&o.trim);
   o.constraints.bounded = false;
@@ -272,7 +274,7 @@ TEST(OptimizeDesignProblem, PeriodicTrimGivesTheFloquetConstraint) {
   EXPECT_TRUE(std::isnan(e.values[kBounded]));  // no bounded-norm flight was asked for
   EXPECT_NE(e.message.find("Floquet max |mu|"), std::string::npos);
 
-  SimulationOptions run = defaultTrimOptions(v).simulation;
+  SimulationOptions run = defaultTrimOptions(testing::magpieDesignPoint()).simulation;
   run.mode = FlightMode::kTethered;
   run.stop_when_steady = true;
   const SimulationSummary tethered = simulateTethered(model, ref.solution, run, nullptr);

@@ -21,7 +21,7 @@ namespace {
 
 VehicleModel efw() {
   return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
+                                  "/studies/vehicles/efw_magpie.toml").model;
 }
 
 /// 2 speeds x 2 frequencies x 3 pitches x 2 tail angles = 24 points.

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "tests/support/magpie_vehicle.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
@@ -16,15 +17,12 @@
 namespace orni {
 namespace {
 
-VehicleModel magpie() {
-  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
-}
+VehicleModel magpie() { return testing::magpieVehicle(); }
 
 TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   const VehicleModel v = magpie();
   TrimOptions t;
-  t.initial = v.operating_point;
+  t.initial = testing::magpieDesignPoint();
   t.initial.freq_hz = 12.0;
   t.initial.theta_rad = 15.0 * kDegToRad;  // near its trim (results/paper/table3_trim)
   t.initial.speed_mps = 15.0;

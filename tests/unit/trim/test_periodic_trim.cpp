@@ -20,6 +20,7 @@
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
 
+#include "tests/support/magpie_vehicle.hpp"
 #include "core/analysis/monodromy.hpp"
 #include "core/analysis/periodic_shooting.hpp"
 #include "core/dynamics/free_flight.hpp"
@@ -36,13 +37,10 @@ namespace {
 
 constexpr double kFreqHz = 12.0;
 
-VehicleModel magpie() {
-  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
-}
+VehicleModel magpie() { return testing::magpieVehicle(); }
 
-TrimOptions periodicOptions(const VehicleModel& v) {
-  TrimOptions o = defaultTrimOptions(v);
+TrimOptions periodicOptions(const VehicleModel& /*v*/) {
+  TrimOptions o = defaultTrimOptions(testing::magpieDesignPoint());
   o.initial.freq_hz = kFreqHz;
   usePeriodicMethod(&o);
   o.verify_free_flight = false;  // the bounded-norm check is the two-stage trim's; not tested here
@@ -56,7 +54,7 @@ std::vector<std::vector<double>> flyPeriods(const FlightCoreModel& model,
                                             const std::vector<double>& x, double tail_rad,
                                             double friction_mps, int cycles, double rel_tol) {
   FreeFlightSystem sys(model, model.flexible.get(), ControlInput{kFreqHz, tail_rad},
-                       orbitScaleSpeed_mps(model.vehicle));
+                       orbitScaleSpeed_mps(testing::magpieDesignPoint()));
   sys.setFrictionSpeed(friction_mps);
   const int n = sys.stateCount();
   std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
@@ -141,6 +139,7 @@ TEST_F(PeriodicTrimEfw, ArnoldiLeadingMultipliersEqualThoseOfTheFullMonodromy) {
   FreeFlightPeriodMapOptions mo;
   mo.rel_tol = periodicOptions(*vehicle_).periodic.rel_tol;
   mo.friction_speed_mps = s.friction_speed_mps;
+  mo.design_point = testing::magpieDesignPoint();  // as the trim's map
   FreeFlightPeriodMap map(*model_, mo);
   std::vector<double> p = FreeFlightPeriodMap::parameters(s.solution);
   std::string why;
@@ -241,7 +240,6 @@ TEST(PeriodicTrimGlide, MultipliersAreExpLambdaTOfTheLinearisedLongitudinalEquat
   v.wing.structure = StructureLevel::kRigid;
   v.flapping.amplitude_rad = 0.0;
   const OperatingPoint guess{12.0, kFreqHz, 5.0 * kDegToRad, 10.0 * kDegToRad};
-  v.operating_point = guess;
   // Amplitude 0 is the limit itself, outside the input range (0, 90) deg.
   const FlightCoreModel model(v, FlightCoreModel::Checks::kSkippedForLimitTests);
   constexpr double kFriction = 12.0;
@@ -249,6 +247,7 @@ TEST(PeriodicTrimGlide, MultipliersAreExpLambdaTOfTheLinearisedLongitudinalEquat
   mo.rel_tol = 1e-8;             // the map's own integration error well below the 1e-4 asked
   mo.max_step_fraction = 0.0625;
   mo.friction_speed_mps = kFriction;
+  mo.design_point = guess;
   FreeFlightPeriodMap map(model, mo);
   FreeFlightSystem sys(model, nullptr, ControlInput{kFreqHz, guess.tail_angle_rad}, kFriction);
   std::vector<double> y(static_cast<std::size_t>(sys.stateCount()), 0.0);

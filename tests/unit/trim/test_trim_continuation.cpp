@@ -27,8 +27,8 @@ constexpr double kEndHz = 12.6;
 
 VehicleModel magpie() { return testing::magpieVehicle(); }
 
-TrimOptions periodicAt(const VehicleModel& v, double f_hz) {
-  TrimOptions o = defaultTrimOptions(v);
+TrimOptions periodicAt(const VehicleModel& /*v*/, double f_hz) {
+  TrimOptions o = defaultTrimOptions(testing::magpieDesignPoint());
   o.initial.freq_hz = f_hz;
   usePeriodicMethod(&o);
   o.verify_free_flight = false;

@@ -12,6 +12,7 @@
 #include <cmath>
 #include <string>
 
+#include "tests/support/magpie_vehicle.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
@@ -36,13 +37,10 @@ constexpr double kThetaTolDeg = 0.1, kSpeedTol = 0.05, kTailTolDeg = 0.1;
 // Paper Table 3, which the honest vehicle does not reach (issue 13's tolerances).
 constexpr double kPaperThetaDeg = 9.2, kPaperSpeed = 10.8;
 
-VehicleModel efw() {
-  return studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
-                                  "/studies/vehicles/efw_magpie.toml");
-}
+VehicleModel efw() { return testing::magpieVehicle(); }
 
-TrimOptions optionsAt(const VehicleModel& v, double freq_hz) {
-  TrimOptions o = defaultTrimOptions(v);
+TrimOptions optionsAt(const VehicleModel& /*v*/, double freq_hz) {
+  TrimOptions o = defaultTrimOptions(testing::magpieDesignPoint());
   o.initial.freq_hz = freq_hz;
   return o;
 }

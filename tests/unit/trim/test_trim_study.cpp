@@ -56,7 +56,7 @@ TEST_F(TrimStudy, ArchitectureLayout) {
 TEST_F(TrimStudy, DefaultsComeFromTheVehicle) {
   const Study s = loadStudyFile(write("t.toml", "kind = \"trim\"\n" + efw()));
   const TrimOptions& o = s.trim;
-  const OperatingPoint& op = s.vehicle.operating_point;
+  const OperatingPoint& op = s.design_point;
   EXPECT_DOUBLE_EQ(o.initial.freq_hz, op.freq_hz);
   EXPECT_DOUBLE_EQ(o.initial.theta_rad, op.theta_rad);
   EXPECT_DOUBLE_EQ(o.initial.speed_mps, op.speed_mps);
@@ -156,7 +156,7 @@ TEST_F(TrimStudy, ErrorsNameTheKey) {
 TEST_F(TrimStudy, StudyBehindTheTrimCommand) {
   const Study s = studyFromVehicle(repo() / "studies/vehicles/efw_magpie.toml", StudyKind::kTrim);
   EXPECT_EQ(s.kind, StudyKind::kTrim);
-  EXPECT_DOUBLE_EQ(s.trim.initial.speed_mps, s.vehicle.operating_point.speed_mps);
+  EXPECT_DOUBLE_EQ(s.trim.initial.speed_mps, s.design_point.speed_mps);
   EXPECT_THROW(studyFromVehicle(repo() / "studies/vehicles/rfw_tunnel.toml", StudyKind::kTrim),
                InputError);
 }
