@@ -13,6 +13,19 @@ namespace {
 
 constexpr int kReducedOffset = 2;  // x = y[2 .. powerOffset)
 
+// A FreeFlightModel of `core` that keeps `core` alive (the model holds a reference to it), so a
+// system built on it outlives modelAt's next shift.
+std::shared_ptr<const FreeFlightModel> modelKeeping(std::shared_ptr<const FlightCoreModel> core) {
+  struct Owned {
+    explicit Owned(std::shared_ptr<const FlightCoreModel> c)
+        : core(std::move(c)), model(*core, core->flexible.get()) {}
+    std::shared_ptr<const FlightCoreModel> core;
+    FreeFlightModel model;
+  };
+  auto owned = std::make_shared<const Owned>(std::move(core));
+  return std::shared_ptr<const FreeFlightModel>(owned, &owned->model);
+}
+
 }  // namespace
 
 FreeFlightPeriodMap::FreeFlightPeriodMap(const FlightCoreModel& model,
@@ -83,6 +96,8 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FreeFlightPeriodMap& other, Clone
       units_(other.units_),
       shifted_(other.shifted_),
       shift_m_(other.shift_m_),
+      base_model_(other.base_model_),
+      shifted_model_(other.shifted_model_),
       control_(other.control_),
       grid_(other.grid_),
       y0_(other.y0_.size(), 0.0),
@@ -136,9 +151,21 @@ const FlightCoreModel& FreeFlightPeriodMap::modelAt(const double* p) {
     }
     shifted_ = std::make_shared<const FlightCoreModel>(v, FlightCoreModel::Checks::kRequired,
                                                        shifted_wings_.get());
+    shifted_model_.reset();  // of the previous shift
     shift_m_ = shift;
   }
   return *shifted_;
+}
+
+std::shared_ptr<const FreeFlightModel> FreeFlightPeriodMap::freeFlightModelAt(const double* p) {
+  const FlightCoreModel& model = modelAt(p);
+  if (&model == &base_) {
+    if (!base_model_)
+      base_model_ = std::make_shared<const FreeFlightModel>(base_, base_.flexible.get());
+    return base_model_;
+  }
+  if (!shifted_model_) shifted_model_ = modelKeeping(shifted_);
+  return shifted_model_;
 }
 
 void FreeFlightPeriodMap::prepare(const double* p) {
@@ -147,9 +174,8 @@ void FreeFlightPeriodMap::prepare(const double* p) {
     throw std::invalid_argument("free-flight period map: frequency must be > 0");
   rk_.reset();
   sys_.reset();
-  const FlightCoreModel& model = modelAt(p);
   sys_ = std::make_unique<FreeFlightSystem>(
-      model, model.flexible.get(), ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]},
+      freeFlightModelAt(p), ControlInput{p[kPeriodFrequency], p[kPeriodTailAngle]},
       orbitScaleSpeed_mps(options_.design_point));
   sys_->setFrictionSpeed(options_.friction_speed_mps);
   using Imex = ModalImex<FreeFlightSystem>;

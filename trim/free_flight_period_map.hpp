@@ -122,8 +122,12 @@ class FreeFlightPeriodMap final : public PeriodMap {
  private:
   struct CloneTag {};
   FreeFlightPeriodMap(const FreeFlightPeriodMap& other, CloneTag);
-  // Build the system and integrator for p when p changed.
+  // Build the system and integrator for p when p changed; the system's immutable part from
+  // freeFlightModelAt (shared: only the per-run workspace is new).
   void prepare(const double* p);
+  // The free-flight model of modelAt(p): one per underlying FlightCoreModel (the base's, the
+  // CG-shifted one's), built at its first use and shared with clones (immutable).
+  std::shared_ptr<const FreeFlightModel> freeFlightModelAt(const double* p);
   void fullState(const double* x, double* y) const;
 
   const FlightCoreModel& base_;
@@ -135,6 +139,8 @@ class FreeFlightPeriodMap final : public PeriodMap {
   std::shared_ptr<const FlightCoreModel> shifted_;  // CG-shifted vehicle (null: base_)
   std::shared_ptr<ModalWingCache> shifted_wings_;    // holds base_'s modal wing (flexible)
   double shift_m_ = 0.0;
+  std::shared_ptr<const FreeFlightModel> base_model_;     // of base_ (null: not built yet)
+  std::shared_ptr<const FreeFlightModel> shifted_model_;  // of *shifted_, keeps it alive
   std::unique_ptr<FreeFlightSystem> sys_;
   std::unique_ptr<GridRungeKutta> rk_;
   double p_[kPeriodParameterCount] = {0.0, 0.0, 0.0};

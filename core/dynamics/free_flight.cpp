@@ -6,9 +6,8 @@
 #include <stdexcept>
 
 #include "core/analysis/harmonics.hpp"
-#include "core/dynamics/flapping.hpp"
 #include "core/dynamics/flight_path_frame.hpp"
-#include "core/dynamics/history_window.hpp"
+#include "core/dynamics/free_flight_recorder.hpp"
 #include "core/integrate/ode_integrator.hpp"
 #include "core/model/cancellation.hpp"
 
@@ -121,218 +120,195 @@ std::string startFromPeriodicState(const FlightCoreModel& model, const Operating
   return std::string();
 }
 
-}  // namespace
-
-FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
-                               const SimulationOptions& options, FreeFlightHistory* history,
-                               FreeFlightObserver* observer) {
+void checkArguments(const OperatingPoint& point, const SimulationOptions& options,
+                    const FreeFlightHistory* history) {
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("simulation options: " + why);
   if (!(point.speed_mps > 0.0) || !(point.freq_hz > 0.0))
     throw std::invalid_argument("free flight needs speed > 0 and frequency > 0");
   if (history && history->keep_cycles < 1)
     throw std::invalid_argument("free flight: history keep_cycles must be >= 1");
-  const FreeFlightOptions& fo = options.free;
-  const ControlInput control{point.freq_hz, point.tail_angle_rad};
-  FreeFlightSystem sys(model, model.flexible.get(), control, point.speed_mps);
+}
 
-  FreeFlightSummary summary;
-  summary.initial = trimmedBodyState(point, fo.initial_altitude_m);
-  const double R_Q = fo.bounds.Q_radps > 0.0
-                         ? fo.bounds.Q_radps
-                         : 2.0 * kPi * point.freq_hz * fo.bounds.theta_rad;
+// The pitch-rate bound R_Q of the bounded-norm criterion: the options' own, else the rate of a
+// pitch oscillation of amplitude R_theta at the flapping frequency.
+double pitchRateBound(const FreeFlightBounds& bounds, double freq_hz) {
+  return bounds.Q_radps > 0.0 ? bounds.Q_radps : 2.0 * kPi * freq_hz * bounds.theta_rad;
+}
 
-  const int n = sys.stateCount();
-  std::vector<double> y0(static_cast<std::size_t>(n), 0.0);
-  sys.initialState(0.0, summary.initial, y0.data());
-  if (fo.periodic_start_cycles > 0) {
-    const std::string why_not =
-        startFromPeriodicState(model, point, options, sys, &summary, y0.data());
-    if (!why_not.empty()) {  // no periodic state to release from: the run has no result
-      summary.status = SimulationStatus::kFailed;
-      summary.message = "the periodic start (a tethered run at the release point) " + why_not;
-      if (history) {
-        const int keep = history->keep_cycles;
-        *history = FreeFlightHistory{};
-        history->keep_cycles = keep;
-      }
-      return summary;
-    }
-  }
-  const double period_s = 1.0 / point.freq_hz;
+// No periodic state to release from: the run has no result (and the history no samples).
+FreeFlightSummary failedPeriodicStart(const std::string& why_not, FreeFlightSummary* summary,
+                                      FreeFlightHistory* history) {
+  summary->status = SimulationStatus::kFailed;
+  summary->message = "the periodic start (a tethered run at the release point) " + why_not;
+  if (history) clearFreeFlightHistory(history);
+  return *summary;
+}
+
+// The integrator of a run of `sys`: the options' tolerances (free_flight_system.hpp's absolute
+// ones), at most an eighth of a period per step. Flexible wing: the modal stiffness implicit
+// (modal_implicit_split.hpp) unless the options ask for the explicit table; explicit steps are
+// stability-limited, where ARK4(3)6L needs fewer evaluations than Dormand-Prince
+// (integration_method.hpp). The rigid wing: ARK4(3)6L too.
+OdeIntegrator freeFlightIntegrator(FreeFlightSystem& sys, const SimulationOptions& options,
+                                   double period_s) {
   IntegratorOptions iopt;
   iopt.rel_tol = options.rel_tol;
   sys.absoluteTolerances(options.rel_tol, options.abs_tol, options.separation_abs_tol,
                          &iopt.abs_tol);
   iopt.max_step = period_s / 8.0;
-  // Flexible wing: the modal stiffness implicit (modal_implicit_split.hpp) unless the options ask
-  // for the explicit table; explicit steps are stability-limited, where ARK4(3)6L needs fewer
-  // evaluations than Dormand-Prince (integration_method.hpp). The rigid wing: ARK4(3)6L too.
   using Imex = ModalImex<FreeFlightSystem>;
   const bool implicit =
       sys.hasModes() && options.modal_integration == ModalIntegration::kImplicit;
-  OdeIntegrator integrator(n, Imex::rhs(implicit), &sys, Imex::method(implicit), iopt);
-  integrator.reset(0.0, y0.data());
+  return OdeIntegrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit), iopt);
+}
 
-  // What the run keeps (history_window.hpp): the caller's last cycles (at least the last one, for
-  // the mean loads) and the limit-cycle window (the last cycles after the transient,
-  // limit_cycle.hpp); the bounded-norm verdict and the theta extremes run on every sample after
-  // the transient. The windows are known in advance: the analysis runs only on a flight that
-  // completed every cycle.
-  FreeFlightHistory local;
-  FreeFlightHistory& h = history ? *history : local;
-  const int keep = history ? history->keep_cycles : 1;
-  h = FreeFlightHistory{};
-  h.keep_cycles = keep;
-  const int spc = options.samples_per_cycle;
-  const std::size_t spc_n = static_cast<std::size_t>(spc);
-  {
-    const std::size_t most = 2 * static_cast<std::size_t>(keep) * spc_n + 1;
-    h.t_s.reserve(most);
-    h.delta_M_rad.reserve(most);
-    h.body.reserve(most);
-    if (options.record_history) h.samples.reserve(most);
-  }
-  std::size_t h_first = 0;  // index of h's first sample in the run
-  auto dropOld = [&](bool amortised) {
-    const std::size_t d =
-        oldSamplesToDrop(h.t_s.size(), spc_n, static_cast<std::size_t>(keep), amortised);
-    if (d == 0) return;
-    dropFront(&h.t_s, d);
-    dropFront(&h.delta_M_rad, d);
-    dropFront(&h.body, d);
-    if (!h.samples.empty()) dropFront(&h.samples, d);
-    h_first += d;
-  };
+bool allFinite(const double* y, int n) {
+  bool finite = true;
+  for (int j = 0; j < n; ++j) finite = finite && std::isfinite(y[j]);
+  return finite;
+}
 
-  const int skip = std::min(options.cycles - 1,
-                            static_cast<int>(std::floor(fo.transient_fraction * options.cycles)));
-  const std::size_t first = static_cast<std::size_t>(skip) * spc_n;
-  const int window_cycles =
-      limitCycleWindowCycles(options.cycles - skip, spc, fo.limit_cycle_window_samples);
-  const std::size_t window_first =
-      static_cast<std::size_t>(options.cycles - window_cycles) * spc_n;
-  const std::size_t analysed_end = static_cast<std::size_t>(options.cycles) * spc_n;
-  std::vector<double> win_t, win_delta, win_theta, win_h;
-  for (std::vector<double>* v : {&win_t, &win_delta, &win_theta, &win_h})
-    v->reserve(static_cast<std::size_t>(window_cycles) * spc_n + 1);
-  BoundedNormMonitor monitor({{summary.initial.U_mps, fo.bounds.U_mps, "U"},
-                              {summary.initial.W_mps, fo.bounds.W_mps, "W"},
-                              {summary.initial.theta_rad, fo.bounds.theta_rad, "theta"},
-                              {summary.initial.Q_radps, R_Q, "Q"},
-                              {summary.initial.h_m, fo.bounds.h_m, "h"}},
-                             first, spc);
-  double theta_min = 0.0, theta_max = 0.0;  // over [first, analysed_end)
-
-  const bool loads = options.record_history;  // the loads need one more RHS evaluation
-  std::size_t index = 0;                      // of the next sample in the run
-  auto record = [&](double t, const double* y) {
-    const double delta =
-        flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad;
-    const BodyState b = bodyOf(y);
-    FreeFlightSample s;
-    if (loads) sys.sample(t, y, &s, false);
-    if (observer) observer->onSample(t, delta, b, loads ? &s : nullptr);
-    h.t_s.push_back(t);
-    h.delta_M_rad.push_back(delta);
-    h.body.push_back(b);
-    if (loads) h.samples.push_back(s);
-    const double judged[5] = {b.U_mps, b.W_mps, b.theta_rad, b.Q_radps, b.h_m};
-    monitor.add(index, t, judged);
-    if (index >= first && index < analysed_end) {
-      if (index == first || b.theta_rad < theta_min) theta_min = b.theta_rad;
-      if (index == first || b.theta_rad > theta_max) theta_max = b.theta_rad;
-    }
-    if (index >= window_first) {
-      win_t.push_back(t);
-      win_delta.push_back(delta);
-      win_theta.push_back(b.theta_rad);
-      win_h.push_back(b.h_m);
-    }
-    summary.end_time_s = t;
-    ++index;
-  };
-  record(0.0, integrator.state());
-
-  summary.status = SimulationStatus::kOk;
-  double power_prev = 0.0;
+// Why the sample y (n states) at t ends the run: a non-finite state, |theta| beyond the
+// longitudinal model, ground contact, or the scaled state norm about `initial` above the
+// divergence ratio; empty when the flight goes on.
+std::string divergenceReason(double t, const double* y, int n, const BodyState& initial,
+                             const FreeFlightOptions& fo, double Q_bound_radps) {
+  const bool finite = allFinite(y, n);
+  const BodyState b = bodyOf(y);
+  const char* worst = "";
+  const double norm = finite ? scaledNorm(b, initial, fo.bounds, Q_bound_radps, &worst) : 0.0;
   char buf[320];
-  for (int k = 1; k <= options.cycles && summary.status == SimulationStatus::kOk; ++k) {
+  if (!finite) {
+    std::snprintf(buf, sizeof buf, "non-finite state at t = %.4f s", t);
+  } else if (std::abs(b.theta_rad) >= kThetaLimit_rad) {
+    std::snprintf(buf, sizeof buf,
+                  "pitch attitude %.1f deg beyond +-85 deg at t = %.4f s (the longitudinal "
+                  "model does not cover it)",
+                  b.theta_rad * kRadToDeg, t);
+  } else if (b.h_m <= 0.0) {
+    std::snprintf(buf, sizeof buf,
+                  "ground contact at t = %.4f s (started %.3g m above ground, x = %.3g m)", t,
+                  fo.initial_altitude_m, b.x_I_m);
+  } else if (norm > fo.divergence_ratio) {
+    std::snprintf(buf, sizeof buf,
+                  "scaled state norm %.3g > %.3g at t = %.4f s (largest deviation: %s)", norm,
+                  fo.divergence_ratio, t, worst);
+  } else {
+    return std::string();
+  }
+  return buf;
+}
+
+// The cycles of the run, sample by sample, until the last or the first divergence (status
+// diverged with the reason; a finite diverged sample is still recorded); after each whole cycle
+// the history window is trimmed and the cycle's mean aerodynamic power kept.
+void flyCycles(const FreeFlightSystem& sys, double freq_hz, const SimulationOptions& options,
+               double Q_bound_radps, OdeIntegrator& integrator, FreeFlightRecorder& recorder,
+               FreeFlightSummary* summary) {
+  const int n = sys.stateCount();
+  const int spc = options.samples_per_cycle;
+  const double period_s = 1.0 / freq_hz;
+  summary->status = SimulationStatus::kOk;
+  double power_prev = 0.0;
+  for (int k = 1; k <= options.cycles && summary->status == SimulationStatus::kOk; ++k) {
     throwIfCancelled();  // a cancellation point per cycle (core/model/cancellation.hpp)
     for (int i = 1; i <= spc; ++i) {
       const double t = ((k - 1) * spc + i) * period_s / spc;
       if (integrator.advanceTo(t) != IntegratorStatus::kOk) {
-        summary.status = SimulationStatus::kDiverged;
+        char buf[320];
         std::snprintf(buf, sizeof buf, "integration stopped at t = %.4f s: %s", integrator.time(),
                       integrator.lastError().c_str());
-        summary.message = buf;
+        summary->status = SimulationStatus::kDiverged;
+        summary->message = buf;
         break;
       }
       const double* y = integrator.state();
-      bool finite = true;
-      for (int j = 0; j < n; ++j) finite = finite && std::isfinite(y[j]);
-      const BodyState b = bodyOf(y);
-      const char* worst = "";
-      const double norm = finite ? scaledNorm(b, summary.initial, fo.bounds, R_Q, &worst) : 0.0;
-      if (!finite) {
-        std::snprintf(buf, sizeof buf, "non-finite state at t = %.4f s", t);
-      } else if (std::abs(b.theta_rad) >= kThetaLimit_rad) {
-        std::snprintf(buf, sizeof buf,
-                      "pitch attitude %.1f deg beyond +-85 deg at t = %.4f s (the longitudinal "
-                      "model does not cover it)",
-                      b.theta_rad * kRadToDeg, t);
-      } else if (b.h_m <= 0.0) {
-        std::snprintf(buf, sizeof buf,
-                      "ground contact at t = %.4f s (started %.3g m above ground, x = %.3g m)", t,
-                      fo.initial_altitude_m, b.x_I_m);
-      } else if (norm > fo.divergence_ratio) {
-        std::snprintf(buf, sizeof buf,
-                      "scaled state norm %.3g > %.3g at t = %.4f s (largest deviation: %s)",
-                      norm, fo.divergence_ratio, t, worst);
-      } else {
-        record(t, y);
-        continue;
+      const std::string why = divergenceReason(t, y, n, summary->initial, options.free,
+                                               Q_bound_radps);
+      if (why.empty() || allFinite(y, n)) recorder.record(t, y);
+      if (!why.empty()) {
+        summary->status = SimulationStatus::kDiverged;
+        summary->message = why;
+        break;
       }
-      if (finite) record(t, y);
-      summary.status = SimulationStatus::kDiverged;
-      summary.message = buf;
-      break;
     }
-    if (summary.status != SimulationStatus::kOk) break;
-    summary.cycles_run = k;
-    dropOld(true);
+    if (summary->status != SimulationStatus::kOk) break;
+    summary->cycles_run = k;
+    recorder.dropOld(true);
     const double power = integrator.state()[sys.powerOffset()];
-    summary.mean.power_aero_W = (power - power_prev) / period_s;
+    summary->mean.power_aero_W = (power - power_prev) / period_s;
     power_prev = power;
   }
-  dropOld(false);
+}
+
+// Mean aerodynamic FV, FH and M of the last whole cycle `cycle` (1-based; trapezoid on its
+// periodic samples, the endpoint excluded) from the recorder's history window.
+void lastCycleMeanLoads(const FreeFlightRecorder& recorder, int samples_per_cycle, int cycle,
+                        CycleMeans* mean) {
+  const std::size_t n = static_cast<std::size_t>(samples_per_cycle);
+  const std::vector<FreeFlightSample>& samples = recorder.history().samples;
+  const std::size_t start = static_cast<std::size_t>(cycle - 1) * n - recorder.historyFirst();
+  std::vector<double> x(n);  // one channel of the cycle, contiguous
+  auto channel = [&](double LoadSample::*field) -> const double* {
+    for (std::size_t i = 0; i < n; ++i) x[i] = samples[start + i].loads.*field;
+    return x.data();
+  };
+  mean->FV_N = periodMean(channel(&LoadSample::FV_N), n);
+  mean->FH_N = periodMean(channel(&LoadSample::FH_N), n);
+  mean->M_Nm = periodMean(channel(&LoadSample::M_Nm), n);
+}
+
+// The verdict over the cycles after the transient and the limit cycle over its window, of a run
+// that completed all `cycles`.
+void analyse(const FreeFlightRecorder& recorder, int cycles, FreeFlightSummary* summary) {
+  const FreeFlightWindows& w = recorder.windows();
+  summary->first_analysed_cycle = w.transient_cycles + 1;
+  summary->limit_cycle_first_cycle = cycles - w.limit_cycle_cycles + 1;
+  summary->verdict = recorder.verdict();
+  summary->limit_cycle = recorder.limitCycle();
+  summary->analysed = true;
+  char buf[320];
+  std::snprintf(buf, sizeof buf, "%d cycles of free flight; %s", summary->cycles_run,
+                summary->verdict.reason.c_str());
+  summary->message = buf;
+}
+
+}  // namespace
+
+FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
+                               const SimulationOptions& options, FreeFlightHistory* history,
+                               FreeFlightObserver* observer) {
+  checkArguments(point, options, history);
+  FreeFlightSystem sys(model, model.flexible.get(),
+                       ControlInput{point.freq_hz, point.tail_angle_rad}, point.speed_mps);
+  FreeFlightSummary summary;
+  summary.initial = trimmedBodyState(point, options.free.initial_altitude_m);
+  const double Q_bound_radps = pitchRateBound(options.free.bounds, point.freq_hz);
+
+  std::vector<double> y0(static_cast<std::size_t>(sys.stateCount()), 0.0);
+  sys.initialState(0.0, summary.initial, y0.data());
+  if (options.free.periodic_start_cycles > 0) {
+    const std::string why_not =
+        startFromPeriodicState(model, point, options, sys, &summary, y0.data());
+    if (!why_not.empty()) return failedPeriodicStart(why_not, &summary, history);
+  }
+  OdeIntegrator integrator = freeFlightIntegrator(sys, options, 1.0 / point.freq_hz);
+  integrator.reset(0.0, y0.data());
+
+  FreeFlightRecorder recorder(sys, point.freq_hz, options, summary.initial, Q_bound_radps,
+                              history, observer);
+  recorder.record(0.0, integrator.state());
+  flyCycles(sys, point.freq_hz, options, Q_bound_radps, integrator, recorder, &summary);
+  recorder.dropOld(false);
+  summary.end_time_s = recorder.lastTime_s();
   summary.steps = integrator.steps();
   summary.rhs_evaluations = integrator.rhsEvaluations();
   summary.integrator_method = integrator.methodName();
-
-  // Last whole cycle means of the aerodynamic loads (trapezoid on the periodic samples).
-  if (summary.cycles_run >= 1 && loads) {
-    const std::size_t start =
-        static_cast<std::size_t>(summary.cycles_run - 1) * spc_n - h_first;
-    const std::size_t stride = sizeof(FreeFlightSample) / sizeof(double);
-    summary.mean.FV_N = periodMean(&h.samples[start].loads.FV_N, spc_n, stride);
-    summary.mean.FH_N = periodMean(&h.samples[start].loads.FH_N, spc_n, stride);
-    summary.mean.M_Nm = periodMean(&h.samples[start].loads.M_Nm, spc_n, stride);
-  }
+  if (summary.cycles_run >= 1 && options.record_history)
+    lastCycleMeanLoads(recorder, options.samples_per_cycle, summary.cycles_run, &summary.mean);
   if (summary.status != SimulationStatus::kOk) return summary;
-
-  // Verdict over the cycles after the transient; limit cycle over its window.
-  summary.first_analysed_cycle = skip + 1;
-  summary.limit_cycle_first_cycle = options.cycles - window_cycles + 1;
-  summary.verdict = monitor.result();
-  summary.limit_cycle =
-      analyseLimitCycle(win_t, win_delta, win_theta, win_h, 0, spc, point.freq_hz);
-  summary.limit_cycle.theta_min_rad = theta_min;
-  summary.limit_cycle.theta_max_rad = theta_max;
-  summary.analysed = true;
-  std::snprintf(buf, sizeof buf, "%d cycles of free flight; %s", summary.cycles_run,
-                summary.verdict.reason.c_str());
-  summary.message = buf;
+  analyse(recorder, options.cycles, &summary);
   return summary;
 }
 

@@ -52,7 +52,7 @@ struct FreeFlightWorkspace {
   int n_u = 3;          ///< generalised speeds (U, W, Q, q')
   Eigen::VectorXd q, qd, ud, f, scratch_modes;
   Eigen::VectorXd Gq_all, correction;  // K^_G q per load; u' correction (n_u)
-  Eigen::VectorXd Pq_all, Cq_all, Cqd_all, Sq{9}, Sqd{9};
+  Eigen::VectorXd Pq_all, Cq_all, Cqd_all, Sq, Sqd;
   Eigen::MatrixXd A;  // generalised mass matrix (lower triangle)
   SmallCholesky chol;
   Eigen::VectorXd b_strip, k_twist;           // 0.5 (1 + f) m_a and f k per strip
