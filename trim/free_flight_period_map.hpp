@@ -84,8 +84,8 @@ class FreeFlightPeriodMap final : public PeriodMap {
   double period_s(const double* p) const override { return 1.0 / p[kPeriodFrequency]; }
   bool flow(const double* x, const double* p, double* x_T, double* g, std::string* why) override;
   bool refreshDiscretisation(const double* x, const double* p, std::string* why) override;
-  /// A copy with this map's step grid, friction speed and CG-shifted vehicle (shared, read only);
-  /// its system is built at its first flow. Thread-compatible with this map.
+  /// A copy with this map's step grid, friction speed, CG-shifted vehicle and free-flight models
+  /// (shared, read only); its system is built at its first flow. Thread-compatible with this map.
   std::unique_ptr<PeriodMap> clone() const override;
   /// Adds the clone's right-hand-side evaluations to rhsEvaluations().
   void addWorkOf(const PeriodMap& clone) override;

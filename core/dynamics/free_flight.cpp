@@ -120,6 +120,7 @@ std::string startFromPeriodicState(const FlightCoreModel& model, const Operating
   return std::string();
 }
 
+// The std::invalid_argument cases of simulateFree (free_flight.hpp).
 void checkArguments(const OperatingPoint& point, const SimulationOptions& options,
                     const FreeFlightHistory* history) {
   std::string why;
