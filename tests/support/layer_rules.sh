@@ -10,7 +10,8 @@
 # Private headers: a core folder's internals (no public header of the folder includes them), which
 # only files of the same folder may include (and the unit tests, which are not checked here).
 ORNI_PRIVATE_HEADERS="core/dynamics/flexible_tethered.hpp core/dynamics/flight_path_frame.hpp \
-core/dynamics/history_window.hpp core/integrate/callback_guard.hpp \
+core/dynamics/free_flight_recorder.hpp core/dynamics/history_window.hpp \
+core/integrate/callback_guard.hpp \
 core/integrate/linear_stage_solver.hpp core/integrate/serial_vector_ops.hpp \
 core/structure/craig_bampton.hpp \
 core/structure/rigid_body_vectors.hpp"

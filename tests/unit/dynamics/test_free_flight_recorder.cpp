@@ -13,15 +13,13 @@
 #include "core/dynamics/free_flight_recorder.hpp"
 #include "core/dynamics/free_flight_system.hpp"
 #include "core/model/frames.hpp"
-#include "studies/runner/config/vehicle_file.hpp"
+#include "tests/support/magpie_vehicle.hpp"
 
 namespace orni {
 namespace {
 
 VehicleModel rigidMagpie() {
-  VehicleModel v =
-      studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml")
-          .model;
+  VehicleModel v = testing::magpieVehicle();
   v.wing.structure = StructureLevel::kRigid;
   return v;
 }
