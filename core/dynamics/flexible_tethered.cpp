@@ -39,6 +39,7 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
   for (std::size_t j = 0; j < model.strips.size(); ++j)
     data_.batch.friction_coefficient[static_cast<Eigen::Index>(j)] = aero::frictionCoefficient(
         U * model.strip_geometry[j].chord_m / model.vehicle.air.kinematic_viscosity_m2ps);
+  kin_.setReferencePoints(data_.batch);  // the quarter chord (flexible_wing.hpp)
   aero::prepareStripBatch(model.aero_context, data_.batch);
   data_.batch.airx.setZero();
   data_.batch.airy.setZero();

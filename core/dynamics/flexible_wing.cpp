@@ -1,8 +1,10 @@
 #include "core/dynamics/flexible_wing.hpp"
 
+#include <array>
 #include <stdexcept>
 
 #include "core/aero/mst_strip.hpp"
+#include "core/dynamics/chordwise_weights.hpp"
 
 namespace orni {
 
@@ -29,11 +31,35 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
     s.x_T_W_m = mw.mesh.nodes_W_m[static_cast<std::size_t>(sn.three_quarter_chord)];
     s.phi_L = mw.phi_W[static_cast<std::size_t>(sn.leading_edge)];
     s.phi_T = mw.phi_W[static_cast<std::size_t>(sn.three_quarter_chord)];
-    s.lever_T_m = (s.x_T_W_m - s.x_L_W_m).norm();
-    const Eigen::Matrix3Xd dphi = s.phi_T - s.phi_L;
-    s.psi_twist = -(n_W.transpose() * dphi) / s.lever_T_m;
     const double c = strip_chords_m[j];
-    s.psi_mid = ((s.phi_L + (0.5 * c / s.lever_T_m) * dphi).transpose() * n_W);
+    // Flat-plate loading over L, Q, T, E and the same weights for the section's motion
+    // (chordwise_weights.hpp: the choice and the weights; structure.md 4.3).
+    const int node[4] = {sn.leading_edge, sn.quarter_chord, sn.three_quarter_chord,
+                         sn.trailing_edge};
+    const Vec3 e_c0 = (s.x_L_W_m - mw.mesh.nodes_W_m[static_cast<std::size_t>(node[3])])
+                          .normalized();  // undeformed chord, TE -> LE
+    std::array<double, 4> x_aft{};
+    for (int i = 1; i < 4; ++i)
+      x_aft[i] = (s.x_L_W_m - mw.mesh.nodes_W_m[static_cast<std::size_t>(node[i])]).dot(e_c0);
+    const ChordwiseWeights w = flatPlateChordwiseWeights(x_aft);
+    s.lever_R_m = 2.0 * (w.mid_chord_aft_m - w.reference_aft_m);  // P to the 3/4 chord
+    s.ref_aft_of_le_m = 0.25 * c;  // the kernel's P: its circulatory force acts there (lever 0)
+    s.x_P_W_m.setZero();
+    s.x_R_W_m.setZero();
+    s.phi_P.setZero(3, M);
+    s.phi_R.setZero(3, M);
+    s.psi_twist.setZero(M);
+    for (int i = 0; i < 4; ++i) {
+      const auto p = static_cast<std::size_t>(node[i]);
+      const double a = w.force[i], r = w.force[i] - s.lever_R_m * w.moment[i];
+      s.x_P_W_m += a * mw.mesh.nodes_W_m[p];
+      s.x_R_W_m += r * mw.mesh.nodes_W_m[p];
+      s.phi_P += a * mw.phi_W[p];
+      s.phi_R += r * mw.phi_W[p];
+      s.psi_twist += w.moment[i] * (n_W.transpose() * mw.phi_W[p]);
+    }
+    s.psi_mid =
+        s.phi_P.transpose() * n_W - (0.5 * c - s.ref_aft_of_le_m) * s.psi_twist.transpose();
     apparent_mass_kg[static_cast<Eigen::Index>(j)] =
         aero::apparentMassPerSpan_kgpm(rho, c) * strip_widths_m[j];
     apparent_rotary_kgm2[static_cast<Eigen::Index>(j)] =
@@ -69,17 +95,19 @@ StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_cou
   StackedStrips st;
   st.ns = ns;
   st.points.resize(6 * ns);
+  st.ref_aft_of_le_m.resize(ns);
   st.shapes.setZero(8 * ns, M);
   st.apparent_const.setZero(M, M);
   st.apparent_per_f.setZero(static_cast<Eigen::Index>(M) * (M + 1) / 2, ns);
   for (Eigen::Index i = 0; i < ns; ++i) {
     const FlexibleStrip& fs = strips[static_cast<std::size_t>(i)];
+    st.ref_aft_of_le_m[i] = fs.ref_aft_of_le_m;
     for (int k = 0; k < 3; ++k) {  // component-major: row k ns + i of each block
-      st.points[k * ns + i] = fs.x_T_W_m[k];
-      st.points[3 * ns + k * ns + i] = fs.x_L_W_m[k];
+      st.points[k * ns + i] = fs.x_R_W_m[k];
+      st.points[3 * ns + k * ns + i] = fs.x_P_W_m[k];
       if (M > 0) {
-        st.shapes.row(k * ns + i) = fs.phi_T.row(k);
-        st.shapes.row(3 * ns + k * ns + i) = fs.phi_L.row(k);
+        st.shapes.row(k * ns + i) = fs.phi_R.row(k);
+        st.shapes.row(3 * ns + k * ns + i) = fs.phi_P.row(k);
       }
     }
     if (M == 0) continue;

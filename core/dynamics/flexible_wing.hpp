@@ -25,28 +25,39 @@
 
 namespace orni {
 
-/// Per-strip modal data (W components; sample nodes L = leading edge, T = three-quarter chord).
+/// Per-strip modal data (W components). Sample nodes of the mid-station (structure.md 4.1):
+/// L = leading edge, Q = quarter chord, T = three-quarter chord, E = trailing edge. The strip load
+/// is distributed over L, Q, T, E with flat-plate chordwise weights and the section motion the
+/// kernel sees is taken with the same weights (chordwise_weights.hpp: why, and the weights).
 struct FlexibleStrip {
-  Vec3 x_L_W_m, x_T_W_m;            ///< undeformed sample points
+  Vec3 x_L_W_m, x_T_W_m;            ///< undeformed sample nodes L and T
   Eigen::Matrix3Xd phi_L, phi_T;    ///< translational mode shapes at L and T (3 x M)
+  /// The kernel's section (structure.md 4.2-4.3): reference point P = sum a_i x_i (the quarter
+  /// chord; the strip force acts here, the moment is about it) and rear point R = P - lever_R e_c
+  /// (its three-quarter chord) = sum (a_i - lever_R b_i) x_i, so that e_c = (s_P - s_R)/|.| has
+  /// the rate of the section twist sum b_i n.u_i'. The rigid wing: P = L, R = T (zero modes).
+  Vec3 x_P_W_m, x_R_W_m;
+  Eigen::Matrix3Xd phi_P, phi_R;    ///< their mode shapes (3 x M)
+  double lever_R_m = 0.0;           ///< |x_P - x_R|
+  double ref_aft_of_le_m = 0.0;     ///< the kernel's x_P (aero-mst.md 2.3): c/4 flexible, 0 rigid
   Eigen::RowVectorXd psi_twist;     ///< elastic twist per unit q, nose-up (1 x M):
-                                    ///< -n_W^T (Phi_T - Phi_L) / |x_T - x_L|
-  Eigen::VectorXd psi_mid;          ///< normal displacement of mid-chord per unit q (M):
-                                    ///< (Phi_L + (c/2)/l (Phi_T - Phi_L))^T n_W
-  double lever_T_m = 0.0;           ///< |x_T - x_L|
+                                    ///< sum_i b_i n_W^T Phi_i over L, Q, T, E
+  Eigen::VectorXd psi_mid;          ///< normal displacement of the kernel's mid-chord per unit q
+                                    ///< (M): (Phi_P^T n_W - (c/2 - x_P) psi_twist^T)
 };
 
 /// The strips' modal data stacked for one matrix product per use. Point data are component-major:
 /// row k ns + j is component k (x, y, z) of strip j; scalar data row j. All shapes live in one
-/// matrix, rows [phi_T (3 ns); phi_L (3 ns); psi_twist (ns); psi_mid (ns)], so that the products
+/// matrix, rows [phi_R (3 ns); phi_P (3 ns); psi_twist (ns); psi_mid (ns)], so that the products
 /// of an evaluation that share a vector are one product over adjacent row blocks.
 struct StackedStrips {
   Eigen::Index ns = 0;                  ///< strips
-  Eigen::VectorXd points;               ///< undeformed sample points [x_T; x_L] (6 ns)
+  Eigen::VectorXd points;               ///< undeformed section points [x_R; x_P] (6 ns)
+  Eigen::VectorXd ref_aft_of_le_m;      ///< the kernel's reference point per strip (ns)
   Eigen::MatrixXd shapes;               ///< (8 ns) x M, see above
   // The row blocks the evaluations multiply with (adjacent, so one product each).
-  auto pointShapes() const { return shapes.topRows(6 * ns); }           ///< [phi_T; phi_L]
-  auto rateShapes() const { return shapes.middleRows(3 * ns, 4 * ns); }  ///< [phi_L; psi_twist]
+  auto pointShapes() const { return shapes.topRows(6 * ns); }           ///< [phi_R; phi_P]
+  auto rateShapes() const { return shapes.middleRows(3 * ns, 4 * ns); }  ///< [phi_P; psi_twist]
   auto apparentShapes() const { return shapes.bottomRows(2 * ns); }      ///< [psi_twist; psi_mid]
   auto psi_twist() const { return shapes.middleRows(6 * ns, ns); }  ///< elastic twist (ns x M)
   auto psi_mid() const { return shapes.middleRows(7 * ns, ns); }    ///< mid-chord normal (ns x M)

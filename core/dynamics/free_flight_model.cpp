@@ -12,6 +12,8 @@ namespace {
 
 // Rigid wing as strips with zero modes: leading edge on the hinge line (the rigid core's
 // kinematic reference, flight_core.cpp), three-quarter-chord point along -e_c (incidence applied).
+// The kernel's reference point stays the leading edge (P = L, R = T): for a rigid section the
+// point a force is written at does not change its action on the body.
 std::vector<FlexibleStrip> rigidStrips(const FlightCoreModel& model) {
   std::vector<FlexibleStrip> out(model.strips.size());
   for (std::size_t j = 0; j < model.strips.size(); ++j) {
@@ -19,9 +21,14 @@ std::vector<FlexibleStrip> rigidStrips(const FlightCoreModel& model) {
     const double c = model.strip_geometry[j].chord_m;
     s.x_L_W_m = Vec3(0.0, model.strips[j].y_center_m, 0.0);
     s.x_T_W_m = s.x_L_W_m - 0.75 * c * model.e_c_W;
-    s.lever_T_m = 0.75 * c;
+    s.x_P_W_m = s.x_L_W_m;
+    s.x_R_W_m = s.x_T_W_m;
+    s.lever_R_m = 0.75 * c;
+    s.ref_aft_of_le_m = 0.0;
     s.phi_L.resize(3, 0);
     s.phi_T.resize(3, 0);
+    s.phi_P.resize(3, 0);
+    s.phi_R.resize(3, 0);
     s.psi_twist.resize(0);
     s.psi_mid.resize(0);
   }

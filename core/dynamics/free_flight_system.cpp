@@ -74,6 +74,7 @@ void FreeFlightSystem::setFrictionSpeed(double speed_mps) {
     ws_.data.batch.friction_coefficient[static_cast<Eigen::Index>(j)] =
         aero::frictionCoefficient(speed_mps * core.strip_geometry[j].chord_m /
                                   core.vehicle.air.kinematic_viscosity_m2ps);
+  ws_.kin.setReferencePoints(ws_.data.batch);  // flexible: the quarter chord; rigid: the LE
   aero::prepareStripBatch(core.aero_context, ws_.data.batch);
 }
 

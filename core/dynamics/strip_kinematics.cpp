@@ -21,24 +21,26 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
                               const WingFrameMotion& m, aero::StripBatch& b) {
   const Eigen::Index n = ns_;
   if (mode_count_ > 0) {
-    // [s_T; s_L] = x + [phi_T; phi_L] q, [u'_L; twist'] = [phi_L; psi_twist] q'
+    // [s_R; s_P] = x + [phi_R; phi_P] q, [u'_P; twist'] = [phi_P; psi_twist] q' (P: the kernel's
+    // reference point, where the strip force acts; R: the section's 3/4 chord, flexible_wing.hpp)
     S_ = st_.points;
     S_.noalias() += st_.pointShapes() * q;
     rates_.noalias() = st_.rateShapes() * qd;
   }
   // One pass over the strips (the compiler vectorises it; every intermediate stays in a
   // register instead of a temporary array).
-  const double* __restrict Tx = S_.data();
-  const double* __restrict Ty = Tx + n;
-  const double* __restrict Tz = Tx + 2 * n;
-  const double* __restrict Lx = Tx + 3 * n;
-  const double* __restrict Ly = Tx + 4 * n;
-  const double* __restrict Lz = Tx + 5 * n;
+  const double* __restrict Rx = S_.data();
+  const double* __restrict Ry = Rx + n;
+  const double* __restrict Rz = Rx + 2 * n;
+  const double* __restrict Px = Rx + 3 * n;
+  const double* __restrict Py = Rx + 4 * n;
+  const double* __restrict Pz = Rx + 5 * n;
   const double* __restrict Ux = rates_.data();
   const double* __restrict Uy = Ux + n;
   const double* __restrict Uz = Ux + 2 * n;
   const double* __restrict tr = Ux + 3 * n;
   const double* __restrict chord = b.chord_m.data();
+  const double* __restrict x_P = st_.ref_aft_of_le_m.data();
   double* __restrict ecx = b.ecx.data();
   double* __restrict ecy = b.ecy.data();
   double* __restrict ecz = b.ecz.data();
@@ -71,10 +73,10 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
   const double w2 = w_x * w_x + w_y * w_y + w_z * w_z;
 #pragma GCC ivdep  // the outputs are distinct arrays (GCC ignores restrict on local pointers)
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double sx = Lx[j], sy = Ly[j], sz = Lz[j];
+    const double sx = Px[j], sy = Py[j], sz = Pz[j];
     const double ux = Ux[j], uy = Uy[j], uz = Uz[j];
-    // e_c = (s_L - s_T)/|.| (TE -> LE); e_s = (e_y - (e_c.e_y) e_c)/|.|; n = e_s x e_c (up).
-    double cx = sx - Tx[j], cy = sy - Ty[j], cz = sz - Tz[j];
+    // e_c = (s_P - s_R)/|.| (TE -> LE); e_s = (e_y - (e_c.e_y) e_c)/|.|; n = e_s x e_c (up).
+    double cx = sx - Rx[j], cy = sy - Ry[j], cz = sz - Rz[j];
     const double inv_c = 1.0 / std::sqrt(cx * cx + cy * cy + cz * cz);
     cx *= inv_c;
     cy *= inv_c;
@@ -93,11 +95,11 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
     nx[j] = ey * cz - ez * cy;
     ny[j] = ez * cx - ex * cz;
     nz[j] = ex * cy - ey * cx;
-    const double half_c = 0.5 * chord[j];
+    const double half_c = 0.5 * chord[j] - x_P[j];  // P to the kernel's mid-chord
     midx[j] = sx - half_c * cx;
     midy[j] = sy - half_c * cy;
     midz[j] = sz - half_c * cz;
-    // v = v_O + w x s_L + u'_L; a0 = a_O0 + alpha x s_L + w (w.s_L) - |w|^2 s_L + 2 w x u'_L.
+    // v = v_O + w x s_P + u'_P; a0 = a_O0 + alpha x s_P + w (w.s_P) - |w|^2 s_P + 2 w x u'_P.
     vx[j] = vO_x + (w_y * sz - w_z * sy) + ux;
     vy[j] = vO_y + (w_z * sx - w_x * sz) + uy;
     vz[j] = vO_z + (w_x * sy - w_y * sx) + uz;
@@ -117,6 +119,10 @@ void StripKinematics::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& q
     wdy[j] = al_y + t * (w_z * ex - w_x * ez);
     wdz[j] = al_z + t * (w_x * ey - w_y * ex);
   }
+}
+
+void StripKinematics::setReferencePoints(aero::StripBatch& b) const {
+  b.ref_aft_of_le_m = st_.ref_aft_of_le_m.array();
 }
 
 void StripKinematics::modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q) {
@@ -147,9 +153,9 @@ void StripKinematics::contributions(const aero::StripBatch& b, const Eigen::Vect
                                     const Eigen::VectorXd& extra_couple, const Vec3& omega_rel_W,
                                     bool with_power) {
   const Eigen::Index n = ns_;
-  const double* __restrict Lx = S_.data() + 3 * n;
-  const double* __restrict Ly = Lx + n;
-  const double* __restrict Lz = Lx + 2 * n;
+  const double* __restrict Px = S_.data() + 3 * n;
+  const double* __restrict Py = Px + n;
+  const double* __restrict Pz = Px + 2 * n;
   const double* __restrict Ux = rates_.data();
   const double* __restrict Uy = Ux + n;
   const double* __restrict Uz = Ux + 2 * n;
@@ -172,11 +178,13 @@ void StripKinematics::contributions(const aero::StripBatch& b, const Eigen::Vect
   const double w_x = omega_rel_W.x(), w_y = omega_rel_W.y(), w_z = omega_rel_W.z();
   // Per strip: force and moment about P2 with the apparent-mass force along n at mid-chord and
   // couple about e_s; the power uses the motion relative to the fuselage:
-  // v_rel_L = w_rel x s_L + u'_L, w_strip = w_rel + twist' e_s,
-  // v_rel_mid . n = (v_rel_L + w_strip x (mid - s_L)) . n (M19 sign: power put into the air).
+  // v_rel_P = w_rel x s_P + u'_P, w_strip = w_rel + twist' e_s,
+  // v_rel_mid . n = (v_rel_P + w_strip x (mid - s_P)) . n (M19 sign: power put into the air).
+  // The kernel's force acts at P and its moment is about P (aero-mst.md 6.3), so the moment
+  // about P2 is s_P x F + M_P.
 #pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
   for (Eigen::Index j = 0; j < n; ++j) {
-    const double sx = Lx[j], sy = Ly[j], sz = Lz[j];
+    const double sx = Px[j], sy = Py[j], sz = Pz[j];
     const double e = ef[j];
     cFx[j] = Fx[j] + e * nx[j];
     cFy[j] = Fy[j] + e * ny[j];

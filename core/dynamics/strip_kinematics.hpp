@@ -27,13 +27,21 @@ class StripKinematics {
  public:
   StripKinematics(const StackedStrips& stacked, int mode_count);
 
-  /// Deformed sample points, frames and inertial motion of every strip into the kernel batch
-  /// (e_c, n, v_P, a_P at the leading edge, w_s, wdot_s).
+  /// Deformed section points, frames and inertial motion of every strip into the kernel batch
+  /// (e_c, n, v_P, a_P at the kernel's reference point P, w_s, wdot_s). P is
+  /// StackedStrips::ref_aft_of_le_m aft of the leading edge: the batch's ref_aft_of_le_m must be
+  /// the same (setReferencePoints() before aero::prepareStripBatch()).
   void compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const WingFrameMotion& m,
                aero::StripBatch& b);
 
-  /// After the kernel: generalised aerodynamic force on the modes, Phi_L^T F + psi_twist^T m_e
-  /// (structure.md 4.3). `Q` has mode_count entries.
+  /// The kernel's reference point of every strip into the batch (call before
+  /// aero::prepareStripBatch()): the quarter chord for the flexible wing, the leading edge for the
+  /// rigid one.
+  void setReferencePoints(aero::StripBatch& b) const;
+
+  /// After the kernel: generalised aerodynamic force on the modes, Phi_P^T F + psi_twist^T m_P
+  /// (structure.md 4.3; the flat-plate nodal loads of chordwise_weights.hpp). `Q` has mode_count
+  /// entries.
   void modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q);
 
   /// Resultant of the strip loads on one wing about P2 (W components) including the
@@ -61,8 +69,8 @@ class StripKinematics {
   const StackedStrips& st_;
   int mode_count_;
   int ns_;
-  Eigen::VectorXd S_;      // deformed sample points [s_T; s_L] (6 ns)
-  Eigen::VectorXd rates_;  // [u'_L (3 ns); twist' (ns)]
+  Eigen::VectorXd S_;      // deformed section points [s_R; s_P] (6 ns)
+  Eigen::VectorXd rates_;  // [u'_P (3 ns); twist' (ns)]
   Eigen::VectorXd loads_;  // [F (3 ns); pitching moment about e_s (ns)], modalForce() workspace
   Eigen::ArrayXd esx_, esy_, esz_, midx_, midy_, midz_;
   // Per-strip contributions to the resultant force, moment about P2 and power.

@@ -67,9 +67,9 @@ TEST_F(StripKinematicsTest, EveryStripMatchesTheVectorFormulas) {
     const FlexibleStrip& fs = flex_.strips[s];
     const auto j = static_cast<Eigen::Index>(s);
     const int i = static_cast<int>(s);
-    const Vec3 sL = fs.x_L_W_m + fs.phi_L * q_;
-    const Vec3 sT = fs.x_T_W_m + fs.phi_T * q_;
-    const Vec3 uL = fs.phi_L * qd_;
+    const Vec3 sL = fs.x_P_W_m + fs.phi_P * q_;  // the kernel's reference point P
+    const Vec3 sT = fs.x_R_W_m + fs.phi_R * q_;  // the section's 3/4 chord
+    const Vec3 uL = fs.phi_P * qd_;
     const double twist_rate = fs.psi_twist.dot(qd_);
     const Vec3 ec = (sL - sT).normalized();
     const Vec3 ey = Vec3::UnitY();
@@ -79,7 +79,7 @@ TEST_F(StripKinematicsTest, EveryStripMatchesTheVectorFormulas) {
     const Vec3 a = m_.a_O0_W + al.cross(sL) + w.cross(w.cross(sL)) + 2.0 * w.cross(uL);
     const Vec3 ws = w + twist_rate * es;
     const Vec3 wd = al + w.cross(twist_rate * es);
-    const Vec3 mid = sL - 0.5 * b.chord_m[j] * ec;
+    const Vec3 mid = sL - (0.5 * b.chord_m[j] - fs.ref_aft_of_le_m) * ec;
     expectNear(Vec3(b.ecx[j], b.ecy[j], b.ecz[j]), ec, 1.0, "e_c", i);
     expectNear(Vec3(kin_.esx()[j], kin_.esy()[j], kin_.esz()[j]), es, 1.0, "e_s", i);
     expectNear(Vec3(b.nx[j], b.ny[j], b.nz[j]), n, 1.0, "n", i);
@@ -103,15 +103,15 @@ TEST_F(StripKinematicsTest, ModalForceAndResultantMatchTheStripSums) {
   for (std::size_t s = 0; s < flex_.strips.size(); ++s) {
     const FlexibleStrip& fs = flex_.strips[s];
     const auto j = static_cast<Eigen::Index>(s);
-    const Vec3 sL = fs.x_L_W_m + fs.phi_L * q_;
-    const Vec3 uL = fs.phi_L * qd_;
+    const Vec3 sL = fs.x_P_W_m + fs.phi_P * q_;
+    const Vec3 uL = fs.phi_P * qd_;
     const double twist_rate = fs.psi_twist.dot(qd_);
     const Vec3 F(b.Fx[j], b.Fy[j], b.Fz[j]), Mp(b.Mx[j], b.My[j], b.Mz[j]);
     const Vec3 es(kin_.esx()[j], kin_.esy()[j], kin_.esz()[j]);
     const Vec3 n(b.nx[j], b.ny[j], b.nz[j]);
     const Vec3 mid(kin_.midx()[j], kin_.midy()[j], kin_.midz()[j]);
-    // Q = Phi_L^T F + psi_twist^T (M . e_s) (structure.md 4.3).
-    Q_ref += fs.phi_L.transpose() * F + fs.psi_twist.transpose() * Mp.dot(es);
+    // Q = Phi_P^T F + psi_twist^T (M . e_s) (structure.md 4.3).
+    Q_ref += fs.phi_P.transpose() * F + fs.psi_twist.transpose() * Mp.dot(es);
     // Resultant about P2 with the apparent-mass force along n at mid-chord and couple about e_s.
     F_ref += F + ef_[j] * n;
     M_ref += sL.cross(F) + Mp + ef_[j] * mid.cross(n) + ec_[j] * es;
