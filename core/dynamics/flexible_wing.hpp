@@ -94,6 +94,11 @@ struct FlexibleWingModel {
   Eigen::Index tip_strip = 0;
   StackedStrips stacked;
 
+  /// The condensed membrane of the geometrically nonlinear wing (structure.md 3.8), empty for the
+  /// linear wing: its restoring force f_NL(q) joins K q in the modal equation.
+  const structure::ModalMembraneStiffness& membrane() const { return modal->membrane; }
+  bool nonlinear() const { return !modal->membrane.empty(); }
+
   FlexibleWingModel(const VehicleModel& vehicle,
                     std::shared_ptr<const structure::ModalWing> modal_wing,
                     const std::vector<double>& strip_chords_m,

@@ -113,6 +113,7 @@ void checkWing(Checker& c, const VehicleModel& v) {
   c.number("wing.member_diameter_scale", w.member_diameter_scale);
   checkMaterialName(c, v, "wing.skin.material", w.skin.material);
   c.number("wing.skin.thickness_m", w.skin.thickness_m);
+  c.number("wing.skin.pretension_N_per_m", w.skin.pretension_N_per_m);
   checkMembers(c, v);
 
   const WingFeSettings& fe = w.fe;
