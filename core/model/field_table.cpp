@@ -166,7 +166,7 @@ std::vector<FieldSpec> makeTable() {
              "root chord held in translation (pinned) or free"),
       choice("wing.fe.inertial_stiffness", "both | softening_only | none", "\"both\"",
              "spin softening and geometric stiffening of the inertial loads"),
-      boolean("wing.fe.nonlinear", "true",
+      boolean("wing.fe.nonlinear", "false",
               "geometrically nonlinear wing: skin membrane stretching and member stretch"),
 
       // ---- [materials.NAME] ---------------------------------------------------------------------

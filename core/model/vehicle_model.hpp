@@ -85,8 +85,10 @@ struct WingFeSettings {
   InertialStiffness inertial_stiffness = InertialStiffness::kBoth;  ///< structure.md 3.7
   /// Geometric nonlinearity of the skin and members (von Karman strains, the membrane condensed
   /// into the modal coordinates: core/structure/membrane_rom.hpp, structure.md 3.8); false = the
-  /// linear wing.
-  bool nonlinear = true;
+  /// linear wing. Off by default until its dynamics are validated: statically it matches the full
+  /// nonlinear FE solution at mid-span, but flapping, the magpie's wing takes 25 times the steps
+  /// of the linear one and shows high-frequency content not yet explained (results/README.md).
+  bool nonlinear = false;
 };
 
 /// Geometry and structure of the right wing; the left wing is its mirror image.

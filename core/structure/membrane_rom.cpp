@@ -194,22 +194,35 @@ bool solveModalStatic(const Eigen::VectorXd& stiffness_diagonal,
     membrane.addForce(x, &ws, &r);
     return r;
   };
+  auto potential = [&](const Eigen::VectorXd& x, double lambda) {
+    return 0.5 * x.dot(stiffness_diagonal.cwiseProduct(x)) + membrane.energy(x, &ws) -
+           lambda * modal_load.dot(x);
+  };
   for (int step = 1; step <= load_steps; ++step) {
     const double lambda = static_cast<double>(step) / load_steps;
     Eigen::VectorXd r = residual(*q, lambda);
     int it = 0;
     while (r.norm() > 1e-11 * lambda * f_norm) {
-      if (++it > 60) return false;
+      if (++it > 200) return false;
       Eigen::MatrixXd k = membrane.tangent(*q);
       k.diagonal() += stiffness_diagonal;
-      const Eigen::VectorXd dq = k.ldlt().solve(-r);
-      double step_length = 1.0;
-      Eigen::VectorXd r_trial = residual(*q + dq, lambda);
-      for (int h = 0; h < 12 && !(r_trial.norm() < r.norm()); ++h) {
-        step_length *= 0.5;
-        r_trial = residual(*q + step_length * dq, lambda);
+      Eigen::VectorXd dq = k.ldlt().solve(-r);
+      double slope = r.dot(dq);
+      if (!(slope < 0.0)) {  // an indefinite tangent (compressed membrane): steepest descent
+        dq = -r.cwiseQuotient(stiffness_diagonal);
+        slope = r.dot(dq);
       }
-      *q += step_length * dq;
+      // Armijo backtracking on the potential (the residual grows with the cube of a long step).
+      Eigen::VectorXd r_trial = residual(*q + dq, lambda);
+      double alpha = 1.0;
+      if (!(r_trial.norm() < r.norm())) {  // else the full step (see solveNonlinearStatic)
+        const double pi0 = potential(*q, lambda);
+        for (int h = 0; h < 40 && potential(*q + alpha * dq, lambda) > pi0 + 1e-4 * alpha * slope;
+             ++h)
+          alpha *= 0.5;
+        r_trial = residual(*q + alpha * dq, lambda);
+      }
+      *q += alpha * dq;
       r = r_trial;
     }
   }

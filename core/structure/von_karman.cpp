@@ -229,6 +229,8 @@ bool NonlinearStaticOptions::IsValid(std::string* why) const {
   if (max_newton_iterations < 1) return fail("max_newton_iterations: expected >= 1");
   if (!(force_tolerance > 0.0 && force_tolerance < 1.0))
     return fail("force_tolerance: expected in (0, 1)");
+  if (!(displacement_tolerance > 0.0 && displacement_tolerance < 1.0))
+    return fail("displacement_tolerance: expected in (0, 1)");
   return true;
 }
 
@@ -282,9 +284,24 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
     *full = expandRows(uf, free, n);
     return Eigen::VectorXd(k_ff * uf + restrict(terms.internalForce(*full)) - lambda * f_free);
   };
-  Eigen::VectorXd u_full(n), du(nf);
+  // The total potential Pi(u) = 1/2 u^T K u + Pi_NL(u) - lambda F^T u, whose stationary point
+  // the residual seeks: the merit function of the line search. From a soft start (a film) the
+  // first Newton step is the linear solution, orders of magnitude too large, where the residual
+  // norm is useless as a merit (it grows with the cube of the step) but the potential is not.
+  auto potential = [&](const Eigen::VectorXd& uf, const Eigen::VectorXd& full, double lambda) {
+    return 0.5 * uf.dot(k_ff * uf) + terms.energy(full) - lambda * f_free.dot(uf);
+  };
+  Eigen::VectorXd u_full(n), du(nf), trial_full(n);
+  // Load fractions in geometric progression from 1 % (a film's first increments carry it from
+  // plate to membrane) with a membrane predictor u ~ lambda^(1/3) between increments.
+  double previous_lambda = 0.0;
   for (int step = 1; step <= options.load_steps; ++step) {
-    const double lambda = static_cast<double>(step) / options.load_steps;
+    const double lambda =
+        options.load_steps == 1
+            ? 1.0
+            : std::pow(0.01, static_cast<double>(options.load_steps - step) / (options.load_steps - 1));
+    if (previous_lambda > 0.0) u_free *= std::cbrt(lambda / previous_lambda);
+    previous_lambda = lambda;
     const double tol = options.force_tolerance * lambda * f_norm;
     Eigen::VectorXd r = residual(u_free, lambda, &u_full);
     bool done = r.norm() <= tol;
@@ -296,19 +313,34 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
         res.displacement = u_full;
         return res;
       }
-      // Backtracking on the residual norm (the cubic stiffening makes full steps overshoot
-      // from a soft start).
-      double step_length = 1.0;
-      Eigen::VectorXd trial_full(n);
-      Eigen::VectorXd r_trial = residual(u_free + du, lambda, &trial_full);
-      for (int halving = 0; halving < 12 && !(r_trial.norm() < r.norm()); ++halving) {
-        step_length *= 0.5;
-        r_trial = residual(u_free + step_length * du, lambda, &trial_full);
+      double slope = r.dot(du);  // d Pi / d alpha at alpha = 0
+      if (!(slope < 0.0)) {      // not a descent direction (an indefinite tangent): steepest descent
+        du = -r * (r.squaredNorm() / std::max(r.dot(k_ff * r), 1e-300));
+        slope = r.dot(du);
       }
-      u_free += step_length * du;
-      r = r_trial;
+      // The full Newton step when it reduces the residual (near the solution, where the
+      // potential's decrease is below its round-off); else Armijo backtracking on the potential.
+      Eigen::VectorXd trial = u_free + du;
+      Eigen::VectorXd r_trial = residual(trial, lambda, &trial_full);
+      if (!(r_trial.norm() < r.norm())) {
+        const double pi0 = potential(u_free, u_full, lambda);
+        double alpha = 1.0;
+        for (int halving = 0; halving < 40; ++halving) {
+          if (potential(trial, trial_full, lambda) <= pi0 + 1e-4 * alpha * slope) break;
+          alpha *= 0.5;
+          trial = u_free + alpha * du;
+          trial_full = expandRows(trial, free, n);
+        }
+        r_trial = residual(trial, lambda, &trial_full);
+      }
+      const double step_norm = (trial - u_free).norm();
+      u_free = trial;
       u_full = trial_full;
-      done = r.norm() <= tol;
+      r = r_trial;
+      // Converged on the residual, or on a Newton correction at round-off of the displacement
+      // (stiff members and a film in one model: their internal forces cancel to ~1e-12 of the
+      // largest, which can lie above a small load's tolerance).
+      done = r.norm() <= tol || step_norm <= options.displacement_tolerance * u_free.norm();
     }
     if (!done) {
       res.message = "Newton did not converge at load fraction " + std::to_string(lambda) +

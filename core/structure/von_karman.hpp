@@ -80,9 +80,10 @@ class VonKarmanTerms {
 
 struct NonlinearStaticOptions {
   bool nonlinear = true;         ///< false: the linear solution K u = F (for comparison)
-  int load_steps = 8;            ///< load increments, geometric (the last is the full load)
-  int max_newton_iterations = 40;  ///< per increment
-  double force_tolerance = 1e-8;   ///< |residual| <= tol * |F| on the free DOFs
+  int load_steps = 8;            ///< load increments, geometric from 1 % to the full load
+  int max_newton_iterations = 60;  ///< per increment
+  double force_tolerance = 1e-8;   ///< converged: |residual| <= tol * |F| on the free DOFs,
+  double displacement_tolerance = 1e-10;  ///< or a Newton correction <= tol * |u|
   bool IsValid(std::string* why) const;
 };
 
@@ -95,8 +96,8 @@ struct NonlinearStaticResult {
 };
 
 /// Solves K u + grad Pi_NL(u) = F on the retained DOFs of `part` (interior and free boundary;
-/// the clamped DOFs held at zero) by Newton's method with load increments and a backtracking
-/// line search on the residual. `stiffness` is the assembled (possibly prestressed) K.
+/// the clamped DOFs held at zero) by Newton's method with load increments and an Armijo line
+/// search on the total potential energy. `stiffness` is the assembled (possibly prestressed) K.
 NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
                                            const VonKarmanTerms& terms, const DofPartition& part,
                                            const Eigen::VectorXd& load,

@@ -10,6 +10,7 @@
 // - the condensed modal membrane against the full nonlinear FE solution restricted to the same
 //   modes, and, with enough modes, against the full solution itself.
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -168,12 +169,18 @@ TEST(FeVonKarman, ClampedCircularPlateLinearRegime) {
 
 TEST(FeVonKarman, ClampedCircularPlateModerateDeflectionsMatchTimoshenko) {
   const ClampedDisc d = clampedDisc(14);
-  for (double target_ratio : {1.0, 2.0, 3.0}) {
+  // w0/h = 1 and 2: beyond, the one-term approximation's own error grows towards its membrane
+  // limit, where it lies 6.4 % above Hencky's exact membrane (0.7045 a (qa/Eh)^(1/3) against
+  // 0.662); measured here: -2.5 % at 1, -4.9 % at 2, -6.3 % at 3, and -1.3 % from Hencky at 20.
+  for (double target_ratio : {1.0, 2.0}) {
     // The pressure at which Timoshenko's approximation gives w0/h = target_ratio.
     const double load_parameter = target_ratio + 0.488 * std::pow(target_ratio, 3);
     const double q = load_parameter * 64.0 * d.rigidity() * d.thickness_m / std::pow(d.radius_m, 4);
     const double w0 = centreDeflection(d, q, true);
     const double ratio = w0 / d.thickness_m;
+    std::printf("clamped disc: Timoshenko w0/h %.3f, ours %.3f (%+.1f %%)\n",
+                timoshenkoDeflectionRatio(load_parameter), ratio,
+                100.0 * (ratio / timoshenkoDeflectionRatio(load_parameter) - 1.0));
     fe_test::recordError(("timoshenko_rel_error_" + std::to_string(static_cast<int>(target_ratio))).c_str(),
                          ratio / timoshenkoDeflectionRatio(load_parameter) - 1.0);
     // 5 %: Timoshenko's one-term energy solution is itself within a few per cent of Way's
@@ -193,6 +200,8 @@ TEST(FeVonKarman, ClampedCircularPlateMembraneLimitMatchesHencky) {
   const double hencky = 0.662 * d.radius_m * std::cbrt(q * d.radius_m / (d.youngs_pa * d.thickness_m));
   const double w0 = centreDeflection(d, q, true);
   fe_test::recordError("hencky_rel_error", w0 / hencky - 1.0);
+  std::printf("clamped disc: Hencky w0/h %.3f, ours %.3f (%+.1f %%)\n", hencky / d.thickness_m,
+              w0 / d.thickness_m, 100.0 * (w0 / hencky - 1.0));
   EXPECT_GT(w0 / d.thickness_m, 15.0);
   // 5 %: the remaining bending stiffness (< 1 %) and the mesh's membrane discretisation (linear
   // w per facet in the membrane strain).
@@ -215,7 +224,7 @@ TEST(FeMembraneRom, CondensedEnergyIsTheFullEnergyWithTheMembraneRelaxed) {
   const int m = mw.modeCount();
   const VonKarmanTerms terms(w.vehicle, w.mesh);
   const WingFeModel fe = assembleWingFe(w.vehicle, w.mesh);
-  Eigen::VectorXd q = Eigen::VectorXd::Random(m) * 2e-4;  // mm-size deflections
+  Eigen::VectorXd q = Eigen::VectorXd::Random(m) * 2e-6;  // 0.1 mm-size deflections
   const Eigen::VectorXd u_w = mw.mode_shapes * q;
   const Eigen::VectorXd u_m = mw.membrane.membraneDisplacement(q);
   const Eigen::VectorXd u = u_w + u_m;
@@ -227,18 +236,21 @@ TEST(FeMembraneRom, CondensedEnergyIsTheFullEnergyWithTheMembraneRelaxed) {
   // Pi_NL(u) also holds (u_m-only) terms of order |u_m|^3 that the condensation drops: the
   // in-plane relaxation's own slopes, ~ (u_m / h)^2 relative.
   EXPECT_NEAR(full / condensed, 1.0, 1e-3);
-  // In-plane equilibrium of the relaxed membrane: K u_m + (in-plane part of grad Pi_NL) = 0 on
-  // the free in-plane DOFs, to the same order.
-  const Eigen::VectorXd residual = fe.stiffness * u_m + terms.internalForce(u);
+  // In-plane equilibrium of the relaxed membrane under the quadratic strains of u_w:
+  // K u_m + (in-plane part of grad Pi_NL(u_w)) = 0 on the free in-plane DOFs (the defining
+  // equation of the condensation; at u = u_w + u_m the members' tension times the relaxation's own
+  // transverse slopes adds terms of order q^4, ~1 % here, which the condensation drops).
+  const Eigen::VectorXd f_w = terms.internalForce(u_w);
+  const Eigen::VectorXd residual = fe.stiffness * u_m + f_w;
   const DofPartition part = makeDofPartition(fe.active, wingBoundaryDofs(w.mesh, options.support));
   double worst = 0.0, scale = 0.0;
   for (int dof : part.retained()) {
     const int slot = dof % kDofsPerNode;
     if (slot != kU && slot != kV) continue;
     worst = std::max(worst, std::abs(residual(dof)));
-    scale = std::max(scale, std::abs(terms.internalForce(u)(dof)));
+    scale = std::max(scale, std::abs(f_w(dof)));
   }
-  EXPECT_LT(worst, 1e-3 * scale);
+  EXPECT_LT(worst, 1e-9 * scale);  // a sparse direct solve: round-off
   // Force = gradient of the potential; tangent = its Hessian.
   Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
   mw.membrane.addForce(q, &ws, &f);
@@ -275,8 +287,8 @@ TEST(FeMembraneRom, WithAllBendingModesTheReducedStaticIsTheFullOne) {
   // Every out-of-plane mode of the interior: 3 DOF x 25 interior nodes.
   const SparseMatrix k_ii = extractBlock(fe.stiffness, part.interior, part.interior);
   const SparseMatrix m_ii = extractBlock(fe.mass, part.interior, part.interior);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(Eigen::MatrixXd(k_ii),
-                                                                     Eigen::MatrixXd(m_ii));
+  const Eigen::MatrixXd k_dense(k_ii), m_dense(m_ii);
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k_dense, m_dense);
   const Eigen::MatrixXd all = expandRows(eig.eigenvectors(), part.interior, fe.dofCount());
   std::vector<int> bending;
   for (Eigen::Index c = 0; c < all.cols(); ++c) {
@@ -296,7 +308,7 @@ TEST(FeMembraneRom, WithAllBendingModesTheReducedStaticIsTheFullOne) {
   const VonKarmanTerms terms(v, mesh);
   const ModalMembraneStiffness rom =
       modalMembraneStiffness(terms, fe.stiffness, part, mesh.nodes_W_m, shapes);
-  const Eigen::VectorXd load = pressureLoad(mesh, 20.0);
+  const Eigen::VectorXd load = pressureLoad(mesh, 40.0);
   NonlinearStaticOptions options;
   options.load_steps = 10;
   const NonlinearStaticResult full = solveNonlinearStatic(fe.stiffness, terms, part, load, options);
