@@ -12,6 +12,7 @@
 #include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/journal_file.hpp"
 #include "trim/aero_map_options.hpp"
 
 namespace orni::studies::cli {
@@ -24,6 +25,7 @@ struct AeromapArgs {
   std::string vehicle, speed, freq, theta, tail;
   std::optional<std::string> out;
   std::optional<std::string> cycles, jobs;
+  bool fresh = false;
 };
 
 int runAeromap(const AeromapArgs& a) {
@@ -46,9 +48,10 @@ int runAeromap(const AeromapArgs& a) {
         static_cast<int>(optionValue("--cycles", "aeromap.cycles", *a.cycles));
   AeromapRunOptions opts;
   opts.threads = jobsOption(a.jobs);
+  setFreshRun(a.fresh);
   const fs::path out = outputFolder(a.out, study, false);
   std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
-  if (farmWriter()) lock.emplace(out);
+  if (farmWriter()) lock.emplace(out, FolderUse::kRun, "aeromap");
   return runAeromapStudy(study, out, opts);
 }
 
@@ -78,6 +81,7 @@ Subcommand addAeromapSubcommand(CLI::App& app) {
                  "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
                  "resumes from the journal there")
       ->check(nonEmptyPath());
+  am->add_flag("--fresh", a->fresh, kFreshHelp);
   return {am, [a] { return runAeromap(*a); }, true};
 }
 

@@ -35,7 +35,7 @@ int runStability(const StabilityArgs& a) {
   std::string why;
   if (!o.IsValid(&why)) throw CliError("command line: stability options: " + why);
   const std::filesystem::path out = outputFolder(a.out, study, false);
-  const OutputFolderLock lock(out);
+  const OutputFolderLock lock(out, FolderUse::kRun, "stability");
   try {
     return runPeriodicTrimStudy(study, out, PeriodicRunKind::kStability);
   } catch (const InvalidModelError& e) {

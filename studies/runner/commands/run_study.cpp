@@ -86,7 +86,7 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
 
 int runStudyLocked(const Study& study, const fs::path& out_dir, int jobs) {
   std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
-  if (farmWriter()) lock.emplace(out_dir);
+  if (farmWriter()) lock.emplace(out_dir, FolderUse::kRun, std::string(toString(study.kind)));
   return runStudy(study, out_dir, jobs);
 }
 
