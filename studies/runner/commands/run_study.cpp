@@ -18,6 +18,7 @@
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/heartbeat.hpp"
 
 namespace fs = std::filesystem;
 
@@ -35,9 +36,18 @@ bool spreadsPoints(StudyKind kind) {
          kind == StudyKind::kSensitivity || kind == StudyKind::kOptimize;
 }
 
+/// The kinds that have no points to count: a heartbeat line shows they are running (issue 30,
+/// item 6); the others print their own progress (points, evaluations).
+bool needsHeartbeat(StudyKind kind) {
+  return kind == StudyKind::kSimulate || kind == StudyKind::kTrim ||
+         kind == StudyKind::kCalibrate || kind == StudyKind::kContinuation;
+}
+
 int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
   // A worker rank of a distributed run: the sequential kinds are rank 0's alone.
   if (!farmWriter() && !spreadsPoints(study.kind)) return 0;
+  std::optional<Heartbeat> heartbeat;
+  if (needsHeartbeat(study.kind)) heartbeat.emplace(std::string(toString(study.kind)));
   switch (study.kind) {
     case StudyKind::kSimulate:
       return runSimulateStudy(study, out_dir);
