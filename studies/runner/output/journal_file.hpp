@@ -4,15 +4,15 @@
 //
 // Opening reads an existing file: when its first line is the expected header, each complete line
 // is offered to the caller's `keep` (which parses and stores it); a torn last line (no newline)
-// and every line `keep` refuses are dropped. A non-empty file with another header is the journal
-// of another study, grid or version (the finished points of an interrupted run): opening refuses
-// it (ForeignJournalError, bad input for the CLI: exit 2, naming the folder and --fresh) and
-// leaves it untouched, unless the run was started fresh (setFreshRun(true), the CLI's --fresh):
-// then any journal there is discarded and the run starts afresh. The file is then rewritten atomically with the header
-// and the kept lines only, so that later appends never follow a torn fragment, and kept open for
-// appending. Each append is one write(2) (a killed process loses nothing written); fdatasync runs
-// at most once a second and at close (an operating-system crash may lose the last second).
-// Appends are thread-safe.
+// and every line `keep` refuses are dropped. A file with another header and records after it is
+// the journal of another study, grid or version (the finished points of an interrupted run):
+// opening refuses it (ForeignJournalError, bad input for the CLI: exit 2, naming the folder and
+// --fresh) and leaves it untouched, unless the run was started fresh (setFreshRun(true), the
+// CLI's --fresh): then any journal there is discarded and the run starts afresh. The file is then
+// rewritten atomically with the header and the kept lines only, so that later appends never
+// follow a torn fragment, and kept open for appending. Each append is one write(2) (a killed
+// process loses nothing written); fdatasync runs at most once a second and at close (an
+// operating-system crash may lose the last second). Appends are thread-safe.
 #pragma once
 
 #include <cstdint>

@@ -2,9 +2,10 @@
 // its header comment: a new file holds the header line only; records appended survive a reopen
 // with the same header and reach `keep` in file order; a torn last line and every refused line are
 // dropped, counted and removed from the file before the next append; a different header (another
-// run's fingerprint) with records is refused and kept, started afresh only with --fresh; reopening is atomic (a failure while
-// reading leaves the old bytes and no temporary file); append after remove() throws; appends from
-// several threads never interleave. The truth is the exact file bytes.
+// run's fingerprint) with records is refused and kept, started afresh only with --fresh;
+// reopening is atomic (a failure while reading leaves the old bytes and no temporary file); append
+// after remove() throws; appends from several threads never interleave. The truth is the exact
+// file bytes.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
