@@ -8,7 +8,8 @@
 #     free leaves no cycles.csv, zmp.csv or loads.*; aeromap then simulate no aeromap.*), and
 #     `plot` draws only the figures of the kind the folder's summary.json names;
 #   - item 5: every output-path problem exits 2 naming the path (-o at a file, at a symlink loop,
-#     at a dangling symlink, at a read-only folder when not root); none is "File exists".
+#     at a dangling symlink, at a read-only folder when not root, --export-ccx through a file);
+#     none is "File exists".
 #   usage: bash cli_run_folder.sh <ornithopter-binary> <repo-root> <scratch-dir>
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
@@ -97,4 +98,8 @@ done
 check "aeromap -o a_file: exit 2" test $? -eq 2
 "$bin" run "$study" -o a_file > /dev/null 2> "$scratch/path.err"
 check "run -o a_file: exit 2" test $? -eq 2
+"$bin" modes "$efw" -o "$scratch/modes" --export-ccx a_file/wing.inp > /dev/null 2> "$scratch/path.err"
+rc=$?
+check "modes --export-ccx a_file/wing.inp: exit 2 ($rc), naming the path" \
+  bash -c "test $rc -eq 2 && grep -qF a_file/wing.inp '$scratch/path.err'"
 exit $fail
