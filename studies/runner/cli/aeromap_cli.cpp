@@ -1,6 +1,7 @@
 // `ornithopter aeromap VEHICLE --speed A:B:N --freq .. --theta .. [--tail ..] [--cycles] [-j]
 // [-o]`.
 // [-o]`.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -41,8 +42,14 @@ int runAeromap(const AeromapArgs& a) {
         "command line: options --speed, --freq, --theta, --tail: expected a grid of "
         "at most " +
         std::to_string(kMaxAeroMapPoints) + " points, got " + std::to_string(points));
+  const bool nonzero_tail =
+      tail && std::any_of(tail->values.begin(), tail->values.end(),
+                          [](double v) { return v != 0.0; });
   Study study = aeromapStudyFromVehicle(a.vehicle, std::move(speed), std::move(freq),
                                         std::move(theta), std::move(tail));
+  if (nonzero_tail && !study.vehicle.tail.present)
+    throw CliError("command line: option --tail: expected 0 or no tail angle (key "
+                   "aeromap.tail_angle_deg): the vehicle has no [tail], got '" + a.tail + "'");
   if (a.cycles)
     study.aeromap().options.cycles =
         static_cast<int>(optionValue("--cycles", "aeromap.cycles", *a.cycles));
