@@ -69,6 +69,20 @@ check "... the figure program is stopped" bash -c "! kill -0 $(cat "$scratch/fak
 check "... no temporary file, drawing folder or lock left" clean_folder "$out"
 check "... no 'gnuplot failed' message" bash -c "! grep -q 'gnuplot failed' '$scratch/figures.log'"
 
+# Ctrl-C at a terminal: SIGINT to the whole process group, the figure program included.
+rm -f "$scratch/fake.pid"
+out="$scratch/figures_group"
+ORNI_GNUPLOT="$fake" "$bin" simulate "$rfw" --cycles 2 -o "$out" > "$scratch/figures_group.log" 2>&1 &
+pid=$!
+wait_for 30 test -s "$scratch/fake.pid"
+kill -INT -- "-$pid"  # the job's process group (set -m: its leader is the run)
+wait "$pid"; rc=$?
+check "SIGINT to the process group while drawing: exit 130 ($rc)" test "$rc" -eq 130
+check "... summary.json says interrupted ($(json "$out/summary.json" status))" \
+  test "$(json "$out/summary.json" status)" = interrupted
+check "... no 'gnuplot failed' message" bash -c "! grep -q 'gnuplot failed' '$scratch/figures_group.log'"
+check "... no temporary file, drawing folder or lock left" clean_folder "$out"
+
 # ---- an aero map: the journal is kept and the same command resumes ------------------------------
 out="$scratch/map"
 grid=(--speed 4:8:5 --freq 3:5:5 --theta 0:20:5 --cycles 6)

@@ -69,7 +69,11 @@ int runGnuplot(const fs::path& cwd, const fs::path& log, const std::vector<std::
     }
     ::usleep(polls < 50 ? 2000 : 20000);  // quick figures return fast; then 50 polls a second
   }
-  if (cancellationRequested()) throw Cancelled{};  // Ctrl-C reached gnuplot and us alike
+  // Ctrl-C reached gnuplot and us alike: our handler may still be running on another thread
+  // when gnuplot's death is seen, so an interrupt signal gets a moment to be noted.
+  if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
+    for (int i = 0; i < 50 && !cancellationRequested(); ++i) ::usleep(2000);
+  if (cancellationRequested()) throw Cancelled{};
   if (WIFEXITED(status)) return WEXITSTATUS(status);
   return -1;
 }
