@@ -4,7 +4,6 @@
 #include <mutex>
 #include <regex>
 #include <set>
-#include <sstream>
 #include <system_error>
 
 namespace orni::studies {
