@@ -275,8 +275,8 @@ TEST(FeMembraneRom, WithAllBendingModesTheReducedStaticIsTheFullOne) {
   // Every out-of-plane mode of the interior: 3 DOF x 25 interior nodes.
   const SparseMatrix k_ii = extractBlock(fe.stiffness, part.interior, part.interior);
   const SparseMatrix m_ii = extractBlock(fe.mass, part.interior, part.interior);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(Eigen::MatrixXd(k_ii),
-                                                                     Eigen::MatrixXd(m_ii));
+  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig{Eigen::MatrixXd(k_ii),
+                                                                     Eigen::MatrixXd(m_ii)};
   const Eigen::MatrixXd all = expandRows(eig.eigenvectors(), part.interior, fe.dofCount());
   std::vector<int> bending;
   for (Eigen::Index c = 0; c < all.cols(); ++c) {
