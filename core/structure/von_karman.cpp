@@ -296,14 +296,59 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
         res.displacement = u_full;
         return res;
       }
-      // Backtracking on the residual norm (the cubic stiffening makes full steps overshoot
-      // from a soft start).
       double step_length = 1.0;
       Eigen::VectorXd trial_full(n);
       Eigen::VectorXd r_trial = residual(u_free + du, lambda, &trial_full);
-      for (int halving = 0; halving < 12 && !(r_trial.norm() < r.norm()); ++halving) {
-        step_length *= 0.5;
-        r_trial = residual(u_free + step_length * du, lambda, &trial_full);
+      const double slope0 = du.dot(r);
+      if (slope0 < 0.0) {
+        // Line search on the potential Pi(u) = 1/2 u^T K u + Pi_NL(u) - lambda F^T u, whose
+        // slope along du is g(s) = du^T r(u + s du) (a cubic in s), to its first minimum g = 0
+        // (bracketing, then Illinois regula falsi on exact slopes). The full step is taken as
+        // soon as |g(1)| <= 0.5 |g(0)|, which keeps Newton's quadratic convergence near the
+        // solution. (The residual norm is no merit function here: from a flat thin skin the
+        // first Newton step is the linear solution, hundreds of thicknesses deep on the EFW,
+        // whose membrane forces exceed the load for any step longer than ~1e-3; backtracking
+        // on |r| then crept by such steps and stalled at 1/8 of the EFW's lift pressure.)
+        // The Newton direction of a positive definite tangent descends: g(0) = -du^T K_t du.
+        double s_hi = 1.0, g_hi = du.dot(r_trial);
+        if (std::abs(g_hi) > 0.5 * std::abs(slope0)) {
+          double s_lo = 0.0, g_lo = slope0;
+          while (g_hi < 0.0 && s_hi < 64.0) {  // still descending at s_hi: widen the bracket
+            s_lo = s_hi;
+            g_lo = g_hi;
+            s_hi *= 2.0;
+            r_trial = residual(u_free + s_hi * du, lambda, &trial_full);
+            g_hi = du.dot(r_trial);
+          }
+          step_length = s_hi;
+          if (g_hi > 0.0) {
+            int side = 0;
+            for (int k = 0; k < 40; ++k) {
+              const double s_new = (s_lo * g_hi - s_hi * g_lo) / (g_hi - g_lo);
+              r_trial = residual(u_free + s_new * du, lambda, &trial_full);
+              const double g_new = du.dot(r_trial);
+              step_length = s_new;
+              if (std::abs(g_new) <= 0.1 * std::abs(slope0)) break;
+              if (g_new < 0.0) {
+                s_lo = s_new;
+                g_lo = g_new;
+                if (side == -1) g_hi *= 0.5;
+                side = -1;
+              } else {
+                s_hi = s_new;
+                g_hi = g_new;
+                if (side == 1) g_lo *= 0.5;
+                side = 1;
+              }
+            }
+          }
+        }
+      } else {
+        // Not a descent direction (an indefinite tangent): backtracking on the residual norm.
+        for (int halving = 0; halving < 12 && !(r_trial.norm() < r.norm()); ++halving) {
+          step_length *= 0.5;
+          r_trial = residual(u_free + step_length * du, lambda, &trial_full);
+        }
       }
       u_free += step_length * du;
       r = r_trial;

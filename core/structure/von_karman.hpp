@@ -95,8 +95,10 @@ struct NonlinearStaticResult {
 };
 
 /// Solves K u + grad Pi_NL(u) = F on the retained DOFs of `part` (interior and free boundary;
-/// the clamped DOFs held at zero) by Newton's method with load increments and a backtracking
-/// line search on the residual. `stiffness` is the assembled (possibly prestressed) K.
+/// the clamped DOFs held at zero) by Newton's method with load increments and a line search on
+/// the potential (to the first minimum of the energy along the Newton direction; backtracking on
+/// the residual norm when the tangent is indefinite). `stiffness` is the assembled (possibly
+/// prestressed) K.
 NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
                                            const VonKarmanTerms& terms, const DofPartition& part,
                                            const Eigen::VectorXd& load,
