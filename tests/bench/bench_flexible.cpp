@@ -4,11 +4,11 @@
 //   BM_EfwModalWingBuild: mesh (5 mm) + assembly + eigen-solution + reduction (incl. the
 //     geometric-stiffness projections and, nonlinear:1, the condensed membrane of the
 //     geometrically nonlinear wing, structure.md 3.8); modes:0 = the vehicle's 24, modes:12 = the
-//     count of earlier versions (the like-for-like comparison with their figures). Target
-//     (issue 26): <= 0.5 s with the nonlinear identification.
+//     count of earlier versions (the like-for-like comparison with their figures). Target:
+//     <= 0.5 s with the nonlinear identification.
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the vehicle's operating point, MST-TD;
-//     modes as above; nonlinear:0 the linear wing, 1 the nonlinear (the default). Target
-//     (issue 26): nonlinear within 2x the linear.
+//     modes as above; nonlinear:0 the linear wing (the default), 1 the nonlinear. Target:
+//     nonlinear within 2x the linear.
 //   BM_FlexibleTetheredRhs: one right-hand side of that run.
 #include <benchmark/benchmark.h>
 

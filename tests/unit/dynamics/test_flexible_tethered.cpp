@@ -236,7 +236,7 @@ TEST(DynamicsFlexibleTethered, CycleMeansConvergeInModeCountAndMeshSize) {
 namespace orni {
 namespace {
 
-// Issue 26 acceptance (energy): with the geometrically nonlinear wing (the membrane condensed
+// Energy: with the geometrically nonlinear wing (the membrane condensed
 // into the modes, structure.md 3.8), over a periodic cycle the work of the hinges equals the
 // aerodynamic work plus the structural damping, to 1e-3 per cycle. The sampled hinge power is
 // the nodal-sum power (aero + rate of kinetic energy + rate of strain energy, the membrane's

@@ -1,4 +1,4 @@
-// Nonlinear statics against independent truths (issue 26; structure.md 3.8, 6): our von Karman
+// Nonlinear statics against independent truths (structure.md 3.8, 6): our von Karman
 // solve (core/structure/von_karman.hpp) against CalculiX 2.20 with NLGEOM (a full large-rotation
 // shell and beam solution) on the same mesh, S6 skin + B32R rods (calculix_deck.hpp). Needs `ccx`
 // on PATH (Debian calculix-ccx); skipped without it.
@@ -132,7 +132,7 @@ TEST(StructureCalculixNonlinear, ClampedPlateCentreDeflectionMatchesCcxNlgeom) {
           << fmt("%13.3f", hencky / c.thickness_m) << fmt("%12.4f", w_ours / c.thickness_m)
           << fmt("%11.4f", w_ccx / c.thickness_m) << fmt("%11.4f", w_ours / w_ccx) << "\n";
     fe_test::recordError(("ours_over_ccx_wh_" + fmt("%g", ratios[k])).c_str(), w_ours / w_ccx - 1.0);
-    // 3 %: issue 26's acceptance (two different discretisations of the same plate; measured
+    // 3 %: the acceptance tolerance (two different discretisations of the same plate; measured
     // <= 1.9 %, the largest in the linear regime, where ccx's S6 is 1.7 % stiffer than Kirchhoff's
     // a^4 / (64 D) and ours 0.2 % softer).
     EXPECT_NEAR(w_ours / w_ccx, 1.0, 0.03) << "Timoshenko w0/h " << ratios[k];
@@ -262,7 +262,7 @@ TEST(StructureCalculixNonlinear, EfwNonlinearDeflectionUnderLiftPressure) {
                 1e3 * u(2, c.mid_te));
     fe_test::recordError(("tip_ours_over_ccx_" + level).c_str(), tip / u(2, c.tip) - 1.0);
     fe_test::recordError(("mid_te_ours_over_ccx_" + level).c_str(), te / u(2, c.mid_te) - 1.0);
-    // 5 %: issue 26's acceptance.
+    // 5 %: the acceptance tolerance.
     EXPECT_NEAR(tip / u(2, c.tip), 1.0, 0.05);
     EXPECT_NEAR(te / u(2, c.mid_te), 1.0, 0.05);
   }

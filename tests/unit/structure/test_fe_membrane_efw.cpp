@@ -1,7 +1,7 @@
 // The condensed membrane (membrane_rom.hpp) on the literal EFW against the full nonlinear FE
 // solution (von_karman.hpp) of the same wing under the same load: a uniform 53 Pa upward on the
 // skin, about the rigid wing's mean lift per area at Table 3's point (2.3 N on 0.044 m^2).
-// Issue 26 acceptance: deflections within 5 %, section pitch within 0.3 deg.
+// Acceptance: deflections within 5 %, section pitch within 0.3 deg.
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -17,8 +17,8 @@ namespace orni::structure {
 namespace {
 
 constexpr double kLiftPressure_Pa = 53.0;
-constexpr double kDeflectionTol = 0.05;   // issue 26: 5 %
-constexpr double kPitchTol_deg = 0.3;     // issue 26: 0.3 deg
+constexpr double kDeflectionTol = 0.05;   // acceptance: 5 %
+constexpr double kPitchTol_deg = 0.3;     // acceptance: 0.3 deg
 
 // Upward (-z_W: z_W points down) uniform pressure, consistent nodal loads of linear triangles.
 Eigen::VectorXd liftLoad(const WingMesh& mesh, double pressure_pa) {
