@@ -31,7 +31,7 @@ set -e
 
 tpl="$base/table.txt"
 cat > "$tpl" <<TABLE
-setup: the published trim point reproduced (paper Table 3 and section 4; ours: $out/table3_trim/summary.json)
+setup: the published trim point (paper Table 3, section 4) against ours, a prediction of the honest vehicle, not a fit: no reproduction is claimed (ours: $out/table3_trim/summary.json)
                                  paper      ours
   flapping frequency (Hz)        12.0       {{ j:table3_trim/summary.json:freq_hz %.1f }}
   mean pitch theta_MEAN (deg)    9.2        {{ j:table3_trim/summary.json:theta_mean_deg %.2f }}

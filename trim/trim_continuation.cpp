@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 
 #include "core/analysis/floquet.hpp"
@@ -23,6 +24,39 @@ int mapIndex(PeriodicControl c) {
 
 double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// The smallest first step, as a fraction of |to - start|.
+constexpr double kStepFloorOfRange = 1e-6;
+
+/// "completed" only when the last regular point is at `to`: the core stops at either end of
+/// [min(start, to), max(start, to)], and a branch that comes back to its start (turned by a fold,
+/// or wandering without moving the parameter) has not reached the end the study asked for.
+void checkEndReached(const TrimContinuationOptions& options, double lambda0,
+                     const std::vector<TrimContinuationPoint>& resume,
+                     const ContinuationSummary& c, TrimContinuationSummary* s) {
+  const ContinuationPoint* last = nullptr;
+  bool fold = false;
+  auto see = [&](const ContinuationPoint& pt) {
+    if (pt.event.empty()) last = &pt;
+    fold = fold || pt.event == "fold";
+  };
+  for (const TrimContinuationPoint& pt : resume) see(pt.orbit);  // a resumed run's first part
+  for (const ContinuationPoint& pt : c.points) see(pt);
+  const double tol = 1e-9 * std::max(1.0, std::abs(options.to));
+  if (last && std::abs(last->lambda - options.to) <= tol) return;
+  char buf[320];
+  std::snprintf(buf, sizeof buf,
+                "the branch did not reach the end of the range %.6g: %s at %.6g after %d points",
+                options.to,
+                fold ? "it turned back at a fold and left the range at its start value"
+                     : "the parameter did not advance (no fold) and the branch left the range "
+                       "at its start value",
+                last ? last->lambda : lambda0, last ? last->index : 0);
+  // A fold that turns the branch back is a physical outcome; a parameter that does not advance
+  // without one is a failure to make progress.
+  s->status = fold ? ContinuationStatus::kNotConverged : ContinuationStatus::kFailed;
+  s->message = buf;
 }
 
 }  // namespace
@@ -83,6 +117,22 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
   if (options.to == lambda0) {
     s.status = ContinuationStatus::kFailed;
     s.message = "the end of the branch equals the start value";
+    s.wall_time_s = seconds(t0);
+    return s;
+  }
+  // A first step below its floor cannot move the parameter measurably: the corrector's noise
+  // (residual_tol) moves the point more than the step does, and the branch may wander back to its
+  // start and "reach the end of the range" there (issue 30, item 1).
+  const double step_floor = kStepFloorOfRange * std::abs(options.to - lambda0);
+  if (options.step < step_floor) {
+    char buf[320];
+    std::snprintf(buf, sizeof buf,
+                  "the first step %.3g is below its floor %.3g (%.0e of the range from the start "
+                  "%.6g to %.6g; parameter units, rad for an angle): the parameter cannot move "
+                  "measurably; give a larger step",
+                  options.step, step_floor, kStepFloorOfRange, lambda0, options.to);
+    s.status = ContinuationStatus::kFailed;
+    s.message = buf;
     s.wall_time_s = seconds(t0);
     return s;
   }
@@ -182,6 +232,7 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
       so, co, forward, prepare, from, on_resume);
   s.status = c.status;
   s.message = c.message;
+  if (c.status == ContinuationStatus::kCompleted) checkEndReached(options, lambda0, resume, c, &s);
   if (sampling_failed) {
     s.status = ContinuationStatus::kFailed;
     s.message = "a point's orbit could not be sampled: " + sample_why;

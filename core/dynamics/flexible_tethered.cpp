@@ -22,6 +22,8 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       data_(model),
       q_(mode_count_), qd_(mode_count_), qdd_(mode_count_), Q_(mode_count_), rhs_vec_(mode_count_),
       frame_inertia_(mode_count_),
+      membrane_force_(Eigen::VectorXd::Zero(mode_count_)),
+      membrane_ws_(flex.membrane().pairCount()),
       mass_base_packed_(packedLower(flex.M_qq + flex.stacked.apparent_const)),
       chol_(mode_count_),
       kin_(flex.stacked, flex.mode_count),
@@ -98,6 +100,11 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   modalFrameInertia(flex_, q_, qd_, flap.phi_dot_radps, flap.phi_ddot_radps2, &frame_inertia_);
   rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_) -
              frame_inertia_;
+  if (flex_.nonlinear()) {  // the skin's membrane stretching (structure.md 3.8)
+    membrane_force_.setZero();
+    flex_.membrane().addForce(q_, &membrane_ws_, &membrane_force_);
+    rhs_vec_ -= membrane_force_;
+  }
   qdd_ = rhs_vec_;
   if (chol_.factorPacked(packed_.data()))
     chol_.solveInPlace(qdd_);
@@ -184,7 +191,8 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   // hold the spin softening but not the stiffening, structure.md 3.7) + damping dissipation.
   rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
   const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
-                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
+                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_) +
+                             qd_.dot(membrane_force_);  // d V_NL / dt (zero when linear)
   const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
   const double hinge = aero.power_aero_W + kinetic_rate + omega_W_.dot(J_alpha) + strain_rate +
                        damping_power;

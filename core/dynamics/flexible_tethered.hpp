@@ -61,6 +61,8 @@ class FlexibleTetheredSystem {
   Mat3 R_BW_ = Mat3::Identity();
   Vec3 omega_W_ = Vec3::Zero(), alpha_W_ = Vec3::Zero();
   Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
+  Eigen::VectorXd membrane_force_;  // f_NL(q) of the nonlinear wing (zero for the linear one)
+  structure::ModalMembraneStiffness::Workspace membrane_ws_;
   Eigen::VectorXd mass_base_packed_;  // M_qq + the f-independent apparent mass, packed lower
   SmallCholesky chol_;
   StripKinematics kin_;

@@ -105,6 +105,16 @@ struct FlexibleWingModel {
   Eigen::Index tip_strip = 0;
   StackedStrips stacked;
 
+  /// The condensed membrane of the geometrically nonlinear wing (structure.md 3.8), empty for the
+  /// linear wing: its restoring force f_NL(q) joins K q in the modal equation.
+  const structure::ModalMembraneStiffness& membrane() const { return modal->membrane; }
+  bool nonlinear() const { return !modal->membrane.empty(); }
+  /// The membrane's tangent stiffness at the wing's 1-g static shape (uniform pressure m g / S
+  /// upward on the skin), made positive semi-definite (M x M; zero for the linear wing). Only the
+  /// implicit-explicit split uses it (modal_implicit_split.hpp): the stretched skin's stiffness
+  /// belongs to the stiff, implicitly integrated part; the physics is f_NL(q) either way.
+  Eigen::MatrixXd membrane_reference_stiffness;
+
   FlexibleWingModel(const VehicleModel& vehicle,
                     std::shared_ptr<const structure::ModalWing> modal_wing,
                     const std::vector<double>& strip_chords_m,

@@ -12,7 +12,10 @@
 namespace orni {
 
 FreeFlightWorkspace::FreeFlightWorkspace(const FreeFlightModel& model)
-    : data(model.core), kin(model.stacked(), model.mode_count), chol(3 + model.mode_count) {
+    : data(model.core),
+      kin(model.stacked(), model.mode_count),
+      chol(3 + model.mode_count),
+      membrane_ws(model.flex ? model.flex->membrane().pairCount() : 0) {
   const int m = model.mode_count;
   const auto ns = static_cast<Eigen::Index>(model.core.strips.size());
   n_u = 3 + m;
@@ -317,6 +320,8 @@ void FreeFlightSystem::addModalRows() {
     r -= al[k] * ws.Cq_all.segment(k * m, m);
   }
   r.noalias() -= md.modal_stiffness.cwiseProduct(ws.q);
+  if (md.flex != nullptr && md.flex->nonlinear())  // membrane stretching (structure.md 3.8)
+    md.flex->membrane().addForce(ws.q, &ws.membrane_ws, &r, -1.0);
   if (switches_.damping) r.noalias() -= md.modal_damping.cwiseProduct(ws.qd);
   ws.f.tail(m).noalias() += 2.0 * r;
 }
@@ -505,6 +510,8 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   const double wing_height = std::sin(theta) * f1.x() - std::cos(theta) * f1.z();
   double strain = 0.0;
   if (m > 0) strain = ws_.q.dot(md.modal_stiffness.cwiseProduct(ws_.q));  // 2 x 1/2 q^T K q
+  if (md.flex != nullptr && md.flex->nonlinear())  // 2 wings x V_NL (structure.md 3.8)
+    strain += 2.0 * md.flex->membrane().energy(ws_.q, &ws_.membrane_ws);
   const Vec3& rf = md.fuselage_cg_B_m;
   const double fuselage_height = std::sin(theta) * rf.x() - std::cos(theta) * rf.z();
   s.potential_energy_J = g * (md.core.vehicle.body.mass_kg * y[1] +

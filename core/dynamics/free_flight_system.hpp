@@ -60,6 +60,7 @@ struct FreeFlightWorkspace {
   Eigen::VectorXd extra_force, extra_couple;  // apparent-mass force and couple of u' (ns)
   Eigen::VectorXd zero_ns, tmp_ns, packed;
   Eigen::VectorXd twist_mid_ud;  // [psi_twist; psi_mid] of the modal accelerations (2 ns)
+  structure::ModalMembraneStiffness::Workspace membrane_ws;  // the nonlinear wing's membrane
 };
 
 /// What the last evaluation found, read by rhs (power) and sample (loads, energies).

@@ -12,7 +12,7 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
       off_(q_offset),
       n_(state_count),
 
-      K_(flex.stiffness),
+      K_(Eigen::MatrixXd(flex.stiffness.asDiagonal()) + flex.membrane_reference_stiffness),
       D_(flex.damping),
       S_(flex.mode_count, flex.mode_count),
       S_chol_(flex.mode_count),
@@ -30,7 +30,7 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
   if (llt.info() != Eigen::Success)
     throw std::runtime_error("ModalImplicitSplit: reference modal mass is not positive definite");
   GH_.resize(mode_count_, 2 * mode_count_);
-  GH_.leftCols(mode_count_) = llt.solve(Eigen::MatrixXd(K_.asDiagonal()));
+  GH_.leftCols(mode_count_) = llt.solve(K_);
   GH_.rightCols(mode_count_) = llt.solve(Eigen::MatrixXd(D_.asDiagonal()));
 }
 
@@ -58,7 +58,8 @@ void ModalImplicitSplit::removeFrom(const double* y, double* ydot) {
 void ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
   if (gamma != gamma_) {
     S_ = A0_;
-    S_.diagonal() += gamma * D_ + (gamma * gamma) * K_;
+    S_.diagonal() += gamma * D_;
+    S_ += (gamma * gamma) * K_;
     if (!S_chol_.factor(S_))
       throw std::runtime_error("ModalImplicitSplit: stage matrix is not positive definite");
     gamma_ = gamma;
@@ -67,7 +68,7 @@ void ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
   const Eigen::Map<const Eigen::VectorXd> bq(b + off_, mode_count_),
       bqd(b + off_ + mode_count_, mode_count_);
   r_.noalias() = A0_ * bqd;
-  r_ -= gamma * K_.cwiseProduct(bq);
+  r_.noalias() -= gamma * (K_ * bq);
   S_chol_.solveInPlace(r_);
   w_ = r_;
   for (int i = 0; i < mode_count_; ++i) {

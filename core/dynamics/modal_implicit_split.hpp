@@ -6,7 +6,9 @@
 // integrated by the ESDIRK half of an additive Runge-Kutta pair; the explicit part is the full
 // right-hand side minus L y (aerodynamics, the separation-dependent apparent mass, frame inertia
 // with the time-varying spin softening and geometric stiffening of structure.md 3.7, body
-// coupling). Measured on the calibrated magpie (12 modes to 332 Hz): the full Jacobian has
+// coupling). The nonlinear wing (structure.md 3.8) adds its membrane's tangent at the 1-g static
+// shape to K (FlexibleWingModel::membrane_reference_stiffness): the stretched skin is the stiffest
+// part of its motion, and the explicit part keeps only f_NL(q) minus that linearisation. Measured on the calibrated magpie (12 modes to 332 Hz): the full Jacobian has
 // eigenvalues up to |lambda| = 2025 rad/s on the imaginary axis; the explicit remainder's are
 // real, below 1000 1/s, and hardly depend on the reference separation fraction of A0.
 //
@@ -46,7 +48,8 @@ class ModalImplicitSplit {
   int mode_count_, off_, n_;
   Eigen::MatrixXd A0_;   // symmetric, full
   Eigen::MatrixXd GH_;   // [A0^{-1} K, A0^{-1} D], M x 2M
-  Eigen::VectorXd K_, D_;
+  Eigen::MatrixXd K_;    // modal stiffness diag(omega^2) + the membrane's reference tangent
+  Eigen::VectorXd D_;
   double gamma_ = -1.0;  // gamma of S_chol_
   Eigen::MatrixXd S_;
   SmallCholesky S_chol_;

@@ -22,6 +22,7 @@ std::string modalWingKey(const structure::WingStructure& wing_structure) {
   const int planform = static_cast<int>(w.planform);
   appendBytes(&k, &planform, sizeof planform);
   for (double d : {w.semispan_m, w.root_chord_m, w.p3_aft_of_le_m, w.skin.thickness_m,
+                   w.skin.pretension_N_per_m,
                    w.fe.element_size_m, w.fe.cutoff_hz, w.fe.damping_ratio})
     appendDouble(&k, d);
   appendBytes(&k, &w.strip_count, sizeof w.strip_count);  // the mesh samples every strip
@@ -30,6 +31,7 @@ std::string modalWingKey(const structure::WingStructure& wing_structure) {
   k.push_back(w.fe.p3_cross_axis_normal ? 'n' : 's');
   k.push_back(static_cast<char>('0' + static_cast<int>(w.fe.p3_joint)));
   k.push_back(w.fe.root_edge_pinned ? 'r' : '-');
+  k.push_back(w.fe.nonlinear ? 'N' : 'L');
   k += w.skin.material + '\0';
   for (const WingMember& m : w.members) {
     k += m.name + '\0' + m.material + '\0';

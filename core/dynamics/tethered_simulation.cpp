@@ -248,6 +248,12 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
                     "periodic steady state reached at cycle %d (cycle-to-cycle change %.2e <= "
                     "%.2e)",
                     summary.steady_state_cycle, summary.last_cycle_change, options.steady_tol);
+    } else if (summary.cycles_run < 2) {
+      // No cycle-to-cycle change exists after one cycle (issue 30, item 7: it said "0.00e+00 >").
+      std::snprintf(buf, sizeof buf,
+                    "periodic steady state not reached: %d cycle run; the test compares two "
+                    "consecutive cycles (run at least 2)",
+                    summary.cycles_run);
     } else {
       std::snprintf(buf, sizeof buf,
                     "periodic steady state not reached in %d cycles (last cycle-to-cycle change "

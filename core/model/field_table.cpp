@@ -130,6 +130,11 @@ std::vector<FieldSpec> makeTable() {
       // 1 um: the thinnest polymer films; 5 cm: a solid plate, no longer a skin.
       number("wing.skin.thickness_m", "m", 1.0, R::closed(1e-6, 0.05), "required",
              "skin thickness"),
+      // 0 (a slack film) to 2000 N/m: 50 MPa in the 0.04 mm skin, half the yield stress of
+      // polyester film (~100 MPa); hand-stretched or heat-shrunk ornithopter films carry
+      // 10-200 N/m (1-5 MPa in 20-50 um film).
+      number("wing.skin.pretension_N_per_m", "N/m", 1.0, R::closed(0.0, 2000.0), "0",
+             "isotropic membrane pretension of the skin"),
       table("wing.members", "none", "[[wing.members]]: straight solid circular rods"),
       text("wing.members[].name", "required", "member name (unique)"),
       text("wing.members[].material", "required", "material of the rod", "a [materials.NAME] name"),
@@ -161,6 +166,8 @@ std::vector<FieldSpec> makeTable() {
              "root chord held in translation (pinned) or free"),
       choice("wing.fe.inertial_stiffness", "both | softening_only | none", "\"both\"",
              "spin softening and geometric stiffening of the inertial loads"),
+      boolean("wing.fe.nonlinear", "false",
+              "geometrically nonlinear wing: skin membrane stretching and member stretch"),
 
       // ---- [materials.NAME] ---------------------------------------------------------------------
       table("materials", "required", "[materials.NAME]: isotropic materials, any names"),

@@ -52,6 +52,7 @@ std::vector<VehicleNumber> makeNumbers() {
       ORNI_PLAIN("wing.p3_aft_of_le_m", v.wing.p3_aft_of_le_m),
       ORNI_PLAIN("wing.member_diameter_scale", v.wing.member_diameter_scale),
       ORNI_PLAIN("wing.skin.thickness_m", v.wing.skin.thickness_m),
+      ORNI_PLAIN("wing.skin.pretension_N_per_m", v.wing.skin.pretension_N_per_m),
       ORNI_MEMBER("wing.members[].diameter_m", -1, diameter_m),
       ORNI_MEMBER("wing.members[].start_xy_m", 0, start_x_W_m),
       ORNI_MEMBER("wing.members[].start_xy_m", 1, start_y_W_m),

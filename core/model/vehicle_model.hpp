@@ -45,6 +45,9 @@ struct WingMember {
 struct WingSkin {
   std::string material;      ///< key into VehicleModel::materials
   double thickness_m = 0.0;  ///< skin thickness
+  /// Isotropic membrane pretension N0 (N/m) of the skin as built (a shrunk film), reacted by the
+  /// frame; adds its geometric stiffness to the wing (structure.md 3.7-3.8). 0 = slack.
+  double pretension_N_per_m = 0.0;
 };
 
 enum class Planform { kRectangular, kQuarterEllipse };
@@ -80,6 +83,12 @@ struct WingFeSettings {
   /// attached at P2 and P3 only (the paper).
   bool root_edge_pinned = false;
   InertialStiffness inertial_stiffness = InertialStiffness::kBoth;  ///< structure.md 3.7
+  /// Geometric nonlinearity of the skin and members (von Karman strains, the membrane condensed
+  /// into the modal coordinates: core/structure/membrane_rom.hpp, structure.md 3.8); false = the
+  /// linear wing. Off by default until its dynamics are validated: statically it matches the full
+  /// nonlinear FE solution at mid-span, but flapping, the magpie's wing takes 25 times the steps
+  /// of the linear one and shows high-frequency content not yet explained (results/README.md).
+  bool nonlinear = false;
 };
 
 /// Geometry and structure of the right wing; the left wing is its mirror image.

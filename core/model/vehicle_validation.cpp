@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/model/field_table.hpp"
 #include "core/model/invalid_model_error.hpp"
@@ -59,8 +61,52 @@ void checkMaterialName(Checker& c, const VehicleModel& v, const std::string& key
         "an unknown material \"" + name + "\"");
 }
 
+/// The wing mesh's crossing test (core/structure/wing_mesh.cpp, buildWingMesh): two members may
+/// share end points, end on one another or overlap collinearly, but not cross in their interiors
+/// (away from their ends by more than the mesh's snap tolerance). Checked here so that the error
+/// names the member's key and line (issue 30, item 7: it was "invalid model: buildWingMesh" with
+/// neither). Only between members whose points are valid, on a wing whose sizes are.
+void checkMemberCrossings(Checker& c, const WingModel& w, const std::vector<bool>& valid) {
+  const FieldSpec& h = field("wing.fe.element_size_m");
+  if (!h.siRange().contains(w.fe.element_size_m) ||
+      !field("wing.semispan_m").siRange().contains(w.semispan_m) ||
+      !field("wing.root_chord_m").siRange().contains(w.root_chord_m))
+    return;
+  const double snap =
+      std::min(1e-3 * w.fe.element_size_m, 1e-4 * std::min(w.semispan_m, w.root_chord_m));
+  auto cross2 = [](double ax, double ay, double bx, double by) { return ax * by - ay * bx; };
+  for (std::size_t j = 1; j < w.members.size(); ++j) {
+    for (std::size_t i = 0; i < j; ++i) {
+      if (!valid[i] || !valid[j]) continue;
+      const WingMember& a = w.members[i];
+      const WingMember& b = w.members[j];
+      const double rx = a.end_x_W_m - a.start_x_W_m, ry = a.end_y_W_m - a.start_y_W_m;
+      const double sx = b.end_x_W_m - b.start_x_W_m, sy = b.end_y_W_m - b.start_y_W_m;
+      const double la = std::hypot(rx, ry), lb = std::hypot(sx, sy);
+      if (!(la > snap && lb > snap)) continue;
+      const double denom = cross2(rx, ry, sx, sy);
+      if (std::abs(denom) <= 1e-12 * la * lb) continue;  // parallel or collinear
+      const double qx = b.start_x_W_m - a.start_x_W_m, qy = b.start_y_W_m - a.start_y_W_m;
+      const double t = cross2(qx, qy, sx, sy) / denom;
+      const double u = cross2(qx, qy, rx, ry) / denom;
+      const double ta = snap / la, tb = snap / lb;
+      if (t > ta && t < 1.0 - ta && u > tb && u < 1.0 - tb) {
+        c.add("wing.members[" + std::to_string(j) + "].start_xy_m",
+              "a member that crosses no other member between their end points (members may "
+              "share end points or end on one another), but '" + b.name + "' crosses '" +
+                  a.name + "' (wing.members[" + std::to_string(i) + "]) at " +
+                  pointText(a.start_x_W_m + t * rx, a.start_y_W_m + t * ry) + " m",
+              pointText(b.start_x_W_m, b.start_y_W_m) + " to " +
+                  pointText(b.end_x_W_m, b.end_y_W_m));
+        return;  // one crossing is enough to say
+      }
+    }
+  }
+}
+
 void checkMembers(Checker& c, const VehicleModel& v) {
   const WingModel& w = v.wing;
+  std::vector<bool> valid(w.members.size(), true);
   for (std::size_t i = 0; i < w.members.size(); ++i) {
     const WingMember& m = w.members[i];
     const std::string at = "wing.members[" + std::to_string(i) + "].";
@@ -79,11 +125,13 @@ void checkMembers(Checker& c, const VehicleModel& v) {
       const FieldSpec& f = field(std::string("wing.members[].") + names[k]);
       if (!f.range.contains(x) || !f.range.contains(y)) {
         c.add(key, f.expected(), pointText(x, y));
+        valid[i] = false;
         continue;
       }
       const bool y_ok = y >= 0.0 && y <= w.semispan_m;
       const double chord = y_ok ? chordAt(w, y) : 0.0;
       if (y_ok && x <= 0.0 && x >= -chord - kPlanformTolerance_m) continue;
+      valid[i] = false;
       std::string expected = "a point [x_W, y_W] inside the planform (0 <= y_W <= " +
                              displayNumber(w.semispan_m) + ", -c(y_W) <= x_W <= 0";
       if (y_ok) expected += " with -c(y_W) = " + displayNumber(-chord);
@@ -93,6 +141,7 @@ void checkMembers(Checker& c, const VehicleModel& v) {
       c.add(at + "end_xy_m", "a point different from start_xy_m (nonzero member length)",
             pointText(m.end_x_W_m, m.end_y_W_m));
   }
+  checkMemberCrossings(c, w, valid);
 }
 
 void checkWing(Checker& c, const VehicleModel& v) {
@@ -113,6 +162,7 @@ void checkWing(Checker& c, const VehicleModel& v) {
   c.number("wing.member_diameter_scale", w.member_diameter_scale);
   checkMaterialName(c, v, "wing.skin.material", w.skin.material);
   c.number("wing.skin.thickness_m", w.skin.thickness_m);
+  c.number("wing.skin.pretension_N_per_m", w.skin.pretension_N_per_m);
   checkMembers(c, v);
 
   const WingFeSettings& fe = w.fe;

@@ -9,6 +9,7 @@
 #include <cstddef>
 #include <cstdio>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -65,6 +66,7 @@ class DeckNodes {
   }
 
   const std::vector<Eigen::Vector3d>& positions() const { return x_; }
+  const std::map<std::pair<int, int>, int>& midpoints() const { return midpoints_; }
 
  private:
   std::vector<Eigen::Vector3d> x_;
@@ -87,6 +89,56 @@ void writeElements(std::ostream& out, const ElementBlock& block, int& next_id) {
   }
 }
 
+/// Consistent nodal forces (N) of a uniform pressure p (MPa) along the element normal (right-hand
+/// rule of its node order) on a quadratic shell element of the deck (S6 or S8R, node positions in
+/// mm): f_i = p * integral of N_i n dA over the undeformed element.
+std::vector<Eigen::Vector3d> pressureForces(const std::vector<Eigen::Vector3d>& x_mm,
+                                            const std::vector<int>& element, double p_mpa) {
+  auto at = [&](std::size_t k) { return x_mm[static_cast<std::size_t>(element[k])]; };
+  std::vector<Eigen::Vector3d> f(element.size(), Eigen::Vector3d::Zero());
+  if (element.size() == 6) {
+    // Straight-edged quadratic triangle: integral of N_i dA = 0 at the corners, A / 3 at the
+    // midside nodes; n dA integrates to (x2 - x1) x (x3 - x1) / 2.
+    const Eigen::Vector3d n_area = 0.5 * (at(1) - at(0)).cross(at(2) - at(0));
+    for (std::size_t k = 3; k < 6; ++k) f[k] = p_mpa * n_area / 3.0;
+    return f;
+  }
+  // 8-node serendipity quad, 3 x 3 Gauss points.
+  static const double kXi[8] = {-1, 1, 1, -1, 0, 1, 0, -1};
+  static const double kEta[8] = {-1, -1, 1, 1, -1, 0, 1, 0};
+  const double g = std::sqrt(0.6);
+  const double pts[3] = {-g, 0.0, g}, wts[3] = {5.0 / 9.0, 8.0 / 9.0, 5.0 / 9.0};
+  for (int a = 0; a < 3; ++a)
+    for (int b = 0; b < 3; ++b) {
+      const double xi = pts[a], eta = pts[b];
+      double n[8], dxi[8], deta[8];
+      for (int k = 0; k < 8; ++k) {
+        const double xk = kXi[k], ek = kEta[k];
+        if (k < 4) {
+          n[k] = 0.25 * (1 + xi * xk) * (1 + eta * ek) * (xi * xk + eta * ek - 1);
+          dxi[k] = 0.25 * xk * (1 + eta * ek) * (2 * xi * xk + eta * ek);
+          deta[k] = 0.25 * ek * (1 + xi * xk) * (xi * xk + 2 * eta * ek);
+        } else if (xk == 0.0) {
+          n[k] = 0.5 * (1 - xi * xi) * (1 + eta * ek);
+          dxi[k] = -xi * (1 + eta * ek);
+          deta[k] = 0.5 * (1 - xi * xi) * ek;
+        } else {
+          n[k] = 0.5 * (1 + xi * xk) * (1 - eta * eta);
+          dxi[k] = 0.5 * xk * (1 - eta * eta);
+          deta[k] = -eta * (1 + xi * xk);
+        }
+      }
+      Eigen::Vector3d x_xi = Eigen::Vector3d::Zero(), x_eta = Eigen::Vector3d::Zero();
+      for (std::size_t k = 0; k < 8; ++k) {
+        x_xi += dxi[k] * at(k);
+        x_eta += deta[k] * at(k);
+      }
+      const Eigen::Vector3d n_da = wts[a] * wts[b] * x_xi.cross(x_eta);
+      for (std::size_t k = 0; k < 8; ++k) f[k] += p_mpa * n[k] * n_da;
+    }
+  return f;
+}
+
 const Material& requireMaterial(const WingStructure& wing_structure, const std::string& name,
                                 const std::string& user) {
   const Material* m = wing_structure.findMaterial(name);
@@ -100,7 +152,7 @@ const Material& requireMaterial(const WingStructure& wing_structure, const std::
 std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& mesh,
                          const CalculixDeckOptions& options, CalculixDeckStats* stats) {
   const int n = mesh.nodeCount();
-  if (mesh.p2_node < 0 || mesh.p2_node >= n)
+  if (options.clamp_p2 && (mesh.p2_node < 0 || mesh.p2_node >= n))
     throw std::invalid_argument("calculixDeck: the mesh has no valid P2 node");
   if (mesh.p3_node >= n) throw std::invalid_argument("calculixDeck: P3 node out of range");
   if (options.mode_count < 1 || options.mode_count > kMaxModes)
@@ -111,6 +163,35 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
       throw std::invalid_argument("calculixDeck: element node " + std::to_string(id) +
                                   " out of range [0, " + std::to_string(n) + ")");
   };
+  const CalculixStaticOptions& st = options.static_steps;
+  const bool has_static = !st.load_factors.empty();
+  if (!options.frequency_step && !has_static)
+    throw std::invalid_argument("calculixDeck: no step (neither the frequency step nor a static one)");
+  if (has_static) {
+    for (double f : st.load_factors)
+      if (!std::isfinite(f))
+        throw std::invalid_argument("calculixDeck: a static load factor is not finite");
+    if (!(st.min_increment > 0.0 && st.min_increment <= st.initial_increment &&
+          st.initial_increment <= st.max_increment && st.max_increment <= 1.0) ||
+        st.max_increments < 1)
+      throw std::invalid_argument(
+          "calculixDeck: static increments need 0 < min <= initial <= max <= 1 and a count >= 1");
+    const Eigen::Index dofs = static_cast<Eigen::Index>(kDofsPerNode) * n;
+    if (st.load.nodal_load.size() != 0 && st.load.nodal_load.size() != dofs)
+      throw std::invalid_argument("calculixDeck: the nodal load has " +
+                                  std::to_string(st.load.nodal_load.size()) + " entries, not " +
+                                  std::to_string(dofs));
+    if (!std::isfinite(st.load.skin_pressure_pa) || !st.load.nodal_load.allFinite())
+      throw std::invalid_argument("calculixDeck: the static load is not finite");
+    for (int id : st.print_nodes)
+      if (id < 0 || id >= n)
+        throw std::invalid_argument("calculixDeck: print node " + std::to_string(id) +
+                                    " out of range");
+  }
+  for (int id : options.clamped_nodes)
+    if (id < 0 || id >= n)
+      throw std::invalid_argument("calculixDeck: clamped node " + std::to_string(id) +
+                                  " out of range");
 
   DeckNodes nodes(mesh.nodes_W_m);
   const bool split = options.skin == CalculixSkinElement::kS8RSplit;
@@ -190,6 +271,39 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
   for (const ElementBlock& b : members) beam_count += static_cast<int>(b.nodes.size());
   const int node_count = static_cast<int>(nodes.positions().size());
 
+  // Clamped nodes: the given mesh nodes and, repeatedly, the midpoint nodes between two clamped
+  // nodes (the midside nodes of a clamped edge; with split quads also those of its halves).
+  std::set<int> clamped(options.clamped_nodes.begin(), options.clamped_nodes.end());
+  for (bool grew = !clamped.empty(); grew;) {
+    grew = false;
+    for (const auto& [ends, id] : nodes.midpoints())
+      if (clamped.count(ends.first) != 0 && clamped.count(ends.second) != 0 &&
+          clamped.insert(id).second)
+        grew = true;
+  }
+
+  // Static load per deck node (N, N mm) at load factor 1: the dead pressure's consistent forces
+  // and the nodal load of the mesh nodes (m -> mm for the moments).
+  std::map<int, std::array<double, 6>> node_loads;
+  if (has_static) {
+    const double p_mpa = st.load.skin_pressure_pa * kMpaPerPa;
+    if (p_mpa != 0.0 && !st.load.follower_pressure) {
+      std::vector<Eigen::Vector3d> x_mm;
+      for (const Eigen::Vector3d& p : nodes.positions()) x_mm.push_back(kMmPerM * p);
+      for (const std::vector<int>& e : skin.nodes) {
+        const std::vector<Eigen::Vector3d> f = pressureForces(x_mm, e, p_mpa);
+        for (std::size_t k = 0; k < e.size(); ++k)
+          for (int d = 0; d < 3; ++d) node_loads[e[k]][static_cast<std::size_t>(d)] += f[k](d);
+      }
+    }
+    if (st.load.nodal_load.size() != 0)
+      for (int i = 0; i < n; ++i)
+        for (int d = 0; d < kDofsPerNode; ++d) {
+          const double v = st.load.nodal_load(globalDof(i, d));
+          if (v != 0.0) node_loads[i][static_cast<std::size_t>(d)] += d < 3 ? v : kMmPerM * v;
+        }
+  }
+
   std::ostringstream out;
   out << "*HEADING\n"
       << (options.heading.empty() ? "Ornithopter wing " + wing_structure.vehicle_name : options.heading) << "\n";
@@ -201,7 +315,11 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
       << "** " << n << " mesh nodes, " << mesh.triangles.size() << " triangles, "
       << mesh.beams.size() << " beam elements -> " << node_count << " nodes, "
       << skin.nodes.size() << " " << skin.type << ", " << beam_count << " " << beam_type << "\n"
-      << "** Run: ccx -i JOB (job name without .inp); eigenfrequencies in JOB.dat.\n";
+      << "** Run: ccx -i JOB (job name without .inp); "
+      << (has_static ? (options.frequency_step ? "eigenfrequencies and displacements"
+                                               : "displacements")
+                     : "eigenfrequencies")
+      << " in JOB.dat.\n";
 
   out << "*NODE, NSET=NALL\n";
   {
@@ -215,8 +333,20 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
   writeElements(out, skin, next_id);
   for (const ElementBlock& b : members) writeElements(out, b, next_id);
 
-  out << "*NSET, NSET=P2\n" << mesh.p2_node + 1 << "\n";
+  if (options.clamp_p2) out << "*NSET, NSET=P2\n" << mesh.p2_node + 1 << "\n";
   if (mesh.p3_node >= 0) out << "*NSET, NSET=P3\n" << mesh.p3_node + 1 << "\n";
+  if (!clamped.empty()) {
+    out << "*NSET, NSET=CLAMPED\n";
+    for (int id : clamped) out << id + 1 << "\n";
+  }
+  if (has_static) {
+    out << "*NSET, NSET=NPRINT\n";
+    if (st.print_nodes.empty())
+      for (int i = 0; i < n; ++i) out << i + 1 << "\n";
+    else
+      for (int id : std::set<int>(st.print_nodes.begin(), st.print_nodes.end()))
+        out << id + 1 << "\n";
+  }
 
   if (skin_mat != nullptr)
     out << "*MATERIAL, NAME=" << skin_material << "\n"
@@ -279,7 +409,8 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
     for (int i = 0; i < node_count; ++i)
       if (x[static_cast<std::size_t>(i)].y() == 0.0) out << i + 1 << "\n";
   }
-  out << "*BOUNDARY\n" << "P2, 1, 6\n";
+  out << "*BOUNDARY\n";
+  if (options.clamp_p2) out << "P2, 1, 6\n";
   if (mesh.p3_node >= 0) {
     WingSupport support;
     support.p3_joint = options.p3_joint;
@@ -289,9 +420,36 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
     for (int d : p3HeldRotations(support)) out << "P3, " << d + 1 << ", " << d + 1 << "\n";
   }
   if (options.root_edge_pinned) out << "ROOT, 1, 3\n";
-  out << "*STEP\n*FREQUENCY\n" << options.mode_count << "\n";
-  if (options.node_file) out << "*NODE FILE\nU\n";
-  out << "*END STEP\n";
+  if (!clamped.empty()) out << "CLAMPED, 1, 6\n";
+  if (options.frequency_step) {
+    out << "*STEP\n*FREQUENCY\n" << options.mode_count << "\n";
+    if (options.node_file) out << "*NODE FILE\nU\n";
+    out << "*END STEP\n";
+  }
+  // Static steps: each ends at its factor times the load; the loads ramp within a step from the
+  // previous step's values (ccx's default for *STATIC), and every card below replaces the
+  // previous step's value of the same node and DOF (OP=MOD).
+  const double p_mpa = st.load.skin_pressure_pa * kMpaPerPa;
+  for (std::size_t k = 0; k < st.load_factors.size(); ++k) {
+    const double factor = st.load_factors[k];
+    out << "** Static step " << k + 1 << ": load factor " << real(factor) << ", ends at time "
+        << k + 1 << "\n";
+    out << (st.nlgeom ? "*STEP, NLGEOM, INC=" : "*STEP, INC=") << st.max_increments << "\n"
+        << st.controls << "*STATIC\n"
+        << real(st.initial_increment) << ", 1., " << real(st.min_increment) << ", "
+        << real(st.max_increment) << "\n";
+    if (p_mpa != 0.0 && st.load.follower_pressure && !skin.nodes.empty())
+      out << "*DLOAD\nSKIN, P, " << real(factor * p_mpa) << "\n";
+    if (!node_loads.empty()) {
+      out << "*CLOAD\n";
+      for (const auto& [id, f] : node_loads)
+        for (std::size_t d = 0; d < 6; ++d)
+          if (f[d] != 0.0) out << id + 1 << ", " << d + 1 << ", " << real(factor * f[d]) << "\n";
+    }
+    out << "*NODE PRINT, NSET=NPRINT\nU\n";
+    if (st.node_file) out << "*NODE FILE\nU\n";
+    out << "*END STEP\n";
+  }
 
   if (stats != nullptr) {
     stats->nodes = node_count;

@@ -77,6 +77,7 @@ ModalWingOptions modalWingOptionsOf(const WingFeSettings& fe) {
   options.selection.max_modes = fe.max_modes;
   options.selection.cutoff_hz = fe.cutoff_hz;
   options.damping_ratio = fe.damping_ratio;
+  options.nonlinear = fe.nonlinear;
   return options;
 }
 
@@ -89,7 +90,10 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
 
   FeAssemblyOptions fe_options;
   fe_options.mass = options.mass;
-  const WingFeModel fe = assembleWingFe(wing_structure, mesh, fe_options);
+  WingFeModel fe = assembleWingFe(wing_structure, mesh, fe_options);
+  // A pretensioned skin is a prestressed structure: its modes and every static solution use
+  // K + K_G(N0) (structure.md 3.7-3.8).
+  addSkinPretension(wing_structure, mesh, &fe);
   const DofPartition part = makeDofPartition(
       fe.active, wingBoundaryDofs(mesh, options.support), options.free_boundary_dofs);
   if (part.interior.empty()) throw std::invalid_argument("buildModalWing: no interior DOF");
@@ -146,6 +150,10 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
   if (options.geometric_stiffness)
     w.geometric_stiffness =
         modalGeometricStiffness(wing_structure, mesh, fe, part, w.mode_shapes, fe_options);
+  if (options.nonlinear)
+    w.membrane = modalMembraneStiffness(VonKarmanTerms(wing_structure, mesh), fe.stiffness, part,
+                                        mesh.nodes_W_m, w.mode_shapes,
+                                        options.keep_membrane_relaxation);
   w.member_mass_kg = fe.member_mass_kg;
   w.skin_mass_kg = fe.skin_mass_kg;
   w.wing_mass_kg = fe.totalMass_kg();

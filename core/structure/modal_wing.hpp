@@ -10,6 +10,7 @@
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/inertia_invariants.hpp"
+#include "core/structure/membrane_rom.hpp"
 #include "core/structure/modal_solver.hpp"
 #include "core/structure/mode_selection.hpp"
 #include "core/structure/wing_mesh.hpp"
@@ -34,6 +35,11 @@ struct ModalWingOptions {
   EigenSolveOptions eigen;
   /// Compute the modal geometric stiffness of the unit inertial loads (structure.md 3.7).
   bool geometric_stiffness = true;
+  /// Condense the skin's membrane stretching into the modes (structure.md 3.8,
+  /// membrane_rom.hpp): the geometrically nonlinear wing.
+  bool nonlinear = false;
+  /// Keep the in-plane relaxation shapes of the condensation (tests, deflection output).
+  bool keep_membrane_relaxation = false;
 
   bool IsValid(std::string* why) const;
 };
@@ -54,6 +60,8 @@ struct ModalWing {
   InertiaInvariants invariants;           ///< operator form with the chosen M, about P2
   ModalGeometricStiffness geometric_stiffness;  ///< K^_G per unit inertial load (structure.md
                                                 ///< 3.7); empty if not asked for
+  ModalMembraneStiffness membrane;        ///< the condensed membrane (structure.md 3.8); empty
+                                          ///< for the linear wing
   double wing_mass_kg = 0.0;              ///< members + skin
   double member_mass_kg = 0.0;
   double skin_mass_kg = 0.0;

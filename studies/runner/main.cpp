@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <iostream>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "core/model/cancellation.hpp"
 #include "core/model/invalid_model_error.hpp"
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
@@ -17,6 +19,8 @@
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/interrupted_run.hpp"
+#include "studies/runner/output/journal_file.hpp"
 
 #ifdef ORNI_HAVE_MPI
 #include "studies/runner/mpi/mpi_farm.hpp"
@@ -27,6 +31,13 @@ using namespace orni::studies;
 using namespace orni::studies::cli;
 
 namespace {
+
+/// Bad input (exit 2): the message on rank 0 only (every rank of a distributed run parses and
+/// loads the same input and meets the same error; issue 30, item 7).
+int badInput(const std::string& message) {
+  if (farmWriter()) std::cerr << "ornithopter: error: " << message << "\n";
+  return kExitBadInput;
+}
 
 std::vector<std::string> subcommandNames(CLI::App& app) {
   std::vector<std::string> names;
@@ -54,16 +65,16 @@ int runCommandLine(int argc, char** argv) {
   if (argc >= 2 && argv[1][0] != '-' &&
       std::find(subcommands.begin(), subcommands.end(), argv[1]) == subcommands.end()) {
     const std::string near = closestMatch(argv[1], subcommands);
-    std::cerr << "ornithopter: error: unknown subcommand '" << argv[1] << "'"
-              << (near.empty() ? std::string() : " (did you mean '" + near + "'?)")
-              << "; run with --help for the list\n";
-    return kExitBadInput;
+    return badInput("unknown subcommand '" + std::string(argv[1]) + "'" +
+                    (near.empty() ? std::string() : " (did you mean '" + near + "'?)") +
+                    "; run with --help for the list");
   }
 
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
+    std::ostringstream discard;  // a worker rank says nothing (rank 0 prints it)
+    const int rc = farmWriter() ? app.exit(e) : app.exit(e, discard, discard);
     return rc == 0 ? kExitOk : kExitBadInput;
   }
 
@@ -79,17 +90,21 @@ int runCommandLine(int argc, char** argv) {
       throw std::logic_error("unhandled subcommand " + app.get_subcommands().front()->get_name());
     return parsed->run();
   } catch (const InputError& e) {
-    std::cerr << "ornithopter: error: " << e.what() << "\n";
-    return kExitBadInput;
+    return badInput(e.what());
   } catch (const CliError& e) {
-    std::cerr << "ornithopter: error: " << e.what() << "\n";
-    return kExitBadInput;
+    return badInput(e.what());
   } catch (const FolderBusyError& e) {
-    std::cerr << "ornithopter: error: " << e.what() << "\n";
-    return kExitBadInput;
+    return badInput(e.what());
+  } catch (const OutputPathError& e) {
+    return badInput(e.what());
+  } catch (const ForeignJournalError& e) {
+    return badInput(e.what());
+  } catch (const Cancelled&) {
+    // SIGINT/SIGTERM (interrupted_run.hpp): the run unwound; its folder says "interrupted".
+    std::cerr << "ornithopter: interrupted by " << interruptSignalName() << "\n";
+    return 128 + (interruptSignal() > 0 ? interruptSignal() : 2);
   } catch (const InvalidModelError& e) {
-    std::cerr << "ornithopter: error: invalid model: " << e.what() << "\n";
-    return kExitBadInput;
+    return badInput(std::string("invalid model: ") + e.what());
   } catch (const std::exception& e) {
     std::cerr << "ornithopter: failed: " << e.what() << "\n";
     return kExitFailed;
@@ -97,6 +112,7 @@ int runCommandLine(int argc, char** argv) {
 }
 
 int main(int argc, char** argv) {
+  installInterruptHandlers();
 #ifdef ORNI_HAVE_MPI
   // Started by mpirun/srun: rank 0 is the master, the others compute (studies/runner/mpi/).
   // Otherwise no MPI function is called: the program runs as a build without MPI.
@@ -104,8 +120,11 @@ int main(int argc, char** argv) {
     MpiFarm mpi(&argc, &argv);
     setFarmBackend(&mpi);
     const int rc = runCommandLine(argc, argv);
+    // A worker rank with bad input waits for rank 0, which meets the same error, prints it and
+    // aborts the run with its status (a worker aborting first would kill rank 0 before it says).
+    const bool quiet_worker = !farmWriter() && rc == kExitBadInput;
     setFarmBackend(nullptr);
-    return mpi.finish(rc);
+    return mpi.finish(quiet_worker ? kExitOk : rc);
   }
 #endif
   return runCommandLine(argc, argv);

@@ -2,10 +2,13 @@
 // tethered run integrates the modal stiffness implicitly (SimulationOptions::modal_integration,
 // the default; explicit:0); explicit:1 is the explicit ARK4(3)6L run, for comparison.
 //   BM_EfwModalWingBuild: mesh (5 mm) + assembly + eigen-solution + reduction (incl. the
-//     geometric-stiffness projections); modes:0 = the vehicle's 24, modes:12 = the count of
-//     earlier versions (the like-for-like comparison with their figures).
+//     geometric-stiffness projections and, nonlinear:1, the condensed membrane of the
+//     geometrically nonlinear wing, structure.md 3.8); modes:0 = the vehicle's 24, modes:12 = the
+//     count of earlier versions (the like-for-like comparison with their figures). Target:
+//     <= 0.5 s with the nonlinear identification.
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the vehicle's operating point, MST-TD;
-//     modes as above.
+//     modes as above; nonlinear:0 the linear wing (the default), 1 the nonlinear. Target:
+//     nonlinear within 2x the linear.
 //   BM_FlexibleTetheredRhs: one right-hand side of that run.
 #include <benchmark/benchmark.h>
 
@@ -37,23 +40,30 @@ VehicleModel efwFlexible() {
 void BM_EfwModalWingBuild(benchmark::State& state) {
   VehicleModel v = efwFlexible();
   if (state.range(0) > 0) v.wing.fe.max_modes = static_cast<int>(state.range(0));
+  v.wing.fe.nonlinear = state.range(1) != 0;
   int elements = 0;
   for (auto _ : state) {
     const structure::WingMesh mesh = structure::buildWingMesh(v, v.wing.fe.element_size_m);
-    structure::ModalWingOptions opts;
-    opts.selection.max_modes = v.wing.fe.max_modes;
+    const structure::ModalWingOptions opts = structure::modalWingOptionsOf(v.wing.fe);
     const structure::ModalWing mw = structure::buildModalWing(v, mesh, opts);
     benchmark::DoNotOptimize(mw.frequencies_hz.data());
     elements = static_cast<int>(mesh.triangles.size() + mesh.beams.size());
   }
   state.counters["elements"] = elements;
 }
-BENCHMARK(BM_EfwModalWingBuild)->ArgName("modes")->Arg(0)->Arg(12)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_EfwModalWingBuild)
+    ->ArgNames({"modes", "nonlinear"})
+    ->Args({0, 0})
+    ->Args({0, 1})
+    ->Args({12, 0})
+    ->Args({12, 1})
+    ->Unit(benchmark::kMillisecond);
 
 // explicit 0: the default, modal stiffness implicit; 1: the explicit ARK4(3)6L table.
 void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
   VehicleModel v = efwFlexible();
   if (state.range(1) > 0) v.wing.fe.max_modes = static_cast<int>(state.range(1));
+  v.wing.fe.nonlinear = state.range(2) != 0;
   const FlightCoreModel model(v);
   const OperatingPoint point = efwFile().design_point;
   SimulationOptions opts;
@@ -71,17 +81,21 @@ void BM_TetheredEfwFlexible10Cycles(benchmark::State& state) {
   state.counters["modes"] = model.flexible->mode_count;
 }
 BENCHMARK(BM_TetheredEfwFlexible10Cycles)
-    ->ArgNames({"explicit", "modes"})
-    ->Args({0, 0})
-    ->Args({1, 0})
-    ->Args({0, 12})
-    ->Args({1, 12})
+    ->ArgNames({"explicit", "modes", "nonlinear"})
+    ->Args({0, 0, 0})
+    ->Args({0, 0, 1})
+    ->Args({1, 0, 0})
+    ->Args({1, 0, 1})
+    ->Args({0, 12, 0})
+    ->Args({0, 12, 1})
+    ->Args({1, 12, 0})
     ->Unit(benchmark::kMillisecond);
 
 // One right-hand side of the flexible tethered wing (strip kinematics, MST-TD kernel, modal
 // loads, apparent mass and its LDL^T solve, resultant, quadratures) on a state of the orbit.
 void BM_FlexibleTetheredRhs(benchmark::State& state) {
-  const VehicleModel v = efwFlexible();
+  VehicleModel v = efwFlexible();
+  v.wing.fe.nonlinear = state.range(0) != 0;
   const FlightCoreModel model(v);
   const OperatingPoint op = efwFile().design_point;
   FlexibleTetheredSystem sys(model, *model.flexible,
@@ -98,6 +112,6 @@ void BM_FlexibleTetheredRhs(benchmark::State& state) {
     t += 1e-5;
   }
 }
-BENCHMARK(BM_FlexibleTetheredRhs)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FlexibleTetheredRhs)->ArgName("nonlinear")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

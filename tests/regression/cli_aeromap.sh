@@ -76,7 +76,10 @@ if [ -f "$journal" ]; then
   check "resumed points were not recomputed ($lines)" test "$(json "$killed/summary.json" points_resumed)" -eq "$lines"
   check "journal removed after the resume" test ! -e "$journal"
   "$bin" aeromap "$vehicle" "${big[@]}" --cycles 30 -j 2 -o "$scratch/big_other" >/dev/null 2>"$scratch/other.txt"
-  check "another study discards the journal" grep -q "starting afresh" "$scratch/other.txt"
+  check "another study's journal is refused (exit 2, naming --fresh)" \
+    bash -c "test $? -eq 2 && grep -q -- --fresh '$scratch/other.txt'"
+  "$bin" aeromap "$vehicle" "${big[@]}" --cycles 30 -j 2 -o "$scratch/big_other" --fresh >/dev/null 2>"$scratch/other.txt"
+  check "with --fresh another study discards the journal" grep -q "starting afresh" "$scratch/other.txt"
   check "... and computes every point" test "$(json "$scratch/big_other/summary.json" points_resumed)" -eq 0
 else
   echo "skip kill-and-resume: the map finished before it could be killed"

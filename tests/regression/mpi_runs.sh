@@ -21,6 +21,14 @@ if [[ "$(id -u)" == 0 ]]; then mpirun+=(--allow-run-as-root); fi
 efw="$root/studies/vehicles/efw_magpie.toml"
 fixture="$root/tests/data/sensitivity/magpie_rigid_fixture.toml"
 
+# Bad input under mpirun (issue 30, item 7): exit 2 and the message once, not once per rank.
+bad="$root/tests/data/bad/study_sweep_bad_value.toml"
+"${mpirun[@]}" -n 3 "$bin" run "$bad" -o "$scratch/bad_mpi" > /dev/null 2> "$scratch/bad_mpi.err"
+rc=$?
+check "mpirun -n 3 with bad input: exit 2 ($rc)" test $rc -eq 2
+check "... the input error printed once ($(grep -c 'ornithopter: error:' "$scratch/bad_mpi.err"))" \
+  test "$(grep -c 'ornithopter: error:' "$scratch/bad_mpi.err")" -eq 1
+
 # The aero map: 24 points through the subcommand, the same grid through a study file.
 grid=(--speed 10:14:3 --freq 10:16:2 --theta 0:15:4)
 check "aeromap -j 1" "$bin" aeromap "$efw" "${grid[@]}" -j 1 -o "$scratch/map_j1"

@@ -1,6 +1,7 @@
 // `ornithopter aeromap VEHICLE --speed A:B:N --freq .. --theta .. [--tail ..] [--cycles] [-j]
 // [-o]`.
 // [-o]`.
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -12,6 +13,7 @@
 #include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/journal_file.hpp"
 #include "trim/aero_map_options.hpp"
 
 namespace orni::studies::cli {
@@ -24,6 +26,7 @@ struct AeromapArgs {
   std::string vehicle, speed, freq, theta, tail;
   std::optional<std::string> out;
   std::optional<std::string> cycles, jobs;
+  bool fresh = false;
 };
 
 int runAeromap(const AeromapArgs& a) {
@@ -39,16 +42,23 @@ int runAeromap(const AeromapArgs& a) {
         "command line: options --speed, --freq, --theta, --tail: expected a grid of "
         "at most " +
         std::to_string(kMaxAeroMapPoints) + " points, got " + std::to_string(points));
+  const bool nonzero_tail =
+      tail && std::any_of(tail->values.begin(), tail->values.end(),
+                          [](double v) { return v != 0.0; });
   Study study = aeromapStudyFromVehicle(a.vehicle, std::move(speed), std::move(freq),
                                         std::move(theta), std::move(tail));
+  if (nonzero_tail && !study.vehicle.tail.present)
+    throw CliError("command line: option --tail: expected 0 or no tail angle (key "
+                   "aeromap.tail_angle_deg): the vehicle has no [tail], got '" + a.tail + "'");
   if (a.cycles)
     study.aeromap().options.cycles =
         static_cast<int>(optionValue("--cycles", "aeromap.cycles", *a.cycles));
   AeromapRunOptions opts;
   opts.threads = jobsOption(a.jobs);
+  setFreshRun(a.fresh);
   const fs::path out = outputFolder(a.out, study, false);
   std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
-  if (farmWriter()) lock.emplace(out);
+  if (farmWriter()) lock.emplace(out, FolderUse::kRun, "aeromap");
   return runAeromapStudy(study, out, opts);
 }
 
@@ -78,6 +88,7 @@ Subcommand addAeromapSubcommand(CLI::App& app) {
                  "Output folder (default results/<vehicle name>_aeromap); an interrupted run "
                  "resumes from the journal there")
       ->check(nonEmptyPath());
+  am->add_flag("--fresh", a->fresh, kFreshHelp);
   return {am, [a] { return runAeromap(*a); }, true};
 }
 

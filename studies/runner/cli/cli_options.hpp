@@ -50,6 +50,11 @@ CLI::Option* addFieldOption(CLI::App* sub, const std::string& names, std::string
   return sub->add_option(names, text, help);
 }
 
+/// --help of --fresh (run, aeromap, optimize).
+inline constexpr const char* kFreshHelp =
+    "Discard any journal in the output folder and start afresh (without it a journal of another "
+    "study, grid or version is refused, never deleted)";
+
 /// -o, --export-ccx and RUN_DIR: a name, never "" (which would silently mean the default).
 const CLI::Validator& nonEmptyPath();
 

@@ -22,7 +22,7 @@ struct ModesArgs {
 
 int runModes(const ModesArgs& a) {
   const fs::path out = a.out ? fs::path(*a.out) : fs::path("results") / fs::path(a.vehicle).stem();
-  const OutputFolderLock lock(out);
+  const OutputFolderLock lock(out, FolderUse::kRun, "modes");
   return runModesCommand(a.vehicle, out, a.ccx);
 }
 

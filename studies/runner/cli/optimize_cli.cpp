@@ -6,6 +6,7 @@
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
 #include "studies/runner/commands/run_study.hpp"
+#include "studies/runner/output/journal_file.hpp"
 
 namespace orni::studies::cli {
 
@@ -15,6 +16,7 @@ struct OptimizeArgs {
   std::string study;
   std::optional<std::string> out;
   std::optional<std::string> jobs;
+  bool fresh = false;
 };
 
 int runOptimize(const OptimizeArgs& a) {
@@ -23,6 +25,7 @@ int runOptimize(const OptimizeArgs& a) {
     throw CliError("command line: " + a.study +
                    ": expected a study of kind \"optimize\", got kind \"" +
                    std::string(toString(study.kind)) + "\" (run it with `ornithopter run`)");
+  setFreshRun(a.fresh);
   return runStudyLocked(study, outputFolder(a.out, study, false), jobsOption(a.jobs));
 }
 
@@ -42,6 +45,7 @@ Subcommand addOptimizeSubcommand(CLI::App& app) {
       ->check(nonEmptyPath());
   addFieldOption(opt, "-j,--jobs", "jobs", a->jobs,
                  "Worker threads (over the starts of a multi-start run)");
+  opt->add_flag("--fresh", a->fresh, kFreshHelp);
   return {opt, [a] { return runOptimize(*a); }, true};
 }
 

@@ -8,6 +8,7 @@
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/run_outputs.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies::cli {
@@ -26,12 +27,24 @@ int runPlot(const std::string& plot_dir) {
     throw CliError("command line: RUN_DIR " + plot_dir +
                    ": not a run folder (no summary.json; expected the output folder of an "
                    "ornithopter run)");
-  const OutputFolderLock lock(dir);
-  const int n = redrawFigures(dir);
+  const OutputFolderLock lock(dir, FolderUse::kRedraw);
+  // Only the figures of the run the summary describes (a folder written by an older version may
+  // hold another run's scripts beside it).
+  const std::string kind = summaryKind(dir);
+  int skipped = 0;
+  const int n = redrawFigures(dir, [&](const std::string& stem) {
+    const bool ours = isFigureOfKind(kind, stem);
+    skipped += ours ? 0 : 1;
+    return ours;
+  });
   if (n == 0)
     throw CliError("command line: RUN_DIR " + plot_dir +
-                   ": no figure scripts (*.gp) to draw (this run drew no figures)");
+                   ": no figure scripts (*.gp) of its " + (kind.empty() ? "" : kind + " ") +
+                   "run to draw (this run drew no figures)");
   std::cout << "redrew " << n << " figure(s) in " << plot_dir << "\n";
+  if (skipped > 0)
+    std::cout << "left out " << skipped << " figure script(s) of another kind of run than the "
+              << "summary's (" << kind << ")\n";
   return kExitOk;
 }
 

@@ -9,6 +9,7 @@
 #include "studies/runner/commands/run_study.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/journal_file.hpp"
 
 namespace orni::studies::cli {
 
@@ -20,10 +21,12 @@ struct RunArgs {
   std::vector<std::string> files;
   std::optional<std::string> out;
   std::optional<std::string> jobs;
+  bool fresh = false;
 };
 
 int runStudies(const RunArgs& a) {
   const int jobs = jobsOption(a.jobs);
+  setFreshRun(a.fresh);
   // Load (and validate) every study first, so a typo in the last one fails before any work.
   std::vector<Study> studies;
   for (const std::string& f : a.files) studies.push_back(loadStudyFile(f));
@@ -39,10 +42,15 @@ int runStudies(const RunArgs& a) {
   }
   std::vector<std::unique_ptr<OutputFolderLock>> locks;  // the writer's (rank 0's) only
   if (farmWriter())
-    for (const fs::path& out : outs) locks.push_back(std::make_unique<OutputFolderLock>(out));
+    for (std::size_t i = 0; i < outs.size(); ++i)
+      locks.push_back(std::make_unique<OutputFolderLock>(outs[i], FolderUse::kRun,
+                                                         std::string(toString(studies[i].kind))));
+  for (std::size_t i = 0; i < locks.size(); ++i) locks[i]->setRunning(false);
   int rc = kExitOk;
   for (std::size_t i = 0; i < studies.size(); ++i) {
+    if (i < locks.size()) locks[i]->setRunning(true);
     const int r = runStudy(studies[i], outs[i], jobs);
+    if (i < locks.size()) locks[i]->setRunning(false);
     if (r != kExitOk) rc = r;
   }
   return rc;
@@ -59,6 +67,7 @@ Subcommand addRunSubcommand(CLI::App& app) {
                   "into DIR/<study name>")
       ->check(nonEmptyPath());
   addFieldOption(run, "-j,--jobs", "jobs", a->jobs, "Worker threads");
+  run->add_flag("--fresh", a->fresh, kFreshHelp);
   return {run, [a] { return runStudies(*a); }, true};
 }
 

@@ -30,6 +30,10 @@ int runSimulate(const SimulateArgs& a) {
   if (a.tail)
     study.point.tail_angle_rad =
         optionValue("--tail", "simulate.tail_angle_deg", *a.tail) * kDegToRad;
+  if (a.tail && !study.vehicle.tail.present && study.point.tail_angle_rad != 0.0)
+    throw CliError("command line: option --tail: expected 0 or no tail angle (key "
+                   "simulate.tail_angle_deg): the vehicle has no [tail], got '" +
+                   *a.tail + "'");
   if (a.cycles)
     study.simulate().options.cycles =
         static_cast<int>(optionValue("--cycles", "simulate.cycles", *a.cycles));

@@ -12,6 +12,7 @@
 #include "studies/runner/commands/run_study.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/heartbeat.hpp"
 #include "trim/trim_options.hpp"
 
 namespace orni::studies::cli {
@@ -35,7 +36,8 @@ int runStability(const StabilityArgs& a) {
   std::string why;
   if (!o.IsValid(&why)) throw CliError("command line: stability options: " + why);
   const std::filesystem::path out = outputFolder(a.out, study, false);
-  const OutputFolderLock lock(out);
+  const OutputFolderLock lock(out, FolderUse::kRun, "stability");
+  const Heartbeat heartbeat("stability");  // a periodic trim has no points to count
   try {
     return runPeriodicTrimStudy(study, out, PeriodicRunKind::kStability);
   } catch (const InvalidModelError& e) {

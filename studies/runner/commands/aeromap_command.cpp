@@ -167,7 +167,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   AeroMapJournal journal(out_dir / kAeromapJournalName, fingerprint, grid.size(), &resume);
   if (resume.existed && !resume.fingerprint_matched)
     std::cerr << "aeromap: " << journal.path().string()
-              << " belongs to another study, grid or version: starting afresh\n";
+              << " discarded: starting afresh\n";
   else if (resume.existed)
     std::cerr << "aeromap: resuming from " << journal.path().string() << ": " << resume.records
               << " of " << grid.size() << " points already done"

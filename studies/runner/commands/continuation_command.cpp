@@ -328,7 +328,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
   while (!done.empty() && !done.back().orbit.event.empty()) done.pop_back();
   if (resume.existed && !resume.fingerprint_matched)
     std::cerr << "continuation: " << journal.path().string()
-              << " belongs to another study or version: starting afresh\n";
+              << " discarded: starting afresh\n";
   else if (!done.empty())
     std::cerr << "continuation: resuming from " << journal.path().string() << " after point "
               << done.back().orbit.index << " (" << done.size() << " records)\n";

@@ -45,7 +45,7 @@ std::optional<JournaledPoints> runJournaledPoints(const JournaledPointsJob& job)
   PointJournal& journal = *out.journal;
   if (resume.existed && !resume.fingerprint_matched)
     std::cerr << job.kind << ": " << journal.path().string()
-              << " belongs to another study or version: starting afresh\n";
+              << " discarded: starting afresh\n";
   else if (resume.existed)
     std::cerr << job.kind << ": resuming from " << journal.path().string() << ": "
               << resume.records << " of " << job.points << " points already done"

@@ -21,6 +21,7 @@
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/folder_lock.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
@@ -328,7 +329,13 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
     deck_options.root_edge_pinned = fe.root_edge_pinned;
     deck_options.heading = "Ornithopter wing " + vehicle.name + " (" + study.name +
                            "), fixed-interface modes";
-    writeFileAtomic(export_ccx_path, structure::calculixDeck(vehicle, mesh, deck_options));
+    const std::string deck = structure::calculixDeck(vehicle, mesh, deck_options);
+    try {
+      writeFileAtomic(export_ccx_path, deck);
+    } catch (const std::exception& e) {  // an output-path problem (issue 30, item 5)
+      throw OutputPathError(export_ccx_path.string() + ": option --export-ccx: cannot write the "
+                            "CalculiX deck: " + e.what());
+    }
   }
 
   const auto t1 = Clock::now();

@@ -256,7 +256,7 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   OptimizeJournal journal(out_dir / kOptimizeJournalName, fingerprint, shape, &resume);
   if (resume.existed && !resume.fingerprint_matched)
     std::cerr << "optimize: " << journal.path().string()
-              << " belongs to another study or version: starting afresh\n";
+              << " discarded: starting afresh\n";
   else if (resume.existed)
     std::cerr << "optimize: resuming from " << journal.path().string() << ": " << resume.records
               << " evaluation(s) journaled"

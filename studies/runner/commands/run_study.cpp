@@ -18,6 +18,7 @@
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/heartbeat.hpp"
 
 namespace fs = std::filesystem;
 
@@ -35,9 +36,18 @@ bool spreadsPoints(StudyKind kind) {
          kind == StudyKind::kSensitivity || kind == StudyKind::kOptimize;
 }
 
+/// The kinds that have no points to count: a heartbeat line shows they are running (issue 30,
+/// item 6); the others print their own progress (points, evaluations).
+bool needsHeartbeat(StudyKind kind) {
+  return kind == StudyKind::kSimulate || kind == StudyKind::kTrim ||
+         kind == StudyKind::kCalibrate || kind == StudyKind::kContinuation;
+}
+
 int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
   // A worker rank of a distributed run: the sequential kinds are rank 0's alone.
   if (!farmWriter() && !spreadsPoints(study.kind)) return 0;
+  std::optional<Heartbeat> heartbeat;
+  if (needsHeartbeat(study.kind)) heartbeat.emplace(std::string(toString(study.kind)));
   switch (study.kind) {
     case StudyKind::kSimulate:
       return runSimulateStudy(study, out_dir);
@@ -86,7 +96,7 @@ int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
 
 int runStudyLocked(const Study& study, const fs::path& out_dir, int jobs) {
   std::optional<OutputFolderLock> lock;  // the writer's (rank 0's) only
-  if (farmWriter()) lock.emplace(out_dir);
+  if (farmWriter()) lock.emplace(out_dir, FolderUse::kRun, std::string(toString(study.kind)));
   return runStudy(study, out_dir, jobs);
 }
 

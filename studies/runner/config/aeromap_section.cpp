@@ -44,6 +44,15 @@ void readAeromapSection(StudyDocument doc, Study& study) {
   a.theta_deg = readAeromapAxis(am, "theta_deg");
   a.tail_angle_deg = am.has("tail_angle_deg") ? readAeromapAxis(am, "tail_angle_deg")
                                               : defaultTailAngleAxis(study.point);
+  // A tail angle other than 0 (what a resolved study writes for a rig) on a vehicle without a
+  // tail would be ignored: bad input (issue 30, item 7).
+  if (am.has("tail_angle_deg") && !study.vehicle.tail.present)
+    for (const double v : a.tail_angle_deg.values)
+      if (v != 0.0)
+        throw am.valueError("tail_angle_deg",
+                            "0 or no tail angle: the vehicle has no [tail] (a tail angle would "
+                            "be silently ignored)",
+                            describeNode(*am.table().get("tail_angle_deg")));
   std::size_t points = 1;
   for (const GridAxis* axis : {&a.speed_mps, &a.freq_hz, &a.theta_deg, &a.tail_angle_deg}) {
     if (axis->values.size() > kMaxAeroMapPoints / points)

@@ -1,10 +1,13 @@
 #include "studies/runner/config/continuation_section.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <utility>
 
 #include "core/model/field_table.hpp"
 #include "core/model/frames.hpp"
+#include "core/model/value_range.hpp"
 
 namespace orni::studies {
 
@@ -86,6 +89,38 @@ void writeContinuationSection(const orni::TrimContinuationOptions& o, TomlWriter
   out.scaled("step", o.step, siPerFile(o.parameter));
   out.integer("max_points", o.max_points);
   out.boolean("locate_events", o.locate_events);
+}
+
+std::optional<double> continuationStart(const orni::TrimContinuationOptions& o,
+                                        const orni::TrimOptions& trim) {
+  auto solved = [&](orni::TrimUnknown u) {
+    return std::find(trim.unknowns.begin(), trim.unknowns.end(), u) != trim.unknowns.end();
+  };
+  switch (o.parameter) {
+    case PeriodicControl::kFrequency:
+      if (solved(orni::TrimUnknown::kFreq)) return std::nullopt;
+      return trim.initial.freq_hz;
+    case PeriodicControl::kTailAngle:
+      if (solved(orni::TrimUnknown::kTailAngle)) return std::nullopt;
+      return trim.initial.tail_angle_rad;
+    case PeriodicControl::kCgPosition: return 0.0;
+  }
+  return std::nullopt;
+}
+
+void checkContinuationEnd(const TableReader& section, const orni::TrimContinuationOptions& o,
+                          const orni::TrimOptions& trim) {
+  const std::optional<double> start = continuationStart(o, trim);
+  if (!start || o.to != *start) return;
+  const double per_file = siPerFile(o.parameter);
+  const std::string where = o.parameter == PeriodicControl::kCgPosition
+                                ? std::string("CG shift 0")
+                                : std::string("the [trim] ") +
+                                      continuationParameterName(o.parameter) + " " +
+                                      displayNumber(*start / per_file);
+  throw section.valueError("to", "a value other than the branch's start (" + where +
+                                     "): a branch needs a range to follow",
+                           displayNumber(o.to / per_file));
 }
 
 }  // namespace orni::studies

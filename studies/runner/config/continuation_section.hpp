@@ -16,11 +16,13 @@
 // or CG shift 0) and runs towards `to`. Every error is an InputError naming file, line and key.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "studies/runner/config/toml_access.hpp"
 #include "trim/trim_continuation.hpp"
+#include "trim/trim_options.hpp"
 
 namespace orni::studies {
 
@@ -35,5 +37,14 @@ const char* continuationParameterName(orni::PeriodicControl p);
 orni::TrimContinuationOptions readContinuationSection(TableReader& section);
 
 void writeContinuationSection(const orni::TrimContinuationOptions& o, TomlWriter& out);
+
+/// The branch's start value of the parameter (SI) when the study fixes it: the [trim] frequency
+/// or tail angle when Eq. (4) does not solve for it, CG shift 0; none when the trim solves it.
+std::optional<double> continuationStart(const orni::TrimContinuationOptions& o,
+                                        const orni::TrimOptions& trim);
+
+/// `to` equal to the known start: an InputError at [continuation] to (a branch of no length).
+void checkContinuationEnd(const TableReader& section, const orni::TrimContinuationOptions& o,
+                          const orni::TrimOptions& trim);
 
 }  // namespace orni::studies

@@ -110,6 +110,7 @@ void readTrimStudy(StudyDocument doc, Study& study) {
                            orni::toString(study.trim.periodic.control) +
                            "\" (the control keeps every orbit of the branch level)",
                        std::string("\"") + continuationParameterName(options.parameter) + "\"");
+  checkContinuationEnd(c, options, study.trim);
 }
 
 /// [calibrate] (required; kind calibrate).

@@ -109,6 +109,12 @@ void readSimulateSection(StudyDocument doc, Study& study) {
   p.freq_hz = sim->optionalDouble(field("simulate.freq_hz"), p.freq_hz);
   readDegrees(*sim, "simulate.theta_deg", p.theta_rad);
   readDegrees(*sim, "simulate.tail_angle_deg", p.tail_angle_rad);
+  // 0 is what a resolved study writes for a tail-less rig; any other angle would be ignored.
+  if (sim->has("tail_angle_deg") && !study.vehicle.tail.present && p.tail_angle_rad != 0.0)
+    throw sim->valueError("tail_angle_deg",
+                          "0 or no tail angle: the vehicle has no [tail] (a tail angle would be "
+                          "silently ignored)",
+                          describeNode(*sim->table().get("tail_angle_deg")));
   o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
   readTolerances(*sim, o, "simulate");
   o.samples_per_cycle = sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);

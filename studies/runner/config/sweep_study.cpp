@@ -198,8 +198,14 @@ std::string bodyOf(const InputError& e) {
                                  StudyKind run) {
   const std::string body = bodyOf(e);
   const TableReader& r = in.reader;
-  const bool key_fault =
-      body.rfind("unknown key", 0) == 0 || body.rfind("missing required key", 0) == 0;
+  // The loader rejecting a table on the axis key's own path (wing.members.LE1.diameter_m: "key
+  // 'wing.members': expected an array of tables, got a table") is the key's fault too, not the
+  // value's (issue 30, item 7).
+  const std::string& bad = e.key();
+  const bool on_path = !bad.empty() && bad.size() < in.axis.key.size() &&
+                       in.axis.key.compare(0, bad.size() + 1, bad + ".") == 0;
+  const bool key_fault = on_path || body.rfind("unknown key", 0) == 0 ||
+                         body.rfind("missing required key", 0) == 0;
   if (key_fault)
     throw r.valueError("key", keyExpectation(run),
                        describeNode(*r.table().get("key")) + " (" + body + ")");

@@ -109,9 +109,11 @@ void readWing(TableReader& top, VehicleModel& v) {
   wing.member_diameter_scale =
       w.optionalDouble(field("wing.member_diameter_scale"), 1.0);
 
-  TableReader skin = w.requiredTable("skin", {"material", "thickness_m"});
+  TableReader skin = w.requiredTable("skin", {"material", "thickness_m", "pretension_N_per_m"});
   wing.skin.material = requireMaterial(skin, v.materials);
   wing.skin.thickness_m = skin.requiredDouble(field("wing.skin.thickness_m"));
+  wing.skin.pretension_N_per_m = skin.optionalDouble(field("wing.skin.pretension_N_per_m"),
+                                                     wing.skin.pretension_N_per_m);
   skin.finish();
 
   std::vector<TableReader> members =
@@ -144,7 +146,7 @@ void readWing(TableReader& top, VehicleModel& v) {
   // [wing.fe]: finite-element and modal settings, every key optional (structure.md 1.6, 2.5, 2.6).
   if (std::optional<TableReader> fe = w.optionalTable(
           "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis",
-                 "p3_joint", "root_edge", "inertial_stiffness"})) {
+                 "p3_joint", "root_edge", "inertial_stiffness", "nonlinear"})) {
     WingFeSettings& f = wing.fe;
     f.element_size_m = fe->optionalDouble(field("wing.fe.element_size_m"), f.element_size_m);
     f.max_modes = fe->optionalInt(field("wing.fe.modes"), f.max_modes);
@@ -157,6 +159,7 @@ void readWing(TableReader& top, VehicleModel& v) {
     f.root_edge_pinned = fe->optionalEnum("root_edge", f.root_edge_pinned, kRootEdges);
     f.inertial_stiffness =
         fe->optionalEnum("inertial_stiffness", f.inertial_stiffness, kInertialStiffness);
+    f.nonlinear = fe->optionalBool("nonlinear", f.nonlinear);
     fe->finish();
   } else if (!(wing.fe.element_size_m <= wing.semispan_m)) {
     // Default h = min(5 mm, s), so that a (tiny) wing without [wing.fe] still writes a resolved
@@ -400,6 +403,7 @@ void writeVehicleToml(const VehicleDefinition& definition, TomlWriter& out,
   out.header(path({"wing", "skin"}));
   out.string("material", w.skin.material);
   out.number("thickness_m", w.skin.thickness_m);
+  out.number("pretension_N_per_m", w.skin.pretension_N_per_m);
   for (const WingMember& m : w.members) {
     out.arrayHeader(path({"wing", "members"}));
     out.string("name", m.name);
@@ -417,6 +421,7 @@ void writeVehicleToml(const VehicleDefinition& definition, TomlWriter& out,
   out.string("p3_joint", nameOf(kP3Joints, w.fe.p3_joint));
   out.string("root_edge", nameOf(kRootEdges, w.fe.root_edge_pinned));
   out.string("inertial_stiffness", nameOf(kInertialStiffness, w.fe.inertial_stiffness));
+  out.boolean("nonlinear", w.fe.nonlinear);
 
   for (const Material& m : v.materials) {
     out.header(path({"materials", m.name}));

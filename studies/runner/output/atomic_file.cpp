@@ -10,6 +10,8 @@
 #include <system_error>
 #include <utility>
 
+#include "studies/runner/output/run_outputs.hpp"
+
 namespace orni::studies {
 
 namespace {
@@ -23,6 +25,7 @@ std::string uniqueTempTag() {
 
 AtomicFileWriter::AtomicFileWriter(std::filesystem::path path) : path_(std::move(path)) {
   namespace fs = std::filesystem;
+  claimRunFolder(path_);  // a run's first file: the earlier run's outputs go first
   if (path_.has_parent_path()) fs::create_directories(path_.parent_path());
   tmp_ = path_.string() + ".tmp." + uniqueTempTag();
   file_ = std::fopen(tmp_.c_str(), "wb");

@@ -8,10 +8,16 @@
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <regex>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
+
+#include "core/model/cancellation.hpp"
+#include "studies/runner/output/interrupted_run.hpp"
+#include "studies/runner/output/run_outputs.hpp"
 
 namespace orni::studies {
 
@@ -51,6 +57,40 @@ void clearLeftovers(const fs::path& dir) {
   for (const fs::path& p : stale) fs::remove_all(p, ec);
 }
 
+/// Creates `dir` (and its parents) or throws OutputPathError saying what is in the way.
+void makeOutputFolder(const fs::path& dir) {
+  const std::string name = dir.string();
+  std::error_code ec;
+  const fs::file_status link = fs::symlink_status(dir, ec);
+  if (!ec && fs::is_symlink(link)) {
+    std::error_code target_ec;
+    const fs::file_status target = fs::status(dir, target_ec);
+    if (target_ec.value() == ELOOP)
+      throw OutputPathError(name + ": the output folder is a symbolic link loop");
+    if (!fs::exists(target)) {
+      std::error_code read_ec;
+      const fs::path to = fs::read_symlink(dir, read_ec);
+      throw OutputPathError(name + ": the output folder is a symbolic link to a missing target" +
+                            (read_ec ? std::string() : " (" + to.string() + ")") +
+                            "; create the target or choose another folder with -o");
+    }
+  }
+  ec.clear();
+  const fs::file_status st = fs::status(dir, ec);
+  if (ec && ec.value() == ELOOP)
+    throw OutputPathError(name + ": the output folder is a symbolic link loop");
+  if (!ec && fs::exists(st) && !fs::is_directory(st))
+    throw OutputPathError(name + ": the output folder exists and is not a folder (" +
+                          (fs::is_regular_file(st) ? "a file" : "not a folder") +
+                          "); choose another folder with -o");
+  ec.clear();
+  fs::create_directories(dir, ec);
+  if (ec || !fs::is_directory(dir))
+    throw OutputPathError(name + ": cannot create the output folder: " +
+                          (ec ? ec.message() : std::string("not a folder")) +
+                          "; choose another folder with -o");
+}
+
 }  // namespace
 
 FolderBusyError::FolderBusyError(const fs::path& dir, long holder_pid)
@@ -60,18 +100,15 @@ FolderBusyError::FolderBusyError(const fs::path& dir, long holder_pid)
           "); wait for it to finish or choose another folder with -o"),
       holder_pid_(holder_pid) {}
 
-OutputFolderLock::OutputFolderLock(const fs::path& dir)
-    : dir_(dir), file_(dir / kFolderLockName) {
-  std::error_code ec;
-  fs::create_directories(dir_, ec);
-  if (ec || !fs::is_directory(dir_))
-    throw std::runtime_error("cannot create the output folder " + dir_.string() +
-                             (ec ? ": " + ec.message() : std::string(": not a folder")));
+OutputFolderLock::OutputFolderLock(const fs::path& dir, FolderUse use, std::string kind)
+    : dir_(dir), file_(dir / kFolderLockName), use_(use), kind_(std::move(kind)) {
+  makeOutputFolder(dir_);
   for (int attempt = 0; fd_ < 0; ++attempt) {
     const int fd = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd < 0)
-      throw std::runtime_error("cannot create the lock file " + file_.string() + ": " +
-                               std::strerror(errno));
+      throw OutputPathError(dir_.string() + ": the output folder is not writable (cannot create " +
+                            "the lock file " + file_.filename().string() + ": " +
+                            std::strerror(errno) + ")");
     if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
       const int err = errno;
       const long holder = pidIn(fd);
@@ -97,9 +134,17 @@ OutputFolderLock::OutputFolderLock(const fs::path& dir)
                              std::strerror(err));
   }
   clearLeftovers(dir_);
+  if (use_ == FolderUse::kRun) expectRunFolder(dir_);
 }
 
 OutputFolderLock::~OutputFolderLock() {
+  if (use_ == FolderUse::kRun) {
+    if (running_ && std::uncaught_exceptions() > 0 && cancellationRequested()) {
+      claimRunFolder(dir_ / "summary.json");  // the interrupted run's folder, not an earlier one's
+      markRunInterrupted(dir_, kind_);
+    }
+    forgetRunFolder(dir_);
+  }
   // Unlink while still holding the lock: a waiting opener of the old file sees it is gone.
   ::unlink(file_.c_str());
   ::close(fd_);

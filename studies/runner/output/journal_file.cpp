@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -37,6 +38,22 @@ void writeAll(int fd, const std::string& text, const std::filesystem::path& file
   }
 }
 
+std::atomic<bool> g_fresh_run{false};
+
+constexpr std::size_t kNotForeign = static_cast<std::size_t>(-1);
+
+/// kNotForeign when `file` starts with the complete line `header` or holds nothing after its
+/// first line (nothing to lose); otherwise the count of its lines after the first (the other
+/// run's records).
+std::size_t foreignRecords(const std::filesystem::path& file, const std::string& header) {
+  std::ifstream in(file, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line) || (!in.eof() && line == header)) return kNotForeign;
+  std::size_t records = 0;
+  while (std::getline(in, line)) ++records;
+  return records == 0 ? kNotForeign : records;
+}
+
 }  // namespace
 
 std::string hex16(std::uint64_t v) {
@@ -45,15 +62,34 @@ std::string hex16(std::uint64_t v) {
   return buf;
 }
 
+ForeignJournalError::ForeignJournalError(const std::filesystem::path& file, std::size_t records)
+    : std::runtime_error(
+          (file.has_parent_path() ? file.parent_path().string() : std::string(".")) +
+          ": the folder holds " + file.filename().string() +
+          ", the journal of another study, grid or version (" + std::to_string(records) +
+          " finished record(s) of an interrupted run); run the same study again to resume it, "
+          "run with --fresh to discard it, or choose another folder with -o") {}
+
+void setFreshRun(bool fresh) noexcept { g_fresh_run.store(fresh); }
+bool freshRun() noexcept { return g_fresh_run.load(); }
+
 JournalFile::JournalFile(std::filesystem::path file, const std::string& header,
                          const KeepLine& keep, Reading* reading)
     : file_(std::move(file)) {
   Reading r;
+  std::error_code ec;
+  const bool existed = std::filesystem::exists(file_, ec);
+  // Another run's journal is refused before anything is written (nothing is deleted).
+  if (existed && !freshRun()) {
+    const std::size_t records = foreignRecords(file_, header);
+    if (records != kNotForeign) throw ForeignJournalError(file_, records);
+  }
   // Line by line into the rewritten file: a journal of any length never sits in memory.
   AtomicFileWriter kept(file_);
   kept.write(header + '\n');
-  std::error_code ec;
-  if (std::filesystem::exists(file_, ec)) {
+  if (existed && freshRun()) {
+    r.existed = true;
+  } else if (existed) {
     r.existed = true;
     std::ifstream in(file_, std::ios::binary);
     std::string line;

@@ -1,22 +1,29 @@
 #include "studies/runner/plotting/gnuplot.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 #include <system_error>
 #include <vector>
 
+#include "core/model/cancellation.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 
 #ifndef ORNI_GNUPLOT
 #define ORNI_GNUPLOT "gnuplot"
 #endif
+
 
 namespace orni::studies {
 
@@ -24,10 +31,51 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string shellQuote(const std::string& s) {
-  std::string out = "'";
-  for (char c : s) out += (c == '\'') ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
+/// Runs `argv` (argv[0] looked up in PATH) in `cwd` with stdout and stderr to `log`, in this
+/// process group, and waits for it: its exit status (0 = success), or -1 when it could not be
+/// started or died of a signal. A cancellation request while it runs (or when it died) stops it
+/// and throws Cancelled.
+int runGnuplot(const fs::path& cwd, const fs::path& log, const std::vector<std::string>& argv) {
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, log.c_str(),
+                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  pid_t pid = 0;
+  const int err = ::posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (err != 0) {
+    std::ofstream(log) << "cannot start " << argv[0] << ": " << std::strerror(err) << "\n";
+    return -1;
+  }
+  int status = 0;
+  for (int polls = 0;; ++polls) {
+    const pid_t r = ::waitpid(pid, &status, WNOHANG);
+    if (r == pid) break;
+    if (r < 0 && errno != EINTR) return -1;
+    if (cancellationRequested()) {
+      // Stop it (a second later for good), reap it, and leave as the interrupt.
+      ::kill(pid, SIGTERM);
+      for (int i = 0; i < 100 && ::waitpid(pid, &status, WNOHANG) == 0; ++i) ::usleep(10000);
+      if (::waitpid(pid, &status, WNOHANG) == 0) {
+        ::kill(pid, SIGKILL);
+        ::waitpid(pid, &status, 0);
+      }
+      throw Cancelled{};
+    }
+    ::usleep(polls < 50 ? 2000 : 20000);  // quick figures return fast; then 50 polls a second
+  }
+  // Ctrl-C reached gnuplot and us alike: our handler may still be running on another thread
+  // when gnuplot's death is seen, so an interrupt signal gets a moment to be noted.
+  if (WIFSIGNALED(status) && (WTERMSIG(status) == SIGINT || WTERMSIG(status) == SIGTERM))
+    for (int i = 0; i < 50 && !cancellationRequested(); ++i) ::usleep(2000);
+  if (cancellationRequested()) throw Cancelled{};
+  if (WIFEXITED(status)) return WEXITSTATUS(status);
+  return -1;
 }
 
 /// A gnuplot single-quoted string ('' stands for one quote inside).
@@ -143,13 +191,11 @@ void drawInScratch(const fs::path& dir, const std::string& stem) {
   const fs::path run_dir = fs::absolute(dir);
   const ScratchFolder scratch(run_dir, stem);
   const fs::path log = scratch.path() / "gnuplot.log";
-  const std::string cmd = "cd " + shellQuote(scratch.path().string()) + " && " +
-                          shellQuote(gnuplotProgram()) + " -e " +
-                          shellQuote("set loadpath " + gnuplotQuote(run_dir.string())) + " " +
-                          shellQuote((run_dir / (stem + ".gp")).string()) + " > " +
-                          shellQuote(log.string()) + " 2>&1";
   const fs::path script = dir / (stem + ".gp");
-  const int rc = std::system(cmd.c_str());
+  const int rc = runGnuplot(scratch.path(), log,
+                            {gnuplotProgram(), "-e",
+                             "set loadpath " + gnuplotQuote(run_dir.string()),
+                             (run_dir / (stem + ".gp")).string()});
   if (rc != 0)
     throw std::runtime_error("gnuplot failed on " + script.string() + "; gnuplot said: " +
                              logTail(log));
@@ -185,10 +231,12 @@ void drawFigure(const fs::path& dir, const std::string& stem, const std::string&
   drawInScratch(dir, stem);
 }
 
-int redrawFigures(const fs::path& dir) {
+int redrawFigures(const fs::path& dir, const std::function<bool(const std::string&)>& include) {
   std::vector<std::string> stems;
   for (const auto& e : fs::directory_iterator(dir))
-    if (e.path().extension() == ".gp" && e.is_regular_file()) stems.push_back(e.path().stem().string());
+    if (e.path().extension() == ".gp" && e.is_regular_file() &&
+        (!include || include(e.path().stem().string())))
+      stems.push_back(e.path().stem().string());
   std::sort(stems.begin(), stems.end());
   for (const std::string& s : stems) drawInScratch(dir, s);
   return static_cast<int>(stems.size());

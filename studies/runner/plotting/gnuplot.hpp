@@ -4,9 +4,16 @@
 // closing tag: gnuplot exits 0 even when the disk is full) and renamed into place, and the folder
 // is removed whatever happens. The environment variable ORNI_GNUPLOT names another gnuplot
 // program (tests use a stand-in).
+//
+// gnuplot runs as a child process in the caller's process group (a terminal's Ctrl-C reaches it
+// too). While it runs the caller polls the cancellation request (core/model/cancellation.hpp, set
+// by the CLI's SIGINT/SIGTERM handler): a request stops gnuplot (SIGTERM, then SIGKILL) and
+// throws Cancelled; a gnuplot that died while a request stands is an interrupt too, never
+// "gnuplot failed".
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 namespace orni::studies {
@@ -17,8 +24,10 @@ namespace orni::studies {
 void drawFigure(const std::filesystem::path& dir, const std::string& stem,
                 const std::string& body);
 
-/// Redraw every *.gp figure script in `dir` (an existing folder); returns how many were drawn.
-/// Throws std::runtime_error when one cannot be drawn.
-int redrawFigures(const std::filesystem::path& dir);
+/// Redraw every *.gp figure script in `dir` (an existing folder) whose stem `include` takes (every
+/// one when it is empty); returns how many were drawn. Throws std::runtime_error when one cannot
+/// be drawn.
+int redrawFigures(const std::filesystem::path& dir,
+                  const std::function<bool(const std::string& stem)>& include = {});
 
 }  // namespace orni::studies

@@ -16,6 +16,7 @@
 #include "studies/runner/commands/aeromap_command.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
+#include "studies/runner/output/journal_file.hpp"
 
 namespace orni::studies {
 namespace {
@@ -150,7 +151,9 @@ TEST_F(CommandsAeromap, ResumesFromATornJournalWithoutRecomputing) {
             std::string::npos);
 }
 
-TEST_F(CommandsAeromap, JournalOfAnotherStudyIsDiscarded) {
+// Issue 30, item 2: refused and kept (ForeignJournalError: exit 2 naming --fresh), then
+// discarded with --fresh.
+TEST_F(CommandsAeromap, JournalOfAnotherStudyIsRefusedThenDiscardedWhenFresh) {
   Study study = smallMap();
   const fs::path out = dir_ / "out";
   {  // a journal of the same grid with other options (another fingerprint)
@@ -166,7 +169,14 @@ TEST_F(CommandsAeromap, JournalOfAnotherStudyIsDiscarded) {
   AeromapRunOptions run = quiet(2);
   std::size_t computed = 0;
   run.on_point = [&](std::size_t, const AeroMapPoint&) { ++computed; };
-  ASSERT_EQ(runAeromapStudy(study, out, run), 0);
+  const std::string others = readAll(out / kAeromapJournalName);
+  EXPECT_THROW(runAeromapStudy(study, out, run), ForeignJournalError);
+  EXPECT_EQ(readAll(out / kAeromapJournalName), others);
+  EXPECT_EQ(computed, 0u);
+  setFreshRun(true);
+  const int rc = runAeromapStudy(study, out, run);
+  setFreshRun(false);
+  ASSERT_EQ(rc, 0);
   EXPECT_EQ(computed, kPoints);
 }
 

@@ -16,6 +16,7 @@
 #include "studies/runner/commands/optimize_command.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
+#include "studies/runner/output/journal_file.hpp"
 
 namespace orni::studies {
 namespace {
@@ -147,20 +148,28 @@ TEST_F(CommandsOptimize, ResumesAnInterruptedRunWithTheSameBytes) {
             std::string::npos);
 }
 
-TEST_F(CommandsOptimize, ForeignJournalIsDiscarded) {
+// Issue 30, item 2: another study's journal with records is refused and kept; --fresh discards.
+TEST_F(CommandsOptimize, ForeignJournalIsRefusedThenDiscardedWhenFresh) {
   const Study study = smallStudy(1);
   fs::create_directories(dir_ / "out");
+  const std::string foreign =
+      "# ornithopter optimize journal v1 fingerprint=0000000000000000 variables=2 "
+      "constraints=2 values=15\n0000000000000000 0,an evaluation of another study\n";
   {
     std::ofstream j(dir_ / "out" / kOptimizeJournalName);
-    j << "# ornithopter optimize journal v1 fingerprint=0000000000000000 variables=2 "
-         "constraints=2 values=15\n";
+    j << foreign;
   }
   OptimizeRunOptions o = quiet(1);
   int replayed = 0;
   o.on_evaluation = [&](const opt::EvaluationRecord& r) {
     replayed += r.source == opt::EvaluationSource::kReplayed;
   };
-  ASSERT_EQ(runOptimizeStudy(study, dir_ / "out", o), 0);
+  EXPECT_THROW(runOptimizeStudy(study, dir_ / "out", o), ForeignJournalError);
+  EXPECT_EQ(readAll(dir_ / "out" / kOptimizeJournalName), foreign);
+  setFreshRun(true);
+  const int rc = runOptimizeStudy(study, dir_ / "out", o);
+  setFreshRun(false);
+  ASSERT_EQ(rc, 0);
   EXPECT_EQ(replayed, 0);
   EXPECT_FALSE(fs::exists(dir_ / "out" / kOptimizeJournalName));
 }

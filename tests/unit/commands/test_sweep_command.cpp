@@ -21,6 +21,7 @@
 #include "studies/runner/commands/sweep_command.hpp"
 #include "studies/runner/commands/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
+#include "studies/runner/output/journal_file.hpp"
 #include "studies/runner/output/point_journal.hpp"
 
 namespace orni::studies {
@@ -230,7 +231,8 @@ TEST_F(CommandsSweep, ResumesFromATruncatedJournalWithoutRecomputing) {
   EXPECT_NE(summary.find("\"points_resumed\": 2"), std::string::npos);
   EXPECT_NE(summary.find("\"points_computed\": 4"), std::string::npos);
 
-  // A journal of another study (here: 4 cycles) is discarded.
+  // A journal of another study (here: 4 cycles) is refused and kept, and discarded with --fresh
+  // (issue 30, item 2).
   const Study other =
       loadStudyFile(write("other.toml", "kind = \"sweep\"\n" + vehicle("rfw_tunnel.toml") + R"(
 [sweep]
@@ -242,8 +244,14 @@ cycles = 4
   SweepRunOptions die = quiet(1);
   die.on_point = [](std::size_t, const SweepPointResult&) { throw std::runtime_error("crash"); };
   EXPECT_THROW(runSweepStudy(other, out, die), std::runtime_error);
+  const std::string others = readAll(journal);
+  EXPECT_THROW(runSweepStudy(sweep, out, resume), ForeignJournalError);
+  EXPECT_EQ(readAll(journal), others);
   computed.clear();
-  ASSERT_EQ(runSweepStudy(sweep, out, resume), 0);
+  setFreshRun(true);
+  const int fresh_rc = runSweepStudy(sweep, out, resume);
+  setFreshRun(false);
+  ASSERT_EQ(fresh_rc, 0);
   EXPECT_EQ(computed.size(), kRigPoints);
   EXPECT_EQ(readAll(out / "sweep.csv"), reference);
 }

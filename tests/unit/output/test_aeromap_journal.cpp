@@ -131,9 +131,15 @@ TEST(OutputAeromapJournal, ReopenKeepsOnlyTheValidRecordsInOrderOfTheSameStudy) 
     });
     EXPECT_EQ(seen, (std::vector<std::size_t>{0, 1, 2}));
   }
-  {  // another fingerprint (or point count): everything is discarded
+  // Another fingerprint (or point count): refused and kept (issue 30, item 2) ...
+  const std::string finished = readAll(file);
+  EXPECT_THROW(AeroMapJournal(file, 0x9999, 5, nullptr), ForeignJournalError);
+  EXPECT_EQ(readAll(file), finished);
+  {  // ... and discarded by a fresh run (--fresh)
+    setFreshRun(true);
     JournalResume r;
     AeroMapJournal j(file, 0x9999, 5, &r);
+    setFreshRun(false);
     EXPECT_TRUE(r.existed);
     EXPECT_FALSE(r.fingerprint_matched);
     EXPECT_EQ(r.records, 0u);

@@ -2,9 +2,10 @@
 // its header comment: a new file holds the header line only; records appended survive a reopen
 // with the same header and reach `keep` in file order; a torn last line and every refused line are
 // dropped, counted and removed from the file before the next append; a different header (another
-// run's fingerprint) starts afresh without offering any line; reopening is atomic (a failure while
-// reading leaves the old bytes and no temporary file); append after remove() throws; appends from
-// several threads never interleave. The truth is the exact file bytes.
+// run's fingerprint) with records is refused and kept, started afresh only with --fresh;
+// reopening is atomic (a failure while reading leaves the old bytes and no temporary file); append
+// after remove() throws; appends from several threads never interleave. The truth is the exact
+// file bytes.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -127,26 +128,52 @@ TEST_F(OutputJournalFileTest, RefusedLinesAreCountedAndRemoved) {
   EXPECT_EQ(readAll(file_), kHeader + "\ngood 1\ngood 2\n");
 }
 
-TEST_F(OutputJournalFileTest, AnotherRunsFingerprintStartsAfresh) {
-  writeRaw(file_, "orni-journal v1 fingerprint=0000000000000001\npoint 0 ok\n");
-  JournalFile::Reading r;
-  JournalFile j(file_, kHeader, recordAll(), &r);
-  EXPECT_TRUE(r.existed);
-  EXPECT_FALSE(r.header_matched);
-  EXPECT_EQ(r.rejected_lines, 0u);  // records of another run are not "rejected": never read
+// Issue 30, item 2: another run's finished records are refused, never deleted (the CLI exits 2
+// naming the folder and --fresh); the file keeps its bytes and no temporary file is left.
+TEST_F(OutputJournalFileTest, AnotherRunsJournalIsRefusedAndKept) {
+  const std::string other = "orni-journal v1 fingerprint=0000000000000001\npoint 0 ok\n";
+  writeRaw(file_, other);
+  try {
+    JournalFile j(file_, kHeader, recordAll(), nullptr);
+    FAIL() << "another run's journal was opened";
+  } catch (const ForeignJournalError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(dir_.string()), std::string::npos) << what;  // the folder
+    EXPECT_NE(what.find("--fresh"), std::string::npos) << what;      // the way out
+    EXPECT_NE(what.find("1 finished record"), std::string::npos) << what;
+  }
   EXPECT_TRUE(offered_.empty());
-  EXPECT_EQ(readAll(file_), kHeader + "\n");
+  EXPECT_EQ(readAll(file_), other);
+  EXPECT_EQ(entries(dir_), std::set<std::string>{"journal.txt"});
+}
+
+// With --fresh (setFreshRun) any journal there is discarded, a matching one too.
+TEST_F(OutputJournalFileTest, AFreshRunDiscardsAnyJournal) {
+  setFreshRun(true);
+  for (const std::string& bytes :
+       {std::string("orni-journal v1 fingerprint=0000000000000001\npoint 0 ok\n"),
+        kHeader + "\npoint 0 ok\n"}) {
+    writeRaw(file_, bytes);
+    offered_.clear();
+    JournalFile::Reading r;
+    { JournalFile j(file_, kHeader, recordAll(), &r); }
+    EXPECT_TRUE(r.existed);
+    EXPECT_FALSE(r.header_matched);
+    EXPECT_EQ(r.rejected_lines, 0u);  // records of a discarded journal are not "rejected"
+    EXPECT_TRUE(offered_.empty());
+    EXPECT_EQ(readAll(file_), kHeader + "\n");
+  }
+  setFreshRun(false);
 }
 
 TEST_F(OutputJournalFileTest, HeaderMustBeACompleteIdenticalLine) {
-  const std::vector<std::string> not_matching = {
-      "",                       // empty file
-      kHeader,                  // torn header: no newline
-      kHeader + " \n",          // trailing blank
-      kHeader + "\r\nrec\n",    // CRLF line end
-      kHeader.substr(1) + "\nrec\n",
+  // Without records after the first line there is nothing to lose: started afresh.
+  const std::vector<std::string> empty_of_records = {
+      "",               // empty file
+      kHeader,          // torn header: no newline
+      kHeader + " \n",  // trailing blank
   };
-  for (const std::string& bytes : not_matching) {
+  for (const std::string& bytes : empty_of_records) {
     writeRaw(file_, bytes);
     offered_.clear();
     JournalFile::Reading r;
@@ -155,6 +182,19 @@ TEST_F(OutputJournalFileTest, HeaderMustBeACompleteIdenticalLine) {
     EXPECT_FALSE(r.header_matched) << '[' << bytes << ']';
     EXPECT_TRUE(offered_.empty()) << '[' << bytes << ']';
     EXPECT_EQ(readAll(file_), kHeader + "\n") << '[' << bytes << ']';
+  }
+  // With records: another run's journal, refused and kept.
+  const std::vector<std::string> foreign = {
+      kHeader + "\r\nrec\n",  // CRLF line end
+      kHeader.substr(1) + "\nrec\n",
+  };
+  for (const std::string& bytes : foreign) {
+    writeRaw(file_, bytes);
+    offered_.clear();
+    EXPECT_THROW(JournalFile(file_, kHeader, recordAll(), nullptr), ForeignJournalError)
+        << '[' << bytes << ']';
+    EXPECT_TRUE(offered_.empty()) << '[' << bytes << ']';
+    EXPECT_EQ(readAll(file_), bytes) << '[' << bytes << ']';
   }
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/structure/calculix_deck.hpp"
+#include "core/structure/calculix_results.hpp"
 #include "tests/unit/structure/fe_test_meshes.hpp"
 
 namespace orni::structure {
@@ -251,6 +252,115 @@ TEST(StructureCalculixDeck, RejectsBadInput) {
   EXPECT_THROW(calculixDeck(w.vehicle, bad_member, o), std::invalid_argument);
   w.vehicle.wing.skin.material = "NOPE";
   EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, o), std::invalid_argument);
+}
+
+// Static steps (structure.md 3.8): the load ladder, the dead pressure's consistent forces on the
+// S6 midside nodes, nodal forces in N and N mm, clamped nodes with their edges' midside nodes,
+// no P2 clamp, the printed node set.
+TEST(StructureCalculixDeck, StaticStepsLoadsAndClampedNodes) {
+  fe_test::MiniWing w = fe_test::miniWing(4, 8, 0.04, 0.08);
+  const int n = w.mesh.nodeCount();
+  CalculixDeckOptions o;
+  o.frequency_step = false;
+  o.clamp_p2 = false;
+  o.clamped_nodes = {fe_test::gridNode(0, 0, 4), fe_test::gridNode(1, 0, 4)};  // one edge
+  o.static_steps.load_factors = {0.5, 1.0};
+  o.static_steps.load.skin_pressure_pa = 1000.0;  // 1e-3 MPa
+  o.static_steps.load.nodal_load = Eigen::VectorXd::Zero(kDofsPerNode * n);
+  o.static_steps.load.nodal_load(globalDof(3, kV)) = 2.0;          // N
+  o.static_steps.load.nodal_load(globalDof(3, kThetaX)) = 0.25;    // N m -> 250 N mm
+  o.static_steps.print_nodes = {3, 0};
+  const std::string text = calculixDeck(w.vehicle, w.mesh, o);
+  const ParsedDeck d = parse(text);
+
+  EXPECT_TRUE(cardsStartingWith(d.cards, "*FREQUENCY").empty());
+  const auto steps = cardsStartingWith(d.cards, "*STEP");
+  ASSERT_EQ(steps.size(), 2u);
+  EXPECT_EQ(steps[0]->keyword, "*STEP, NLGEOM, INC=1000");
+  const auto statics = cardsStartingWith(d.cards, "*STATIC");
+  ASSERT_EQ(statics.size(), 2u);
+  EXPECT_EQ(statics[0]->lines, std::vector<std::string>{"0.05, 1., 1E-05, 0.25"});
+  // Nodes sets: no P2; the clamped edge = its two ends + its midside node; NPRINT sorted.
+  std::map<std::string, std::vector<std::string>> nsets;
+  for (const Card* c : cardsStartingWith(d.cards, "*NSET")) nsets[c->keyword] = c->lines;
+  EXPECT_EQ(nsets.count("*NSET, NSET=P2"), 0u);
+  ASSERT_EQ(nsets.count("*NSET, NSET=CLAMPED"), 1u);
+  const std::vector<std::string>& clamped = nsets.at("*NSET, NSET=CLAMPED");
+  ASSERT_EQ(clamped.size(), 3u);
+  const Eigen::Vector3d mid =
+      0.5e3 * (w.mesh.nodes_W_m[static_cast<std::size_t>(fe_test::gridNode(0, 0, 4))] +
+               w.mesh.nodes_W_m[static_cast<std::size_t>(fe_test::gridNode(1, 0, 4))]);
+  EXPECT_LT((d.nodes_mm.at(std::stoi(clamped[2])) - mid).norm(), 1e-9);
+  EXPECT_EQ(nsets.at("*NSET, NSET=NPRINT"), (std::vector<std::string>{"1", "4"}));
+  const auto boundary = cardsStartingWith(d.cards, "*BOUNDARY");
+  ASSERT_EQ(boundary.size(), 1u);
+  EXPECT_EQ(boundary[0]->lines, (std::vector<std::string>{"P3, 1, 3", "P3, 6, 6", "CLAMPED, 1, 6"}));
+
+  // Loads of the second step (factor 1): the pressure's z forces add up to p A, all on midside
+  // nodes (ids > n); the nodal force and moment of node 3 (deck node 4).
+  const auto cloads = cardsStartingWith(d.cards, "*CLOAD");
+  ASSERT_EQ(cloads.size(), 2u);
+  double fz = 0.0;
+  for (const std::string& l : cloads[1]->lines) {
+    const std::vector<double> v = numbers(l);
+    ASSERT_EQ(v.size(), 3u);
+    if (v[1] == 3.0) {
+      EXPECT_GT(v[0], n) << l;
+      fz += v[2];
+    }
+  }
+  EXPECT_NEAR(fz, 1e-3 * 40.0 * 80.0, 1e-9);  // MPa x mm^2 = N
+  EXPECT_NE(std::find(cloads[1]->lines.begin(), cloads[1]->lines.end(), "4, 2, 2."),
+            cloads[1]->lines.end());
+  EXPECT_NE(std::find(cloads[1]->lines.begin(), cloads[1]->lines.end(), "4, 4, 250."),
+            cloads[1]->lines.end());
+  EXPECT_NE(std::find(cloads[0]->lines.begin(), cloads[0]->lines.end(), "4, 4, 125."),
+            cloads[0]->lines.end());
+  EXPECT_EQ(cardsStartingWith(d.cards, "*NODE PRINT").size(), 2u);
+
+  // Follower pressure: *DLOAD P on the skin instead; linear steps without NLGEOM.
+  o.static_steps.load.follower_pressure = true;
+  o.static_steps.load.nodal_load.resize(0);
+  o.static_steps.nlgeom = false;
+  const ParsedDeck f = parse(calculixDeck(w.vehicle, w.mesh, o));
+  const auto dloads = cardsStartingWith(f.cards, "*DLOAD");
+  ASSERT_EQ(dloads.size(), 2u);
+  EXPECT_EQ(dloads[1]->lines, std::vector<std::string>{"SKIN, P, 0.001"});
+  EXPECT_TRUE(cardsStartingWith(f.cards, "*CLOAD").empty());
+  EXPECT_EQ(cardsStartingWith(f.cards, "*STEP")[0]->keyword, "*STEP, INC=1000");
+
+  // Bad static input.
+  CalculixDeckOptions bad = o;
+  bad.static_steps.load.nodal_load = Eigen::VectorXd::Zero(5);
+  EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, bad), std::invalid_argument);
+  bad = o;
+  bad.static_steps.load_factors.clear();
+  EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, bad), std::invalid_argument);  // no step at all
+  bad = o;
+  bad.clamped_nodes = {n};
+  EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, bad), std::invalid_argument);
+}
+
+TEST(StructureCalculixResults, ReadsDisplacementTablesOfADatFile) {
+  std::istringstream dat(
+      "\n displacements (vx,vy,vz) for set NPRINT and time  0.5000000E+00\n\n"
+      "         1  1.0E-01 -2.0E-01  3.0E+00\n         4  0.0  0.0 -1.5E+01\n\n"
+      " stresses (elem, integ.pnt.,sxx,syy,szz,sxy,sxz,syz) for set EALL and time  0.5\n\n"
+      "         1   1  1.0 2.0 3.0 4.0 5.0 6.0\n\n"
+      " displacements (vx,vy,vz) for set NPRINT and time  0.1000000E+01\n\n"
+      "         1  2.0E-01 -4.0E-01  6.0E+00\n\n");
+  const std::vector<CalculixDisplacementTable> tables = readCalculixDisplacements(dat);
+  ASSERT_EQ(tables.size(), 2u);
+  EXPECT_EQ(tables[0].set, "NPRINT");
+  EXPECT_DOUBLE_EQ(tables[0].time, 0.5);
+  EXPECT_EQ(tables[0].displacement_mm.size(), 2u);
+  EXPECT_DOUBLE_EQ(tables[0].displacement_mm.at(4).z(), -15.0);
+  const CalculixDisplacementTable* end = calculixTableAt(tables, 1.0);
+  ASSERT_NE(end, nullptr);
+  EXPECT_EQ(calculixTableAt(tables, 2.0), nullptr);
+  const Eigen::Matrix3Xd u = meshDisplacements(*end, 3);  // mesh node 0 = ccx node 1, in m
+  EXPECT_DOUBLE_EQ(u(2, 0), 6e-3);
+  EXPECT_TRUE(std::isnan(u(0, 1)));
 }
 
 }  // namespace

@@ -1,0 +1,232 @@
+// Condensed membrane stiffness of the modal wing (membrane_rom.hpp, structure.md 3.8).
+#include "core/structure/membrane_rom.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <Eigen/Cholesky>
+#include <Eigen/SparseCholesky>
+
+namespace orni::structure {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+
+// Pair products Q_p = q_i q_j.
+void pairProducts(const ModalMembraneStiffness& m, const Eigen::VectorXd& q, Eigen::VectorXd* out) {
+  for (int p = 0; p < m.pairCount(); ++p) {
+    const auto& ij = m.pairs[static_cast<std::size_t>(p)];
+    (*out)(p) = q(ij[0]) * q(ij[1]);
+  }
+}
+
+}  // namespace
+
+double ModalMembraneStiffness::energy(const Eigen::VectorXd& q, Workspace* ws) const {
+  if (empty()) return 0.0;
+  pairProducts(*this, q, &ws->products);
+  ws->z.noalias() = pair_stiffness * ws->products;
+  return 0.5 * ws->products.dot(ws->z);
+}
+
+void ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, Workspace* ws,
+                                      Eigen::VectorXd* f, double scale) const {
+  if (empty()) return;
+  pairProducts(*this, q, &ws->products);
+  ws->z.noalias() = pair_stiffness * ws->products;
+  // f_r = sum_p z_p dQ_p/dq_r, dQ_p/dq_r = delta_ir q_j + delta_jr q_i.
+  for (int p = 0; p < pairCount(); ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    const double z = scale * ws->z(p);
+    (*f)(ij[0]) += z * q(ij[1]);
+    (*f)(ij[1]) += z * q(ij[0]);
+  }
+}
+
+Eigen::MatrixXd ModalMembraneStiffness::tangent(const Eigen::VectorXd& q) const {
+  const int m = mode_count;
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(m, m);
+  if (empty()) return k;
+  const int np = pairCount();
+  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(np, m);  // dQ/dq
+  Eigen::VectorXd products(np);
+  for (int p = 0; p < np; ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    jac(p, ij[0]) += q(ij[1]);
+    jac(p, ij[1]) += q(ij[0]);
+    products(p) = q(ij[0]) * q(ij[1]);
+  }
+  const Eigen::VectorXd z = pair_stiffness * products;
+  k.noalias() = jac.transpose() * (pair_stiffness * jac);
+  for (int p = 0; p < np; ++p) {  // sum_p z_p d^2 Q_p / dq dq
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    k(ij[0], ij[1]) += z(p);
+    k(ij[1], ij[0]) += z(p);
+  }
+  return k;
+}
+
+Eigen::VectorXd ModalMembraneStiffness::membraneDisplacement(const Eigen::VectorXd& q) const {
+  if (relaxation.cols() != pairCount())
+    throw std::logic_error("membraneDisplacement: the relaxation shapes were not kept");
+  Eigen::VectorXd products(pairCount());
+  pairProducts(*this, q, &products);
+  return relaxation * products;
+}
+
+ModalMembraneStiffness modalMembraneStiffness(const VonKarmanTerms& terms,
+                                              const SparseMatrix& stiffness,
+                                              const DofPartition& part,
+                                              const std::vector<Vec3>& nodes_W_m,
+                                              const Eigen::MatrixXd& shapes,
+                                              bool keep_relaxation) {
+  const int n = terms.dofCount();
+  const auto m = static_cast<int>(shapes.cols());
+  if (shapes.rows() != n || stiffness.rows() != n ||
+      static_cast<int>(nodes_W_m.size()) * kDofsPerNode != n)
+    throw std::invalid_argument("membrane stiffness: shapes, K and the mesh differ in size");
+  ModalMembraneStiffness out;
+  if (m == 0) return out;
+  // A flat wing only: the condensation rests on K not coupling in-plane and out-of-plane DOFs.
+  double extent = 0.0, height = 0.0;
+  for (const Vec3& x : nodes_W_m) {
+    extent = std::max(extent, (x - nodes_W_m.front()).norm());
+    height = std::max(height, std::abs(x.z() - nodes_W_m.front().z()));
+  }
+  if (height > 1e-12 * extent)
+    throw std::invalid_argument(
+        "membrane stiffness: the wing is not flat (the condensation needs the in-plane and the "
+        "out-of-plane DOFs uncoupled)");
+  out.mode_count = m;
+  for (int i = 0; i < m; ++i)
+    for (int j = i; j < m; ++j) out.pairs.push_back({i, j});
+  const int np = out.pairCount();
+
+  // Element strain coefficients h_p per pair, weighted so that A = H^T H, and the in-plane
+  // nodal loads F_p = sum_e w_e B_e^T D_e h_p.
+  const std::vector<VonKarmanTerms::Facet>& facets = terms.facets();
+  const std::vector<VonKarmanTerms::Member>& members = terms.members();
+  const Mat3& c = terms.membraneStiffness();
+  const auto nf = static_cast<Eigen::Index>(facets.size());
+  const auto nb = static_cast<Eigen::Index>(members.size());
+  Eigen::MatrixXd h_weighted(3 * nf + nb, np);
+  Eigen::MatrixXd loads = Eigen::MatrixXd::Zero(n, np);
+  Mat3 c_chol_t = Mat3::Zero();  // L^T of C = L L^T (C = 0 without skin)
+  if (nf > 0) c_chol_t = Eigen::LLT<Mat3>(c).matrixU();
+  Eigen::Matrix<double, 2, Eigen::Dynamic> g(2, m);
+  for (Eigen::Index e = 0; e < nf; ++e) {
+    const VonKarmanTerms::Facet& f = facets[static_cast<std::size_t>(e)];
+    Eigen::Matrix<double, 3, Eigen::Dynamic> w(3, m);
+    for (int a = 0; a < 3; ++a)
+      w.row(a) = f.triad.row(2) * shapes.middleRows<3>(globalDof(f.nodes[static_cast<std::size_t>(a)], kU));
+    g.noalias() = f.grad * w;
+    const double sqrt_area = std::sqrt(f.area_m2);
+    for (int p = 0; p < np; ++p) {
+      const int i = out.pairs[static_cast<std::size_t>(p)][0];
+      const int j = out.pairs[static_cast<std::size_t>(p)][1];
+      Vec3 h(g(0, i) * g(0, j), g(1, i) * g(1, j), g(0, i) * g(1, j) + g(1, i) * g(0, j));
+      if (i == j) h *= 0.5;
+      h_weighted.block<3, 1>(3 * e, p) = sqrt_area * (c_chol_t * h);
+      const Eigen::Matrix<double, 6, 1> f_d = f.area_m2 * (f.b_m.transpose() * (c * h));
+      for (int a = 0; a < 3; ++a)
+        loads.block<3, 1>(globalDof(f.nodes[static_cast<std::size_t>(a)], kU), p) +=
+            f.triad.row(0).transpose() * f_d(2 * a) + f.triad.row(1).transpose() * f_d(2 * a + 1);
+    }
+  }
+  Eigen::Matrix<double, 3, Eigen::Dynamic> s(3, m);
+  for (Eigen::Index e = 0; e < nb; ++e) {
+    const VonKarmanTerms::Member& b = members[static_cast<std::size_t>(e)];
+    const Mat3 proj = Mat3::Identity() - b.axis * b.axis.transpose();
+    s.noalias() = proj * (shapes.middleRows<3>(globalDof(b.nodes[1], kU)) -
+                          shapes.middleRows<3>(globalDof(b.nodes[0], kU))) /
+                  b.length_m;
+    const double sqrt_w = std::sqrt(b.axial_stiffness_n * b.length_m);
+    for (int p = 0; p < np; ++p) {
+      const int i = out.pairs[static_cast<std::size_t>(p)][0];
+      const int j = out.pairs[static_cast<std::size_t>(p)][1];
+      const double h = (i == j ? 0.5 : 1.0) * s.col(i).dot(s.col(j));
+      h_weighted(3 * nf + e, p) = sqrt_w * h;
+      const Vec3 f_axial = b.axial_stiffness_n * h * b.axis;
+      loads.block<3, 1>(globalDof(b.nodes[1], kU), p) += f_axial;
+      loads.block<3, 1>(globalDof(b.nodes[0], kU), p) -= f_axial;
+    }
+  }
+  Eigen::MatrixXd cmat = h_weighted.transpose() * h_weighted;
+
+  // In-plane relaxation: K_mm U = -F over the retained in-plane DOFs (u, v, theta_z).
+  std::vector<int> in_plane;
+  for (int d : part.retained()) {
+    const int slot = d % kDofsPerNode;
+    if (slot == kU || slot == kV || slot == kThetaZ) in_plane.push_back(d);
+  }
+  std::sort(in_plane.begin(), in_plane.end());
+  if (!in_plane.empty()) {
+    const SparseMatrix k_mm = extractBlock(stiffness, in_plane, in_plane);
+    Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(k_mm);
+    if (ldlt.info() != Eigen::Success)
+      throw std::runtime_error("membrane stiffness: the in-plane stiffness is singular");
+    Eigen::MatrixXd f_free(static_cast<Eigen::Index>(in_plane.size()), np);
+    for (std::size_t r = 0; r < in_plane.size(); ++r)
+      f_free.row(static_cast<Eigen::Index>(r)) = loads.row(in_plane[r]);
+    const Eigen::MatrixXd u_free = -ldlt.solve(f_free);
+    if (ldlt.info() != Eigen::Success || !u_free.allFinite())
+      throw std::runtime_error("membrane stiffness: the in-plane solve failed");
+    // C += U^T F (negative semi-definite: the membrane relaxes).
+    const Eigen::MatrixXd relax = u_free.transpose() * f_free;
+    cmat += 0.5 * (relax + relax.transpose());
+    if (keep_relaxation) out.relaxation = expandRows(u_free, in_plane, n);
+  }
+  out.pair_stiffness = 0.5 * (cmat + cmat.transpose());
+  return out;
+}
+
+bool solveModalStatic(const Eigen::VectorXd& stiffness_diagonal,
+                      const ModalMembraneStiffness& membrane, const Eigen::VectorXd& modal_load,
+                      Eigen::VectorXd* q, int load_steps) {
+  const auto m = modal_load.size();
+  *q = Eigen::VectorXd::Zero(m);
+  const double f_norm = modal_load.norm();
+  if (f_norm == 0.0) return true;
+  ModalMembraneStiffness::Workspace ws(membrane.pairCount());
+  auto residual = [&](const Eigen::VectorXd& x, double lambda) {
+    Eigen::VectorXd r = stiffness_diagonal.cwiseProduct(x) - lambda * modal_load;
+    membrane.addForce(x, &ws, &r);
+    return r;
+  };
+  auto potential = [&](const Eigen::VectorXd& x, double lambda) {
+    return 0.5 * x.dot(stiffness_diagonal.cwiseProduct(x)) + membrane.energy(x, &ws) -
+           lambda * modal_load.dot(x);
+  };
+  for (int step = 1; step <= load_steps; ++step) {
+    const double lambda = static_cast<double>(step) / load_steps;
+    Eigen::VectorXd r = residual(*q, lambda);
+    int it = 0;
+    while (r.norm() > 1e-11 * lambda * f_norm) {
+      if (++it > 200) return false;
+      Eigen::MatrixXd k = membrane.tangent(*q);
+      k.diagonal() += stiffness_diagonal;
+      Eigen::VectorXd dq = k.ldlt().solve(-r);
+      double slope = r.dot(dq);
+      if (!(slope < 0.0)) {  // an indefinite tangent (compressed membrane): steepest descent
+        dq = -r.cwiseQuotient(stiffness_diagonal);
+        slope = r.dot(dq);
+      }
+      // Armijo backtracking on the potential (the residual grows with the cube of a long step).
+      Eigen::VectorXd r_trial = residual(*q + dq, lambda);
+      double alpha = 1.0;
+      if (!(r_trial.norm() < r.norm())) {  // else the full step (see solveNonlinearStatic)
+        const double pi0 = potential(*q, lambda);
+        for (int h = 0; h < 40 && potential(*q + alpha * dq, lambda) > pi0 + 1e-4 * alpha * slope;
+             ++h)
+          alpha *= 0.5;
+        r_trial = residual(*q + alpha * dq, lambda);
+      }
+      *q += alpha * dq;
+      r = r_trial;
+    }
+  }
+  return q->allFinite();
+}
+
+}  // namespace orni::structure

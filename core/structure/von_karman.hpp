@@ -1,0 +1,123 @@
+// Geometric nonlinearity of the wing's finite-element model: von Karman (moderate-rotation)
+// strains of the skin's membrane and the members' axial stretch (structure.md 3.8).
+//
+//   skin facet:  eps = B_m d + eta(w),  eta = 1/2 (w_x^2, w_y^2, 2 w_x w_y),
+//   member:      eps = x'.du / L + 1/2 |P du|^2 / L^2   (du = u_2 - u_1, P = I - x' x'^T),
+//
+// with the facet-normal displacement w interpolated linearly over the facet (its gradient is
+// constant per facet, as in the membrane-stress geometric stiffness of structure.md 3.7) and the
+// member's transverse displacement linearly along the element (chord slope). The linear parts are
+// the assembled K (CST membrane, DKT plate, Euler-Bernoulli beams): this file adds only what is
+// nonlinear in the displacements,
+//   Pi_NL(u) = sum_facets A [(B_m d)^T C eta + 1/2 eta^T C eta] + sum_members EA L [eps0 eta + 1/2 eta^T eta],
+// C = E t / (1 - nu^2) [1 nu 0; nu 1 0; 0 0 (1 - nu)/2], so that the full internal force is
+// K u + grad Pi_NL(u) and the tangent K + hess Pi_NL(u). A skin pretension is not here: it is a
+// constant membrane stress whose geometric stiffness is part of K (modal_wing.cpp).
+//
+// Why von Karman and not a full large-rotation (co-rotational or total Lagrangian) shell: the
+// wing rotates rigidly with the floating frame W (structure.md 3.1), so the elastic rotations are
+// moderate (the stiffened chord's slopes are of order 0.1), where von Karman's strain is the
+// consistent second-order approximation; it separates the flat wing's in-plane and out-of-plane
+// unknowns, which makes the exact static condensation of the membrane in the modal model possible
+// (membrane_rom.hpp). Checked against CalculiX with NLGEOM (a full large-rotation solution).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/structure/dof_partition.hpp"
+#include "core/structure/fe_assembly.hpp"
+#include "core/structure/fe_types.hpp"
+#include "core/structure/wing_mesh.hpp"
+#include "core/structure/wing_structure.hpp"
+
+namespace orni::structure {
+
+/// The per-element data of the nonlinear strain terms, built once from a mesh.
+class VonKarmanTerms {
+ public:
+  VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh);
+
+  int dofCount() const { return dof_count_; }
+
+  /// grad Pi_NL at the displacement u (6n): the internal force beyond K u (N, N m).
+  Eigen::VectorXd internalForce(const Eigen::VectorXd& u) const;
+  /// Pi_NL(u) (J).
+  double energy(const Eigen::VectorXd& u) const;
+  /// hess Pi_NL at u (6n x 6n, symmetric, translational DOFs only): the tangent beyond K.
+  SparseMatrix tangent(const Eigen::VectorXd& u) const;
+
+  /// Membrane force resultants of the skin facets at u, (N_xx, N_yy, N_xy) per facet in its
+  /// triad (N/m), the linear part C B_m d included: 3 x facets.
+  Eigen::Matrix3Xd membraneForces(const Eigen::VectorXd& u) const;
+
+  // Element data, read by the modal condensation (membrane_rom.cpp).
+  struct Facet {
+    std::array<int, 3> nodes{};
+    Mat3 triad;                          ///< rows e1, e2, n in W
+    Eigen::Matrix<double, 2, 3> grad;    ///< gradients of the linear shape functions (1/m)
+    Eigen::Matrix<double, 3, 6> b_m;     ///< CST strain matrix on (u1 v1 u2 v2 u3 v3) local
+    double area_m2 = 0.0;
+  };
+  struct Member {
+    std::array<int, 2> nodes{};
+    Vec3 axis;                  ///< x' (W)
+    double length_m = 0.0;
+    double axial_stiffness_n = 0.0;  ///< EA (N)
+  };
+  const std::vector<Facet>& facets() const { return facets_; }
+  const std::vector<Member>& members() const { return members_; }
+  const Mat3& membraneStiffness() const { return c_t_; }  ///< C (N/m)
+
+ private:
+  int dof_count_ = 0;
+  std::vector<Facet> facets_;
+  std::vector<Member> members_;
+  Mat3 c_t_ = Mat3::Zero();
+};
+
+struct NonlinearStaticOptions {
+  bool nonlinear = true;         ///< false: the linear solution K u = F (for comparison)
+  int load_steps = 8;            ///< load increments, geometric from 1 % to the full load
+  int max_newton_iterations = 60;  ///< per increment
+  double force_tolerance = 1e-8;   ///< converged: |residual| <= tol * |F| on the free DOFs,
+  double displacement_tolerance = 1e-10;  ///< or a Newton correction <= tol * |u|
+  bool IsValid(std::string* why) const;
+};
+
+struct NonlinearStaticResult {
+  Eigen::VectorXd displacement;  ///< 6n, zero on the held and inactive DOFs (m, rad)
+  bool converged = false;
+  int newton_iterations = 0;     ///< over all increments
+  double residual_ratio = 0.0;   ///< final |residual| / |F|
+  std::string message;           ///< why not converged
+};
+
+/// Solves K u + grad Pi_NL(u) = F on the retained DOFs of `part` (interior and free boundary;
+/// the clamped DOFs held at zero) by Newton's method with load increments and an Armijo line
+/// search on the total potential energy. `stiffness` is the assembled (possibly prestressed) K.
+NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
+                                           const VonKarmanTerms& terms, const DofPartition& part,
+                                           const Eigen::VectorXd& load,
+                                           const NonlinearStaticOptions& options = {});
+
+/// The whole static chain for a wing: assembly (with the skin pretension of wing.skin), the
+/// support of wing.fe, the terms, the solve.
+NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const WingMesh& mesh,
+                                      const WingSupport& support, const Eigen::VectorXd& load,
+                                      const NonlinearStaticOptions& options = {});
+
+/// The geometric stiffness of a uniform isotropic skin pretension N0 (N/m) over every facet
+/// (structure.md 3.7's membrane-stress plate matrix with N_xx = N_yy = N0, N_xy = 0), 6n x 6n.
+/// Zero matrix for N0 = 0.
+SparseMatrix skinPretensionStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
+                                     double pretension_Npm);
+
+/// K of the wing with the pretension of wing.skin added (the stiffness every static and modal
+/// analysis of the wing uses).
+void addSkinPretension(const WingStructure& wing_structure, const WingMesh& mesh,
+                       WingFeModel* fe);
+
+}  // namespace orni::structure
