@@ -41,8 +41,8 @@ check "floquet stable" test "$(json "$out/summary.json" stable)" = true
 mu=$(json "$out/summary.json" max_modulus)
 check "max_modulus $mu in (0.9, 1)" awk_true "$mu > 0.9 && $mu < 1"
 theta=$(json "$out/summary.json" theta_mean_deg); tail=$(json "$out/summary.json" tail_angle_deg)
-check "theta $theta = 16.21 +- 0.05 deg" awk_true "($theta - 16.206) ^ 2 <= 0.0025"
-check "tail $tail = 19.74 +- 0.05 deg" awk_true "($tail - 19.742) ^ 2 <= 0.0025"
+check "theta $theta = 13.56 +- 0.05 deg" awk_true "($theta - 13.558) ^ 2 <= 0.0025"
+check "tail $tail = 16.58 +- 0.05 deg" awk_true "($tail - 16.584) ^ 2 <= 0.0025"
 check "floquet CSV names row" bash -c "head -1 '$out/floquet.csv' | grep -q '^rank,mu_real,mu_imag,modulus,argument,exponent_real,exponent_imag,damping_ratio,period,inside_unit_circle,label,dominant_states$'"
 check "floquet CSV units row" bash -c "sed -n 2p '$out/floquet.csv' | grep -q '^-,-,-,-,deg,1/s,rad/s,-,'"
 check "orbit CSV names row" bash -c "head -1 '$out/periodic_orbit.csv' | grep -q '^t,phase,delta_M,theta,U,W,Q,airspeed,x,h,FV,FH,M,power_aero$'"
