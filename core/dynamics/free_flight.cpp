@@ -161,7 +161,7 @@ OdeIntegrator freeFlightIntegrator(FreeFlightSystem& sys, const SimulationOption
   using Imex = ModalImex<FreeFlightSystem>;
   const bool implicit =
       sys.hasModes() && options.modal_integration == ModalIntegration::kImplicit;
-  return OdeIntegrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit), iopt);
+  return OdeIntegrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit, sys.nonlinearWing()), iopt);
 }
 
 bool allFinite(const double* y, int n) {

@@ -65,7 +65,7 @@ std::vector<std::vector<double>> flyPeriods(const FlightCoreModel& model,
   const double T = 1.0 / kFreqHz;
   io.max_step = T / 8.0;
   using Imex = ModalImex<FreeFlightSystem>;
-  OdeIntegrator integ(n, Imex::rhs(sys.hasModes()), &sys, Imex::method(sys.hasModes()), io);
+  OdeIntegrator integ(n, Imex::rhs(sys.hasModes()), &sys, Imex::method(sys.hasModes(), sys.nonlinearWing()), io);
   integ.reset(0.0, y0.data());
   std::vector<std::vector<double>> ends;
   for (int k = 1; k <= cycles; ++k) {
