@@ -180,7 +180,7 @@ void FreeFlightPeriodMap::prepare(const double* p) {
   sys_->setFrictionSpeed(options_.friction_speed_mps);
   using Imex = ModalImex<FreeFlightSystem>;
   if (sys_->hasModes())
-    rk_ = std::make_unique<GridRungeKutta>(sys_->stateCount(), &Imex::explicitRhs, Imex::part(),
+    rk_ = std::make_unique<GridRungeKutta>(sys_->stateCount(), &Imex::explicitRhs, Imex::part(sys_->nonlinearWing()),
                                            sys_.get());
   else
     rk_ = std::make_unique<GridRungeKutta>(sys_->stateCount(), &FreeFlightSystem::rhsCallback,

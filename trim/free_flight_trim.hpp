@@ -8,11 +8,26 @@
 // Why it is needed: the tethered means of Eq. (4) miss the effect of the body's own oscillation on
 // the mean aerodynamic loads, so the Eq. (4) point is not exactly the free vehicle's equilibrium;
 // released there a statically stable vehicle settles to a nearby steady flight that climbs or
-// sinks.
+// sinks (the committed magpie: by a fraction of a degree; with a rigid wing and a suction
+// efficiency of 0.35 by 7.7 deg).
+//
+// Settled: the vehicle converges on the periodic orbit at its controls (periodic_trim.hpp) at the
+// rate of the orbit's slowest Floquet multiplier, the phugoid's (|mu| 0.976-0.986 a cycle on the
+// magpie: e-folding in 40-70 cycles, a 60-130-cycle period, longer than the averaged window). So
+// the flight goes on, cycle by cycle, until the window's means are within tolerance of the values
+// the flight settles to, which the decay of that slowest motion predicts (fitted to the cycle
+// means, core/analysis/slow_multipliers.hpp); where nothing is left to fit, until the cycle means
+// over the window lie within the tolerance. A flight that does not settle is reported with the
+// periodic orbit at its controls and that orbit's multipliers: unstable (a multiplier outside the
+// unit circle, named), or stable but too slow for the cycles allowed, or not reached from the
+// release.
 #pragma once
 
+#include <limits>
 #include <string>
 
+#include "core/analysis/floquet.hpp"
+#include "core/analysis/slow_multipliers.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
@@ -28,10 +43,42 @@ struct SettledFlight {
   double airspeed_mps = 0.0;   ///< mean |v_P1|
   double climb_angle_rad = 0.0;  ///< asin(mean dh/dt / airspeed): the flight-path angle
   double theta_drift_rad = 0.0;  ///< change of the theta mean between the window's halves
+  /// max - min of the window's cycle means: theta (rad), airspeed (over the mean airspeed), climb
+  /// angle (rad).
+  double theta_band_rad = 0.0, airspeed_band = 0.0, climb_band_rad = 0.0;
+  int cycles_flown = 0;          ///< whole cycles flown (options.cycles up to max_cycles)
+  /// The slowest motion, fitted to the cycle means of theta over the flight's second half (at
+  /// least the window; core/analysis/slow_multipliers.hpp): with a clean fit (relative residual <=
+  /// 0.01) its multiplier is the flight's estimate of the leading Floquet multiplier.
+  SlowMultiplierFit slow;
+  /// The flight cannot settle: the periodic orbit at this point is unstable (orbit_floquet), or,
+  /// without an orbit found, the clean fit's multiplier is on or outside the unit circle.
+  bool unstable = false;
+  /// With a clean decaying fit: the values theta, airspeed and climb angle settle to (the fit's
+  /// fixed point) and the largest distance of the window's means from them (rad; the airspeed as
+  /// a fraction); NaN otherwise.
+  double settled_theta_rad = std::numeric_limits<double>::quiet_NaN();
+  double settled_airspeed_mps = std::numeric_limits<double>::quiet_NaN();
+  double settled_climb_angle_rad = std::numeric_limits<double>::quiet_NaN();
+  double remaining = std::numeric_limits<double>::quiet_NaN();
+  /// Not settled: the periodic orbit at this point's controls (tail angle, frequency), found by
+  /// shooting (core/analysis/periodic_shooting.hpp) from where the flight was heading, and its
+  /// Floquet multipliers (floquet.hpp), which decide `unstable` when it is found: the verdict of
+  /// `ornithopter stability` on the orbit the flight did not settle on.
+  bool orbit_found = false;
+  std::string orbit_message;     ///< why no orbit was found
+  FloquetAnalysis orbit_floquet;
+  double orbit_theta_rad = std::numeric_limits<double>::quiet_NaN();  ///< cycle means
+  double orbit_airspeed_mps = std::numeric_limits<double>::quiet_NaN();
+  double orbit_climb_angle_rad = std::numeric_limits<double>::quiet_NaN();
 };
 
-
-/// Fly freely from `point` (released in its periodic state) and average the settled motion.
+/// Fly freely from `point` (released in its periodic state) until the motion has settled (at least
+/// options.cycles, at most options.max_cycles cycles; SettledFlightOptions::settled_tol_rad) and
+/// average the last window. Not settled: ok false with the reason, from the periodic orbit at this
+/// point and its Floquet multipliers when it is found (unstable: a multiplier outside the unit
+/// circle, named; stable: the slowest decays too slowly for max_cycles, or the flight left the
+/// model's range from a release outside the orbit's reach), else from the flight alone.
 SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoint& point,
                                 const SimulationOptions& simulation,
                                 const SettledFlightOptions& options);
@@ -49,6 +96,11 @@ struct FreeFlightTrimOptions {
   SettledFlightOptions settled;
   double climb_angle_tol_rad = 1.7e-4;  ///< |mean climb angle| at the solution (0.01 deg)
   double tail_step_rad = 0.0174533;     ///< first secant step of the tail angle (1 deg)
+  /// Largest secant step (5 deg): the secant is a local model, and the settled climb angle is far
+  /// from linear in the tail angle over more (magpie, rigid wing, suction efficiency 0.35: its
+  /// slope changes sign between tail angles of 15 and 8 deg); a longer step lands where the
+  /// released vehicle flips over.
+  double max_tail_step_rad = 0.0872665;
   int max_iterations = 12;
 };
 

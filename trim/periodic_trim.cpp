@@ -48,7 +48,7 @@ double orbitCheck(const FlightCoreModel& model, const std::vector<double>& x,
   const double T = 1.0 / p[kPeriodFrequency];
   io.max_step = T / 8.0;
   using Imex = ModalImex<FreeFlightSystem>;
-  OdeIntegrator integ(n, Imex::rhs(sys.hasModes()), &sys, Imex::method(sys.hasModes()), io);
+  OdeIntegrator integ(n, Imex::rhs(sys.hasModes()), &sys, Imex::method(sys.hasModes(), sys.nonlinearWing()), io);
   integ.reset(0.0, y0.data());
   if (integ.advanceTo(T) != IntegratorStatus::kOk) return std::numeric_limits<double>::quiet_NaN();
   double worst = 0.0;

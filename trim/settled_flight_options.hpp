@@ -4,10 +4,19 @@
 namespace orni {
 
 struct SettledFlightOptions {
-  int cycles = 120;            ///< flapping cycles flown, [6, 100000]
+  int cycles = 120;            ///< flapping cycles flown at least, [6, 100000]
   int window_cycles = 40;      ///< the last cycles averaged, [1, cycles - 1]
-  double settled_theta_drift_rad = 0.0035;  ///< max change of the theta mean between the two
-                                            ///< halves of the window (0.2 deg)
+  /// Settled when the window's means of theta and of the climb angle are within this (rad), and
+  /// its mean airspeed within this fraction, of the values the flight settles to: predicted from
+  /// the decay of its slowest motion (free_flight_trim.hpp), or, where no slow motion is left to
+  /// fit, the cycle means over the window all within this band. 0.005 deg: half the climb-angle
+  /// tolerance of the free-flight trim (FreeFlightTrimOptions, 0.01 deg), so that the settled
+  /// climb angle it iterates on is good to that tolerance.
+  double settled_tol_rad = 8.7e-5;
+  /// A flight not settled after `cycles` goes on, cycle by cycle, until it is, up to this many
+  /// cycles in all (at least `cycles`): the slowest motion, the phugoid, may need several times
+  /// `cycles` (the committed magpie: Floquet multiplier 0.986 a cycle, e-folding in 71 cycles).
+  int max_cycles = 1200;
 };
 
 }  // namespace orni

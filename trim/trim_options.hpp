@@ -62,8 +62,9 @@ struct TrimOptions {
   /// tail angle of level settled free flight with its settled theta_mean and airspeed, as the
   /// paper refined its trim point (section 3.3).
   bool refine_in_free_flight = true;
-  int refine_cycles = 120;         ///< cycles of each settled free flight (last third averaged),
-                                   ///< [6, 10000]
+  int refine_cycles = 120;         ///< cycles of each settled free flight at least (last third
+                                   ///< averaged; extended until settled, up to 10 times as
+                                   ///< many), [6, 10000]
   bool verify_free_flight = true;  ///< run verifyFreeFlight() on a converged trim
   FreeFlightCheckOptions free_flight;
 

@@ -312,6 +312,7 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
     FreeFlightTrimOptions fo;
     fo.settled.cycles = options.refine_cycles;
     fo.settled.window_cycles = std::max(1, options.refine_cycles / 3);
+    fo.settled.max_cycles = 10 * options.refine_cycles;
     const FreeFlightTrim ft = solveFreeFlightTrim(model, s.solution, sim, fo);
     s.refined_in_free_flight = true;
     s.tethered_solution = s.solution;

@@ -31,7 +31,8 @@ FlexibleTetheredSystem::FlexibleTetheredSystem(const FlightCoreModel& model,
       extra_force_(static_cast<Eigen::Index>(model.strips.size())),
       extra_couple_(static_cast<Eigen::Index>(model.strips.size())),
       twist_mid_qdd_(2 * static_cast<Eigen::Index>(model.strips.size())),
-      split_(flex, 0, 2 * mode_count_ + n_aero_ + kQuadratureChannels) {
+      split_(flex, 0, 2 * mode_count_ + n_aero_ + kQuadratureChannels),
+      modal_mass_(mode_count_, mode_count_) {
   if (!aero::batchKernelApplies(model.vehicle.aero))
     throw InvalidModelError(
         "the flexible wing needs aero model mst-td with the Scherer lag and a smooth stall "
@@ -102,7 +103,8 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
              frame_inertia_;
   if (flex_.nonlinear()) {  // the skin's membrane stretching (structure.md 3.8)
     membrane_force_.setZero();
-    flex_.membrane().addForce(q_, &membrane_ws_, &membrane_force_);
+    membrane_power_W_ = flex_.membrane().addForce(q_, qd_, flex_.membrane_damping_s,
+                                                  &membrane_ws_, &membrane_force_);
     rhs_vec_ -= membrane_force_;
   }
   qdd_ = rhs_vec_;
@@ -124,6 +126,15 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
     kin_.resultant(b, extra_force_, extra_couple_, omega_W_, &aero->F_W, &aero->M_P2_W,
                    &aero->power_aero_W);
   }
+}
+
+void FlexibleTetheredSystem::updateSplit(double t_s, const double* y) {
+  if (!flex_.nonlinear()) return;
+  evaluate(t_s, y, nullptr, nullptr);  // the modal mass M_qq + A(f) at y, packed in packed_
+  int k = 0;
+  for (int j = 0; j < mode_count_; ++j)
+    for (int i = j; i < mode_count_; ++i) modal_mass_(i, j) = modal_mass_(j, i) = packed_[k++];
+  split_.update(y, &modal_mass_);
 }
 
 void FlexibleTetheredSystem::fuselageLoads(const AeroResult& aero, const Vec3& F_inertial_W,
@@ -150,7 +161,9 @@ void FlexibleTetheredSystem::rhs(double t_s, const double* y, double* ydot) {
     ydot[mode_count_ + i] = qdd_[i];
   }
   LoadSample s;
-  const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
+  // The membrane's power on q' is its dissipation plus dV_NL/dt, whose integral over a period
+  // vanishes like that of the linear strain energy left out here (the cycle means are exact).
+  const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_)) + membrane_power_W_;
   fuselageLoads(aero, Vec3::Zero(), Vec3::Zero(), aero.power_aero_W + damping_power, &s);
   double* quad = ydot + quadratureOffset();
   quad[0] = s.FV_N;
@@ -189,11 +202,14 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   // Hinge power into one wing: motor moment about x times phi' = aero power + rate of kinetic
   // energy + rate of strain energy (elastic and, with w_x^2 K_G, geometric: the nodal sums above
   // hold the spin softening but not the stiffening, structure.md 3.7) + damping dissipation.
+  const structure::ModalMembraneStiffness::Rates membrane =
+      flex_.membrane().rates(q_, qd_, flex_.membrane_damping_s, &membrane_ws_);
   rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
   const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
                              omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_) +
-                             qd_.dot(membrane_force_);  // d V_NL / dt (zero when linear)
-  const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
+                             membrane.strain_energy_rate_W;  // dV_NL/dt (0 if linear)
+  const double damping_power =
+      qd_.dot(flex_.damping.cwiseProduct(qd_)) + membrane.dissipation_W;
   const double hinge = aero.power_aero_W + kinetic_rate + omega_W_.dot(J_alpha) + strain_rate +
                        damping_power;
   fuselageLoads(aero, F, M, hinge, out);

@@ -37,6 +37,10 @@ class FlexibleTetheredSystem {
   }
   /// The linear modal part for implicit integration (modal_implicit_split.hpp).
   ModalImplicitSplit& split() { return split_; }
+  bool nonlinearWing() const { return flex_.nonlinear(); }
+  /// After an accepted step: the nonlinear wing's split re-linearised about y, with the modal
+  /// mass at y (no-op for the linear wing).
+  void updateSplit(double t_s, const double* y);
 
  private:
   struct AeroResult {
@@ -63,11 +67,13 @@ class FlexibleTetheredSystem {
   Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
   Eigen::VectorXd membrane_force_;  // f_NL(q) of the nonlinear wing (zero for the linear one)
   structure::ModalMembraneStiffness::Workspace membrane_ws_;
+  double membrane_power_W_ = 0.0;  // its power on q' (per wing): dissipation + dV_NL/dt
   Eigen::VectorXd mass_base_packed_;  // M_qq + the f-independent apparent mass, packed lower
   SmallCholesky chol_;
   StripKinematics kin_;
   Eigen::VectorXd packed_, extra_force_, extra_couple_, twist_mid_qdd_;
   ModalImplicitSplit split_;
+  Eigen::MatrixXd modal_mass_;  // M_qq + A(f) at the last accepted step (nonlinear wing)
 };
 
 }  // namespace orni

@@ -87,32 +87,8 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   H_x = inv.rotational_participation.row(0).transpose();
   if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
   stacked = stackStrips(strips, M, apparent_mass_kg, apparent_rotary_kgm2);
-  membrane_reference_stiffness = Eigen::MatrixXd::Zero(M, M);
-  if (nonlinear()) {
-    // 1-g lift as a uniform pressure on the skin, upward (-z_W), consistent nodal loads.
-    double area = 0.0;
-    Eigen::VectorXd load = Eigen::VectorXd::Zero(mw.mode_shapes.rows());
-    for (const std::array<int, 3>& tri : mw.mesh.triangles) {
-      const std::array<Vec3, 3> x = {mw.mesh.nodes_W_m[static_cast<std::size_t>(tri[0])],
-                                     mw.mesh.nodes_W_m[static_cast<std::size_t>(tri[1])],
-                                     mw.mesh.nodes_W_m[static_cast<std::size_t>(tri[2])]};
-      const double a = 0.5 * (x[1] - x[0]).cross(x[2] - x[0]).norm();
-      area += a;
-      for (int n : tri) load(structure::globalDof(n, structure::kW)) -= a / 3.0;
-    }
-    const double pressure = area > 0.0 ? vehicle.body.mass_kg * vehicle.air.gravity_mps2 /
-                                             (2.0 * area)
-                                       : 0.0;
-    Eigen::VectorXd q_ref;
-    if (pressure > 0.0 &&
-        structure::solveModalStatic(stiffness, mw.membrane,
-                                    pressure * (mw.mode_shapes.transpose() * load), &q_ref)) {
-      const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(mw.membrane.tangent(q_ref));
-      membrane_reference_stiffness = eig.eigenvectors() *
-                                     eig.eigenvalues().cwiseMax(0.0).asDiagonal() *
-                                     eig.eigenvectors().transpose();
-    }
-  }
+  if (nonlinear() && M > 0 && stiffness[0] > 0.0)
+    membrane_damping_s = damping[0] / stiffness[0];  // 2 zeta_1 omega_1 / omega_1^2
 }
 
 StackedStrips stackStrips(const std::vector<FlexibleStrip>& strips, int mode_count,

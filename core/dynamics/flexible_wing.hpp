@@ -109,11 +109,16 @@ struct FlexibleWingModel {
   /// linear wing: its restoring force f_NL(q) joins K q in the modal equation.
   const structure::ModalMembraneStiffness& membrane() const { return modal->membrane; }
   bool nonlinear() const { return !modal->membrane.empty(); }
-  /// The membrane's tangent stiffness at the wing's 1-g static shape (uniform pressure m g / S
-  /// upward on the skin), made positive semi-definite (M x M; zero for the linear wing). Only the
-  /// implicit-explicit split uses it (modal_implicit_split.hpp): the stretched skin's stiffness
-  /// belongs to the stiff, implicitly integrated part; the physics is f_NL(q) either way.
-  Eigen::MatrixXd membrane_reference_stiffness;
+  /// beta (s) of the membrane's strain-rate (Kelvin-Voigt) damping, f_d = beta J^T C J q'
+  /// (membrane_rom.hpp): stiffness-proportional with the first mode's ratio, beta = 2 zeta_1 /
+  /// omega_1, so that a mode whose stiffness is the stretched skin's, at omega, has the damping
+  /// ratio zeta_1 omega / omega_1. Why: the modal damping 2 zeta omega_k is fixed at the linear
+  /// frequencies, and a membrane-stiffened skin mode (1-5 kHz on the slack magpie at 1 g) would
+  /// keep it, i.e. ring almost undamped at a ratio zeta omega_k / omega; a viscoelastic film and
+  /// the air it pumps damp such modes strongly. At the flapping frequency the membrane responds
+  /// quasi-statically and this force is zeta_1 f / f_1 ~ 1 % of its elastic part. Zero for the
+  /// linear wing.
+  double membrane_damping_s = 0.0;
 
   FlexibleWingModel(const VehicleModel& vehicle,
                     std::shared_ptr<const structure::ModalWing> modal_wing,

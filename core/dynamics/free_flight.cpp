@@ -161,7 +161,7 @@ OdeIntegrator freeFlightIntegrator(FreeFlightSystem& sys, const SimulationOption
   using Imex = ModalImex<FreeFlightSystem>;
   const bool implicit =
       sys.hasModes() && options.modal_integration == ModalIntegration::kImplicit;
-  return OdeIntegrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit), iopt);
+  return OdeIntegrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit, sys.nonlinearWing()), iopt);
 }
 
 bool allFinite(const double* y, int n) {
@@ -206,7 +206,7 @@ std::string divergenceReason(double t, const double* y, int n, const BodyState& 
 // the history window is trimmed and the cycle's mean aerodynamic power kept.
 void flyCycles(const FreeFlightSystem& sys, double freq_hz, const SimulationOptions& options,
                double Q_bound_radps, OdeIntegrator& integrator, FreeFlightRecorder& recorder,
-               FreeFlightSummary* summary) {
+               FreeFlightObserver* observer, FreeFlightSummary* summary) {
   const int n = sys.stateCount();
   const int spc = options.samples_per_cycle;
   const double period_s = 1.0 / freq_hz;
@@ -240,6 +240,7 @@ void flyCycles(const FreeFlightSystem& sys, double freq_hz, const SimulationOpti
     const double power = integrator.state()[sys.powerOffset()];
     summary->mean.power_aero_W = (power - power_prev) / period_s;
     power_prev = power;
+    if (observer && k < options.cycles && observer->endRunAfterCycle(k)) break;
   }
 }
 
@@ -300,7 +301,7 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   FreeFlightRecorder recorder(sys, point.freq_hz, options, summary.initial, Q_bound_radps,
                               history, observer);
   recorder.record(0.0, integrator.state());
-  flyCycles(sys, point.freq_hz, options, Q_bound_radps, integrator, recorder, &summary);
+  flyCycles(sys, point.freq_hz, options, Q_bound_radps, integrator, recorder, observer, &summary);
   recorder.dropOld(false);
   summary.end_time_s = recorder.lastTime_s();
   summary.steps = integrator.steps();
@@ -309,6 +310,13 @@ FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoin
   if (summary.cycles_run >= 1 && options.record_history)
     lastCycleMeanLoads(recorder, options.samples_per_cycle, summary.cycles_run, &summary.mean);
   if (summary.status != SimulationStatus::kOk) return summary;
+  if (summary.cycles_run < options.cycles) {  // ended by the observer: no verdict
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "%d of %d cycles of free flight (ended by the observer)",
+                  summary.cycles_run, options.cycles);
+    summary.message = buf;
+    return summary;
+  }
   analyse(recorder, options.cycles, &summary);
   return summary;
 }

@@ -36,6 +36,14 @@ class FreeFlightObserver {
   /// `sample` (the loads) is null without SimulationOptions::record_history.
   virtual void onSample(double t_s, double delta_M_rad, const BodyState& body,
                         const FreeFlightSample* sample) = 0;
+  /// Asked after each whole cycle `cycle` (1-based, its last sample already passed to onSample)
+  /// but the last: true ends the run there (status ok, cycles_run = cycle, not analysed: the
+  /// verdict's windows belong to the whole run). For a caller that flies until its own criterion
+  /// holds (a settled free flight, trim/free_flight_trim.hpp). Default: never.
+  virtual bool endRunAfterCycle(int cycle) {
+    (void)cycle;
+    return false;
+  }
 };
 
 struct FreeFlightSummary {
@@ -55,7 +63,8 @@ struct FreeFlightSummary {
                                ///< record_history) and aerodynamic power
   long steps = 0, rhs_evaluations = 0;
   std::string integrator_method;  ///< e.g. "ARKODE ARKStep ARK4(3)7L[2]SA IMEX, ..."
-  bool analysed = false;       ///< verdict and limit_cycle are filled (status ok)
+  bool analysed = false;       ///< verdict and limit_cycle are filled (status ok, every cycle
+                               ///< flown: not when the observer ended the run early)
 };
 
 /// Initial state of a free flight at the operating point: level flight path at speed U with the
@@ -66,8 +75,10 @@ BodyState trimmedBodyState(const OperatingPoint& point, double altitude_m);
 /// receives the last history->keep_cycles cycles. `observer` may be null; when given it receives
 /// every sample. With options.record_history false the loads are not sampled (history->samples
 /// stays empty and the mean loads are zero): the body states, verdict and limit cycle are
-/// unaffected. Memory does not depend on options.cycles. Throws std::invalid_argument for invalid
-/// options or history->keep_cycles < 1.
+/// unaffected. The observer may end the run after any whole cycle
+/// (FreeFlightObserver::endRunAfterCycle); history then holds the last cycles flown. Memory does
+/// not depend on options.cycles. Throws std::invalid_argument for invalid options or
+/// history->keep_cycles < 1.
 FreeFlightSummary simulateFree(const FlightCoreModel& model, const OperatingPoint& point,
                                const SimulationOptions& options, FreeFlightHistory* history,
                                FreeFlightObserver* observer = nullptr);

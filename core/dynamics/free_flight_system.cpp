@@ -59,8 +59,11 @@ FreeFlightSystem::FreeFlightSystem(std::shared_ptr<const FreeFlightModel> model,
       ws_(*model_) {
   if (!(reference_speed_mps > 0.0) || !std::isfinite(reference_speed_mps))
     throw std::invalid_argument("free flight: the reference speed must be > 0 m/s");
-  if (model_->flex)
+  if (model_->flex) {
     split_ = std::make_unique<ModalImplicitSplit>(*model_->flex, kBody, stateCount());
+    modal_mass_.resize(mode_count_, mode_count_);
+    coupling_.resize(mode_count_, 3);
+  }
   setFrictionSpeed(reference_speed_mps_);
 }
 
@@ -321,7 +324,8 @@ void FreeFlightSystem::addModalRows() {
   }
   r.noalias() -= md.modal_stiffness.cwiseProduct(ws.q);
   if (md.flex != nullptr && md.flex->nonlinear())  // membrane stretching (structure.md 3.8)
-    md.flex->membrane().addForce(ws.q, &ws.membrane_ws, &r, -1.0);
+    md.flex->membrane().addForce(ws.q, ws.qd, switches_.damping ? md.flex->membrane_damping_s : 0.0,
+                                 &ws.membrane_ws, &r, -1.0);
   if (switches_.damping) r.noalias() -= md.modal_damping.cwiseProduct(ws.qd);
   ws.f.tail(m).noalias() += 2.0 * r;
 }
@@ -406,6 +410,21 @@ void FreeFlightSystem::evaluate(double t_s, const double* y, double* aero_deriva
   last_.tail = LoadSample{};
   if (switches_.tail) addTailAndBodyDrag(fr);
   solveAccelerations(fr);
+}
+
+void FreeFlightSystem::updateSplit(double t_s, const double* y) {
+  if (!split_ || model_->flex == nullptr || !model_->flex->nonlinear()) return;
+  evaluate(t_s, y, nullptr);
+  // Both wings' mass matrix (lower triangle) [A_bb A_qb^T; A_qb A_qq]: the modal accelerations
+  // answer modal forces through (A_qq - A_qb A_bb^-1 A_qb^T)^-1; one wing's share is half of it.
+  const int m = mode_count_;
+  const Eigen::MatrixXd& A = ws_.A;
+  const Mat3 Abb = A.topLeftCorner<3, 3>().selfadjointView<Eigen::Lower>();
+  coupling_.noalias() = A.block(3, 0, m, 3) * Abb.inverse();
+  modal_mass_ = A.bottomRightCorner(m, m).selfadjointView<Eigen::Lower>();
+  modal_mass_.noalias() -= coupling_ * A.block(3, 0, m, 3).transpose();
+  modal_mass_ *= 0.5;
+  split_->update(y, &modal_mass_);
 }
 
 void FreeFlightSystem::apparentAccelerations() {

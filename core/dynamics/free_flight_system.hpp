@@ -114,6 +114,10 @@ class FreeFlightSystem {
   /// The linear modal part for implicit integration (flexible wing only: hasModes()).
   bool hasModes() const { return mode_count_ > 0; }
   ModalImplicitSplit& split() { return *split_; }
+  bool nonlinearWing() const { return model_->flex != nullptr && model_->flex->nonlinear(); }
+  /// After an accepted step: the nonlinear wing's split re-linearised about y, with one wing's
+  /// effective modal mass at y (the Schur complement of the body rows; no-op for the linear wing).
+  void updateSplit(double t_s, const double* y);
 
   double fuselageMass_kg() const { return model_->fuselage_mass_kg; }
   double fuselagePitchInertia_kgm2() const { return model_->fuselage_pitch_inertia_kgm2; }
@@ -152,6 +156,7 @@ class FreeFlightSystem {
   FreeFlightWorkspace ws_;
   FreeFlightEvaluation last_;
   std::unique_ptr<ModalImplicitSplit> split_;  // flexible wing only
+  Eigen::MatrixXd modal_mass_, coupling_;      // updateSplit's scratch (M x M, M x 3)
 };
 
 }  // namespace orni

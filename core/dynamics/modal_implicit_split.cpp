@@ -1,8 +1,10 @@
 #include "core/dynamics/modal_implicit_split.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 namespace orni {
 
@@ -11,11 +13,24 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
     : mode_count_(flex.mode_count),
       off_(q_offset),
       n_(state_count),
-
-      K_(Eigen::MatrixXd(flex.stiffness.asDiagonal()) + flex.membrane_reference_stiffness),
-      D_(flex.damping),
+      membrane_(flex.nonlinear() ? &flex.membrane() : nullptr),
+      membrane_beta_s_(flex.membrane_damping_s),
+      K_diag_(flex.stiffness),
+      D_diag_(flex.damping),
+      K_(Eigen::MatrixXd(flex.stiffness.asDiagonal())),
+      D_(Eigen::MatrixXd(flex.damping.asDiagonal())),
+      gauss_newton_(Eigen::MatrixXd::Zero(flex.mode_count, flex.mode_count)),
+      rest_(Eigen::MatrixXd::Zero(flex.mode_count, flex.mode_count)),
+      tangent_ws_(flex.nonlinear() ? flex.membrane().pairCount() : 0, flex.mode_count),
+      membrane_ws_(flex.nonlinear() ? flex.membrane().pairCount() : 0),
+      mass_chol_(flex.mode_count),
+      q_(flex.mode_count),
+      qd_(flex.mode_count),
+      g_(flex.mode_count),
+      rq_(flex.mode_count),
       S_(flex.mode_count, flex.mode_count),
       S_chol_(flex.mode_count),
+      lu_(flex.mode_count),
       w_(flex.mode_count),
       r_(flex.mode_count) {
   if (mode_count_ < 1 || q_offset < 0 || q_offset + 2 * mode_count_ > state_count)
@@ -29,13 +44,59 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
   const Eigen::LLT<Eigen::MatrixXd> llt(A0_);
   if (llt.info() != Eigen::Success)
     throw std::runtime_error("ModalImplicitSplit: reference modal mass is not positive definite");
+  A0_inv_ = llt.solve(Eigen::MatrixXd::Identity(mode_count_, mode_count_));
   GH_.resize(mode_count_, 2 * mode_count_);
-  GH_.leftCols(mode_count_) = llt.solve(K_);
-  GH_.rightCols(mode_count_) = llt.solve(Eigen::MatrixXd(D_.asDiagonal()));
+  GH_.leftCols(mode_count_).noalias() = A0_inv_ * K_;
+  GH_.rightCols(mode_count_).noalias() = A0_inv_ * D_;
+}
+
+void ModalImplicitSplit::update(const double* y, const Eigen::MatrixXd* modal_mass) {
+  if (membrane_ == nullptr) return;
+  if (modal_mass != nullptr) {
+    A0_ = *modal_mass;
+    if (!mass_chol_.factor(A0_))
+      throw std::runtime_error("ModalImplicitSplit: the modal mass is not positive definite");
+    A0_inv_.setIdentity();
+    for (int c = 0; c < mode_count_; ++c) {
+      w_ = A0_inv_.col(c);
+      mass_chol_.solveInPlace(w_);
+      A0_inv_.col(c) = w_;
+    }
+  }
+  linearise(Eigen::Map<const Eigen::VectorXd>(y + off_, mode_count_),
+            Eigen::Map<const Eigen::VectorXd>(y + off_ + mode_count_, mode_count_));
+}
+
+void ModalImplicitSplit::linearise(const Eigen::Ref<const Eigen::VectorXd>& q,
+                                   const Eigen::Ref<const Eigen::VectorXd>& qd) {
+  q_ = q;
+  qd_ = qd;
+  membrane_->tangentParts(q_, qd_, membrane_beta_s_, &tangent_ws_, &gauss_newton_, &rest_);
+  K_ = gauss_newton_;
+  K_ += rest_;
+  K_.diagonal() += K_diag_;
+  D_ = membrane_beta_s_ * gauss_newton_;
+  D_.diagonal() += D_diag_;
+  gamma_ = -1.0;  // refactor at the next stage solve
+  ++linearisations_;
+}
+
+void ModalImplicitSplit::restoring(const Eigen::Ref<const Eigen::VectorXd>& q,
+                                   const Eigen::Ref<const Eigen::VectorXd>& qd) {
+  q_ = q;
+  qd_ = qd;
+  g_ = K_diag_.cwiseProduct(q_) + D_diag_.cwiseProduct(qd_);
+  membrane_->addForce(q_, qd_, membrane_beta_s_, &membrane_ws_, &g_);
 }
 
 void ModalImplicitSplit::stiffAcceleration(const double* y) {
-  w_.noalias() = GH_ * Eigen::Map<const Eigen::VectorXd>(y + off_, 2 * mode_count_);
+  if (membrane_ == nullptr) {
+    w_.noalias() = GH_ * Eigen::Map<const Eigen::VectorXd>(y + off_, 2 * mode_count_);
+    return;
+  }
+  restoring(Eigen::Map<const Eigen::VectorXd>(y + off_, mode_count_),
+            Eigen::Map<const Eigen::VectorXd>(y + off_ + mode_count_, mode_count_));
+  w_.noalias() = A0_inv_ * g_;
 }
 
 void ModalImplicitSplit::apply(const double* y, double* ydot) {
@@ -55,26 +116,82 @@ void ModalImplicitSplit::removeFrom(const double* y, double* ydot) {
   }
 }
 
-void ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
-  if (gamma != gamma_) {
-    S_ = A0_;
-    S_.diagonal() += gamma * D_;
-    S_ += (gamma * gamma) * K_;
+void ModalImplicitSplit::factor(double gamma) {
+  if (gamma == gamma_) return;
+  S_ = A0_;
+  S_.noalias() += gamma * D_;
+  S_.noalias() += (gamma * gamma) * K_;
+  if (membrane_ == nullptr) {
     if (!S_chol_.factor(S_))
       throw std::runtime_error("ModalImplicitSplit: stage matrix is not positive definite");
-    gamma_ = gamma;
+  } else {
+    // The membrane's Jacobian is not symmetric (the damping force changes with q) and its stress
+    // part can be indefinite (compressed skin loses bending stiffness): LU with pivoting.
+    lu_.compute(S_);
   }
-  for (int i = 0; i < n_; ++i) x[i] = b[i];
+  gamma_ = gamma;
+}
+
+void ModalImplicitSplit::solveStageMatrix() {
+  if (membrane_ != nullptr) {
+    w_ = lu_.solve(r_);
+    r_ = w_;
+  } else {
+    S_chol_.solveInPlace(r_);
+  }
+}
+
+int ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
+  factor(gamma);
+  for (int i = 0; i < n_; ++i)  // the modal rows of x: the starting guess (nonlinear wing)
+    if (membrane_ == nullptr || i < off_ || i >= off_ + 2 * mode_count_) x[i] = b[i];
   const Eigen::Map<const Eigen::VectorXd> bq(b + off_, mode_count_),
       bqd(b + off_ + mode_count_, mode_count_);
-  r_.noalias() = A0_ * bqd;
-  r_.noalias() -= gamma * (K_ * bq);
-  S_chol_.solveInPlace(r_);
-  w_ = r_;
-  for (int i = 0; i < mode_count_; ++i) {
-    x[off_ + mode_count_ + i] = w_[i];
-    x[off_ + i] = bq[i] + gamma * w_[i];
+  if (membrane_ == nullptr) {  // linear: one solve is exact
+    r_.noalias() = A0_ * bqd;
+    r_.noalias() -= gamma * (K_ * bq);
+    S_chol_.solveInPlace(r_);
+    w_ = r_;
+    for (int i = 0; i < mode_count_; ++i) {
+      x[off_ + mode_count_ + i] = w_[i];
+      x[off_ + i] = bq[i] + gamma * w_[i];
+    }
+    return 0;
   }
+  // Nonlinear stage equation x - gamma f_I(x) = b, modal rows only, by Newton's method with the
+  // matrix of the last linearisation, from the caller's guess in x:
+  //   r_q = x_q - gamma x_qd - b_q,   A0 r_qd = A0 (x_qd - b_qd) + gamma g(x),
+  //   S d_qd = A0 r_qd - gamma K r_q,   d_q = r_q + gamma d_qd,   x -= d.
+  Eigen::Map<Eigen::VectorXd> xq(x + off_, mode_count_), xqd(x + off_ + mode_count_, mode_count_);
+  double last_correction = std::numeric_limits<double>::infinity();
+  for (int it = 0; it < kMaxNewtonIterations; ++it) {
+    restoring(xq, xqd);
+    rq_ = xq - gamma * xqd - bq;
+    w_ = xqd - bqd;
+    r_.noalias() = A0_ * w_;
+    r_.noalias() += gamma * g_;
+    r_.noalias() -= gamma * (K_ * rq_);
+    solveStageMatrix();
+    xqd -= r_;
+    rq_ += gamma * r_;
+    xq -= rq_;
+    ++newton_iterations_;
+    const double correction = r_.lpNorm<Eigen::Infinity>();  // of q' (that of q is gamma times it)
+    if (rq_.lpNorm<Eigen::Infinity>() <=
+            kNewtonTolerance * (xq.lpNorm<Eigen::Infinity>() + kModalScale_msqrtkg) &&
+        correction <= kNewtonTolerance * (xqd.lpNorm<Eigen::Infinity>() + kModalRateScale))
+      return 0;
+    // Newton's matrix is that of the step's start (or of an earlier iterate): the cubic membrane
+    // stiffens within a step and its damping force changes with q, and with a stale matrix the
+    // iteration only contracts linearly. Re-linearise about the iterate when a correction is not
+    // 4x below the last (full Newton from there, for this and the step's following stages).
+    if (correction > kRelineariseRatio * last_correction) {
+      linearise(xq, xqd);
+      factor(gamma);
+    }
+    last_correction = correction;
+  }
+  return 1;  // not converged: the integrator retries with a smaller step
 }
 
 void modalAbsoluteTolerances(double rel_tol, int mode_count, int offset,

@@ -6,13 +6,24 @@
 // integrated by the ESDIRK half of an additive Runge-Kutta pair; the explicit part is the full
 // right-hand side minus L y (aerodynamics, the separation-dependent apparent mass, frame inertia
 // with the time-varying spin softening and geometric stiffening of structure.md 3.7, body
-// coupling). The nonlinear wing (structure.md 3.8) adds its membrane's tangent at the 1-g static
-// shape to K (FlexibleWingModel::membrane_reference_stiffness): the stretched skin is the stiffest
-// part of its motion, and the explicit part keeps only f_NL(q) minus that linearisation. Measured on the calibrated magpie (12 modes to 332 Hz): the full Jacobian has
-// eigenvalues up to |lambda| = 2025 rad/s on the imaginary axis; the explicit remainder's are
-// real, below 1000 1/s, and hardly depend on the reference separation fraction of A0.
+// coupling).
 //
-// The stage equations (I - gamma L) x = b reduce to one M x M SPD solve:
+// The nonlinear wing (structure.md 3.8) keeps its membrane force in the implicit part, exactly:
+//   q-dot' = -A0^{-1} (K q + D q-dot + f_NL(q, q-dot)),
+// f_NL with the membrane's strain-rate damping (FlexibleWingModel::membrane_damping_s), and its
+// stage equations are solved by Newton's method. Why: the stretched skin is the stiffest part of
+// the motion (tangent frequencies up to ~5 kHz at 1 g on the slack magpie, against 460 Hz for
+// the linear wing's 24th mode) and f_NL is cubic, so its stiffness changes over the stroke and
+// within a step. Measured on the slack magpie, 24 modes, 10 tethered cycles: a fixed 1-g
+// linearisation in L took 68k right-hand sides, re-linearising L after every step 36k; the
+// Newton stages with A0 re-taken from the system's modal mass after every step 6.8k (28.5k with
+// the fixed A0: the mismatch (M(t)^{-1} - A0^{-1}) f_NL, from the separation-dependent apparent
+// mass, is stiff in the explicit part). After every accepted step (OdeIntegrator's update hook)
+// the system passes its effective modal mass at the new state, and the Newton matrix takes the
+// membrane's tangent there; Newton's method re-linearises about its iterate when it stops
+// contracting (a hardening spring whose stage stiffness exceeds twice the matrix's).
+//
+// The linear wing's stage equations (I - gamma L) x = b reduce to one M x M SPD solve:
 //   (A0 + gamma D + gamma^2 K) x_qd = A0 b_qd - gamma K b_q,   x_q = b_q + gamma x_qd,
 // every other state x = b. The Cholesky factor is kept for the last gamma (one per step: gamma
 // is h times the common diagonal of the ESDIRK table). No allocation after construction.
@@ -21,6 +32,7 @@
 #include <vector>
 
 #include <Eigen/Core>
+#include <Eigen/LU>
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/small_cholesky.hpp"
@@ -38,21 +50,57 @@ class ModalImplicitSplit {
   void apply(const double* y, double* ydot);
   /// ydot -= L y: turns a full right-hand side into the explicit part.
   void removeFrom(const double* y, double* ydot);
-  /// x = (I - gamma L)^{-1} b.
-  void solve(double gamma, const double* b, double* x);
+  /// x = (I - gamma L)^{-1} b; for the nonlinear wing x - gamma f_I(x) = b by Newton's method.
+  /// Returns 0, or 1 when Newton's method did not converge (the step is retried smaller).
+  int solve(double gamma, const double* b, double* x);
+  /// Re-linearise the nonlinear wing's membrane about the state y (no-op for the linear wing),
+  /// and take `modal_mass` (M x M, symmetric; the system's effective modal mass at y) as A0.
+  void update(const double* y, const Eigen::MatrixXd* modal_mass);
+  long newtonIterations() const { return newton_iterations_; }
+  long linearisations() const { return linearisations_; }
 
  private:
   // w = A0^{-1} (K q + D q-dot) = [A0^{-1} K, A0^{-1} D] (q; q-dot)
   void stiffAcceleration(const double* y);
+  // g = K q + D q' + f_NL(q, q') of the linear modes and the membrane, into g_.
+  void restoring(const Eigen::Ref<const Eigen::VectorXd>& q,
+                 const Eigen::Ref<const Eigen::VectorXd>& qd);
+  void factor(double gamma);
+  void solveStageMatrix();  // r_ = S^{-1} r_
+  // K, D of the Newton matrix: the linear modes plus the membrane's tangent at q.
+  void linearise(const Eigen::Ref<const Eigen::VectorXd>& q,
+                 const Eigen::Ref<const Eigen::VectorXd>& qd);
+  static constexpr int kMaxNewtonIterations = 12;
+  // Re-linearise when a correction is above this fraction of the last one. Measured on the slack
+  // magpie (24 modes, 10 tethered cycles): 0.25 took 837 steps, 0.5 1102, 0.8 2110 (failed
+  // stages make the steps shorter); each re-linearisation costs ~8 Newton iterations.
+  static constexpr double kRelineariseRatio = 0.25;
+  // Newton's corrections end below 1e-6 of the iterate (plus a floor of the modal scales, 1e-6
+  // m sqrt(kg) and 1e-4 m sqrt(kg)/s): two orders below the integrator's error weights, whose
+  // absolute parts are 1e-3 and 1e-1 rel_tol (1e-7 and 1e-5 at the default rel_tol 1e-4).
+  static constexpr double kNewtonTolerance = 1e-6;
+  static constexpr double kModalScale_msqrtkg = 1e-6;
+  static constexpr double kModalRateScale = 1e-4;
 
   int mode_count_, off_, n_;
+  const structure::ModalMembraneStiffness* membrane_;  // null for the linear wing
+  double membrane_beta_s_;
   Eigen::MatrixXd A0_;   // symmetric, full
+  Eigen::MatrixXd A0_inv_;
   Eigen::MatrixXd GH_;   // [A0^{-1} K, A0^{-1} D], M x 2M
-  Eigen::MatrixXd K_;    // modal stiffness diag(omega^2) + the membrane's reference tangent
-  Eigen::VectorXd D_;
+  Eigen::VectorXd K_diag_, D_diag_;  // the linear modes: omega^2, 2 zeta omega
+  Eigen::MatrixXd K_;    // diag(omega^2) + d f_NL / dq at the last linearisation
+  Eigen::MatrixXd D_;    // diag(2 zeta omega) + d f_NL / dq' = beta J^T C J
+  Eigen::MatrixXd gauss_newton_, rest_;  // the membrane's Jacobian (membrane_rom.hpp)
+  structure::ModalMembraneStiffness::TangentWorkspace tangent_ws_;
+  structure::ModalMembraneStiffness::Workspace membrane_ws_;
+  SmallCholesky mass_chol_;
+  Eigen::VectorXd q_, qd_, g_, rq_;
+  long newton_iterations_ = 0, linearisations_ = 0;
   double gamma_ = -1.0;  // gamma of S_chol_
   Eigen::MatrixXd S_;
   SmallCholesky S_chol_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // S of the nonlinear wing
   Eigen::VectorXd w_, r_;
 };
 
@@ -79,10 +127,17 @@ struct ModalImex {
     return 0;
   }
   static int solve(double gamma, const double* b, double* x, void* self) {
-    static_cast<System*>(self)->split().solve(gamma, b, x);
+    return static_cast<System*>(self)->split().solve(gamma, b, x);
+  }
+  static int update(double t, const double* y, void* self) {
+    static_cast<System*>(self)->updateSplit(t, y);
     return 0;
   }
-  static LinearImplicitPart part() { return LinearImplicitPart{&implicitRhs, &solve}; }
+  /// `relinearise`: the nonlinear wing's split follows the state (System::updateSplit after every
+  /// accepted step); the linear wing's L is constant and needs no update.
+  static LinearImplicitPart part(bool relinearise) {
+    return LinearImplicitPart{&implicitRhs, &solve, relinearise ? &update : nullptr};
+  }
 
   /// The right-hand side an OdeIntegrator integrates explicitly: the explicit part with the modal
   /// stiffness `implicit`, else the full right-hand side.
@@ -90,8 +145,8 @@ struct ModalImex {
   /// Its method: with the modal stiffness implicit, the additive pair ARK4(3)7L[2]SA; else all
   /// explicit, where the steps are stability-limited (the highest mode) and the explicit table of
   /// ARK4(3)6L[2]SA needs fewer evaluations than Dormand-Prince.
-  static IntegrationMethod method(bool implicit) {
-    return implicit ? IntegrationMethod::implicitExplicit(part(), ImexMethod::kArk437)
+  static IntegrationMethod method(bool implicit, bool relinearise) {
+    return implicit ? IntegrationMethod::implicitExplicit(part(relinearise), ImexMethod::kArk437)
                     : IntegrationMethod::explicitRungeKutta(ErkMethod::kArk436);
   }
 };

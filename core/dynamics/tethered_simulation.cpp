@@ -356,7 +356,7 @@ SimulationSummary simulateTethered(const FlightCoreModel& model, const Operating
     IntegratorOptions iopt = integratorOptions(sys, point, options);
     using Imex = ModalImex<FlexibleTetheredSystem>;
     const bool implicit = options.modal_integration == ModalIntegration::kImplicit;
-    OdeIntegrator integrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit),
+    OdeIntegrator integrator(sys.stateCount(), Imex::rhs(implicit), &sys, Imex::method(implicit, sys.nonlinearWing()),
                              iopt);
     SimulationSummary s = runCycles(sys, integrator, model, point, options, history, observer);
     s.final_mode_count = model.flexible->mode_count;

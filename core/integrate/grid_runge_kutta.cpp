@@ -108,6 +108,12 @@ std::string GridRungeKutta::methodName() const {
 bool GridRungeKutta::step(double t, double h, bool first_stage_known, bool with_error) {
   const int s = tab_.stages;
   const std::size_t n = static_cast<std::size_t>(n_);
+  // A new starting state: the implicit part re-linearises about it (its stage values are then
+  // all of this step; carryLastStage() does not carry them over).
+  if (implicit_.update && !first_stage_known) {
+    rhs_code_ = implicit_.update(t, y_.data(), user_);
+    if (rhs_code_ != 0) return false;
+  }
   for (int i = 0; i < s; ++i) {
     double* Fe_i = &Fe_[static_cast<std::size_t>(i) * n];
     double* Fi_i = &Fi_[static_cast<std::size_t>(i) * n];
@@ -175,7 +181,7 @@ double GridRungeKutta::errorNorm(const GridStepControl& control) const {
 }
 
 bool GridRungeKutta::carryLastStage() {
-  if (!tab_.fsal) return false;
+  if (!tab_.fsal || implicit_.update) return false;
   const std::size_t n = static_cast<std::size_t>(n_);
   const std::size_t s1 = static_cast<std::size_t>(tab_.stages - 1) * n;
   std::copy(Fe_.begin() + static_cast<std::ptrdiff_t>(s1),

@@ -14,16 +14,24 @@ namespace orni {
 /// a smaller size), < 0 to abort. Must not throw (the integrator guards it anyway).
 using RhsFunction = int (*)(double t, const double* y, double* ydot, void* user_data);
 
-/// x = (I - gamma L)^{-1} b for the implicit part L (n values each). Return 0 on success, > 0 for
-/// a recoverable failure, < 0 to abort. Must not throw.
+/// x = (I - gamma L)^{-1} b for the implicit part L (n values each); for an implicit part that is
+/// not linear, x - gamma f_I(x) = b, with x holding a starting guess on entry (the stage's
+/// predictor). Return 0 on success, > 0 for a recoverable failure (the step is retried smaller),
+/// < 0 to abort. Must not throw.
 using LinearSolveFunction = int (*)(double gamma, const double* b, double* x, void* user_data);
 
 /// The linear implicit part L of an implicit-explicit split y' = f_E(t, y) + L y. `apply` computes
 /// ydot = L y; L must depend neither on t nor on y (ARKStep is told the implicit part is linear
 /// with a constant Jacobian).
+/// Called with the state at the start of an integration and after every accepted step; L may
+/// change there (never inside a step, so every step is one additive Runge-Kutta step of a fixed
+/// split f = (f - L y) + L y, whatever L is). Returns 0, or non-zero to stop the integration.
+using StepFunction = int (*)(double t, const double* y, void* user_data);
+
 struct LinearImplicitPart {
   RhsFunction apply = nullptr;
   LinearSolveFunction solve = nullptr;
+  StepFunction update = nullptr;  ///< optional: re-linearise L about the accepted state
 };
 
 /// Tolerances and step limits of an OdeIntegrator (the method is an IntegrationMethod).

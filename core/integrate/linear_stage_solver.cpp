@@ -48,7 +48,10 @@ struct StageCallback {
       double* b = N_VGetArrayPointer(self->work_);
       double* x = N_VGetArrayPointer(ycor);
       const int n = self->n_;
-      for (int i = 0; i < n; ++i) b[i] = zp[i] + sd[i];
+      for (int i = 0; i < n; ++i) {
+        b[i] = zp[i] + sd[i];
+        x[i] = zp[i];  // the predictor: a nonlinear stage solve's starting guess
+      }
       const int rc = self->solve_(gamma, b, x, self->user_);
       if (rc != 0) return rc > 0 ? SUN_NLS_CONV_RECVR : -1;
       for (int i = 0; i < n; ++i) x[i] -= zp[i];

@@ -32,6 +32,18 @@ struct OdeCallback {
     auto* self = static_cast<OdeIntegrator*>(user_data);
     return call(self, self->method_.linearPart().apply, t, y, ydot);
   }
+  // ARKODE's post-processing of an accepted step: the linear part's update (the split changes
+  // between steps only; SUNDIALS 6.4 evaluates every stage of a step, the first included, after
+  // this call, so no stage value of the old split is reused).
+  static int updateLinearPart(sunrealtype t, N_Vector y, void* user_data) {
+    auto* self = static_cast<OdeIntegrator*>(user_data);
+    try {
+      return self->method_.linearPart().update(t, N_VGetArrayPointer(y), self->user_);
+    } catch (...) {
+      self->pending_ = std::current_exception();
+      return -1;
+    }
+  }
 };
 
 namespace detail {
@@ -181,6 +193,9 @@ void OdeIntegrator::reset(double t0, const double* y0) {
   double* y = N_VGetArrayPointer(asVector(y_));
   for (int i = 0; i < n_; ++i) y[i] = y0[i];
   t_ = t0;
+  const StepFunction update = method_.isImplicitExplicit() ? method_.linearPart().update : nullptr;
+  if (update && update(t0, y, user_) != 0)
+    throw std::runtime_error("OdeIntegrator: the implicit part could not be set up at t0");
   if (mem_) {
     stepper_->reset(mem_, t0, asVector(y_));
     return;
@@ -192,6 +207,8 @@ void OdeIntegrator::reset(double t0, const double* y0) {
   stepper_->configure(mem_, method_, stage_solver_.get());
   stepper_->set_max_num_steps(mem_, opts_.max_steps);
   if (opts_.max_step > 0.0) stepper_->set_max_step(mem_, opts_.max_step);
+  if (update && ARKStepSetPostprocessStepFn(mem_, &OdeCallback::updateLinearPart) != ARK_SUCCESS)
+    throw std::runtime_error("ARKStepSetPostprocessStepFn failed");
 }
 
 IntegratorStatus OdeIntegrator::advanceTo(double tout) {

@@ -157,7 +157,8 @@ std::vector<FieldSpec> makeTable() {
       number("wing.fe.cutoff_hz", "Hz", 1.0, R::closed(0.0, 1e5), "0",
              "keep only modes below this frequency; 0 = no cut-off"),
       number("wing.fe.damping_ratio", "-", 1.0, R::closedOpen(0.0, 1.0), "0.015",
-             "modal damping ratio zeta of every mode (below critical)"),
+             "modal damping ratio zeta of every mode (below critical); the nonlinear wing's "
+             "membrane strains get Kelvin-Voigt damping with the first mode's ratio"),
       choice("wing.fe.p3_cross_axis", "normal | span", "\"normal\"",
              "cross axis n_u of the universal joint at P3: z_W or y_W"),
       choice("wing.fe.p3_joint", "universal | spherical | revolute_x | clamped", "\"universal\"",

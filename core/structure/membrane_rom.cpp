@@ -44,6 +44,85 @@ void ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, Workspace* ws,
   }
 }
 
+double ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot,
+                                        double beta_s, Workspace* ws, Eigen::VectorXd* f,
+                                        double scale) const {
+  if (empty()) return 0.0;
+  for (int p = 0; p < pairCount(); ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    ws->rates(p) = q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]);
+    ws->products(p) = q(ij[0]) * q(ij[1]) + beta_s * ws->rates(p);  // Q + beta Q'
+  }
+  ws->z.noalias() = pair_stiffness * ws->products;  // one pass over C (P^2 doubles)
+  for (int p = 0; p < pairCount(); ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    const double z = scale * ws->z(p);
+    (*f)(ij[0]) += z * q(ij[1]);
+    (*f)(ij[1]) += z * q(ij[0]);
+  }
+  return ws->rates.dot(ws->z);
+}
+
+ModalMembraneStiffness::Rates ModalMembraneStiffness::rates(const Eigen::VectorXd& q,
+                                                            const Eigen::VectorXd& q_dot,
+                                                            double beta_s, Workspace* ws) const {
+  Rates r;
+  if (empty()) return r;
+  for (int p = 0; p < pairCount(); ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    ws->rates(p) = q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]);
+    ws->products(p) = q(ij[0]) * q(ij[1]);
+  }
+  ws->z.noalias() = pair_stiffness * ws->products;
+  r.strain_energy_rate_W = ws->rates.dot(ws->z);
+  ws->z.noalias() = pair_stiffness * ws->rates;
+  r.dissipation_W = beta_s * ws->rates.dot(ws->z);
+  return r;
+}
+
+void ModalMembraneStiffness::tangentParts(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot,
+                                          double beta_s, TangentWorkspace* ws,
+                                          Eigen::MatrixXd* gauss_newton,
+                                          Eigen::MatrixXd* rest) const {
+  gauss_newton->setZero();
+  rest->setZero();
+  if (empty()) return;
+  const int np = pairCount();
+  const bool damped = beta_s != 0.0;
+  for (int p = 0; p < np; ++p) {  // Q + beta Q'
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    ws->products(p) = q(ij[0]) * q(ij[1]);
+    if (damped) ws->products(p) += beta_s * (q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]));
+  }
+  ws->z.noalias() = pair_stiffness * ws->products;
+  // C J(v) column by column from J's two entries per row: J(v)(p, i) = v_j, J(v)(p, j) = v_i
+  // (2 v_i when i = j), i.e. P M^2 multiply-adds instead of the dense P^2 M; J(q) and, damped,
+  // J(q') (dQ'/dq = J(q')).
+  ws->c_jac.setZero();
+  if (damped) ws->c_jac_rate.setZero();
+  for (int p = 0; p < np; ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    const auto c = pair_stiffness.col(p);
+    ws->c_jac.col(ij[0]).noalias() += q(ij[1]) * c;
+    ws->c_jac.col(ij[1]).noalias() += q(ij[0]) * c;
+    if (damped) {
+      ws->c_jac_rate.col(ij[0]).noalias() += (beta_s * q_dot(ij[1])) * c;
+      ws->c_jac_rate.col(ij[1]).noalias() += (beta_s * q_dot(ij[0])) * c;
+    }
+  }
+  for (int p = 0; p < np; ++p) {  // J^T (C J), and sum_p z_p d2Q_p/dq2
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    gauss_newton->row(ij[0]).noalias() += q(ij[1]) * ws->c_jac.row(p);
+    gauss_newton->row(ij[1]).noalias() += q(ij[0]) * ws->c_jac.row(p);
+    if (damped) {
+      rest->row(ij[0]).noalias() += q(ij[1]) * ws->c_jac_rate.row(p);
+      rest->row(ij[1]).noalias() += q(ij[0]) * ws->c_jac_rate.row(p);
+    }
+    (*rest)(ij[0], ij[1]) += ws->z(p);
+    (*rest)(ij[1], ij[0]) += ws->z(p);
+  }
+}
+
 Eigen::MatrixXd ModalMembraneStiffness::tangent(const Eigen::VectorXd& q) const {
   const int m = mode_count;
   Eigen::MatrixXd k = Eigen::MatrixXd::Zero(m, m);

@@ -45,8 +45,24 @@ struct ModalMembraneStiffness {
 
   /// Scratch of one evaluation (P entries each); no allocation after construction.
   struct Workspace {
+    Eigen::VectorXd products, z, rates;
+    explicit Workspace(int pair_count = 0)
+        : products(pair_count), z(pair_count), rates(pair_count) {}
+  };
+  /// Scratch of the tangent (P x M and M x M); no allocation after construction.
+  struct TangentWorkspace {
     Eigen::VectorXd products, z;
-    explicit Workspace(int pair_count = 0) : products(pair_count), z(pair_count) {}
+    Eigen::MatrixXd c_jac, c_jac_rate;  ///< C J(q), beta C J(q') (P x M)
+    explicit TangentWorkspace(int pair_count = 0, int mode_count = 0)
+        : products(pair_count),
+          z(pair_count),
+          c_jac(pair_count, mode_count),
+          c_jac_rate(pair_count, mode_count) {}
+  };
+  /// Power of the membrane force on the modal rates q' (per wing).
+  struct Rates {
+    double strain_energy_rate_W = 0.0;  ///< dV_NL/dt = Q'^T C Q
+    double dissipation_W = 0.0;         ///< beta Q'^T C Q' >= 0 (the strain-rate damping)
   };
 
   /// V_NL(q) (J with mass-normalised modes: q in m sqrt(kg)).
@@ -54,8 +70,26 @@ struct ModalMembraneStiffness {
   /// f += scale dV_NL/dq (the membrane's restoring force on the modes). No allocation.
   void addForce(const Eigen::VectorXd& q, Workspace* ws, Eigen::VectorXd* f,
                 double scale = 1.0) const;
+  /// The membrane force with Kelvin-Voigt damping of the membrane strains (strain-rate stress
+  /// beta D eps'): f += scale J^T C (Q + beta Q'), J = dQ/dq, Q' = J q'. The in-plane field
+  /// follows q quasi-statically, so eps' is linear in Q' and the dissipation is beta Q'^T C Q'
+  /// (the condensed strain energy of the strain rate, times beta): never negative. Returns the
+  /// force's power on q' (unscaled), dV_NL/dt + dissipation. One pass over C; no allocation.
+  double addForce(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
+                  Workspace* ws, Eigen::VectorXd* f, double scale = 1.0) const;
+  /// The two parts of that power separately (two passes over C; for histories and checks).
+  Rates rates(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
+              Workspace* ws) const;
   /// d^2 V_NL / dq^2 (M x M): the membrane's tangent stiffness at q.
   Eigen::MatrixXd tangent(const Eigen::VectorXd& q) const;
+  /// The Jacobian of the damped force in two parts, without allocation: `gauss_newton` = J^T C J
+  /// (positive semi-definite; times beta it is d f / dq'), and `rest` = d f / dq - J^T C J =
+  /// sum_p z_p d2Q_p/dq2 with z = C (Q + beta Q') (the membrane stress part, indefinite in
+  /// general) + beta J^T C J(q') (the damping force's change with q; not symmetric). At q' = 0 or
+  /// beta = 0 the two sum to tangent(q). M x M each, overwritten.
+  void tangentParts(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
+                    TangentWorkspace* ws, Eigen::MatrixXd* gauss_newton,
+                    Eigen::MatrixXd* rest) const;
   /// The in-plane displacement that goes with q (6n); needs `relaxation`.
   Eigen::VectorXd membraneDisplacement(const Eigen::VectorXd& q) const;
 };

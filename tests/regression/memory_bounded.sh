@@ -65,9 +65,9 @@ vehicle = "$magpie"
 [simulate]
 mode = "free"
 freq_hz = 12.0
-speed_mps = 16.3229
-theta_deg = 16.35
-tail_angle_deg = 19.98
+speed_mps = 16.5005
+theta_deg = 16.21
+tail_angle_deg = 19.74
 cycles = $2
 [simulate.free]
 bound_h_m = 100.0

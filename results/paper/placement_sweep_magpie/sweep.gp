@@ -10,18 +10,18 @@ set xlabel 'kinematics.hinge_x_m (m)' noenhanced
 set xrange [-0.0018:0.0318]
 set xtics (0, 0.015, 0.03)
 set ylabel 'theta_mean_deg (deg)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:4 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:4 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:4 with linespoints lw 2 pt 7 title '0.078'
 unset key
 set ylabel 'speed_mps (m/s)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:5 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:5 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:5 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'tail_angle_deg (deg)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:6 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:6 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:6 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'freq_hz (Hz)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:7 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:7 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:7 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'power_aero_W (W)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:8 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:8 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:8 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'norm_ratio_max (-)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:18 with linespoints lw 2 pt 7 title '0.052', 1 with lines dt 2 lc rgb '#333333' title 'bound (bounded below 1)'
+plot 'sweep.csv' skip 2 every 3::1 using 1:18 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:18 with linespoints lw 2 pt 7 title '0.078', 1 with lines dt 2 lc rgb '#333333' title 'bound (bounded below 1)'
 unset multiplot
 
 unset output
@@ -33,18 +33,18 @@ set xlabel 'kinematics.hinge_x_m (m)' noenhanced
 set xrange [-0.0018:0.0318]
 set xtics (0, 0.015, 0.03)
 set ylabel 'theta_mean_deg (deg)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:4 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:4 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:4 with linespoints lw 2 pt 7 title '0.078'
 unset key
 set ylabel 'speed_mps (m/s)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:5 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:5 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:5 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'tail_angle_deg (deg)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:6 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:6 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:6 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'freq_hz (Hz)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:7 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:7 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:7 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'power_aero_W (W)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:8 with linespoints lw 2 pt 7 title '0.052'
+plot 'sweep.csv' skip 2 every 3::1 using 1:8 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:8 with linespoints lw 2 pt 7 title '0.078'
 set ylabel 'norm_ratio_max (-)' noenhanced
-plot 'sweep.csv' skip 2 every 3::1 using 1:18 with linespoints lw 2 pt 7 title '0.052', 1 with lines dt 2 lc rgb '#333333' title 'bound (bounded below 1)'
+plot 'sweep.csv' skip 2 every 3::1 using 1:18 with linespoints lw 2 pt 7 title '0.052', 'sweep.csv' skip 2 every 3::2 using 1:18 with linespoints lw 2 pt 7 title '0.078', 1 with lines dt 2 lc rgb '#333333' title 'bound (bounded below 1)'
 unset multiplot
 
 unset output

@@ -24,12 +24,12 @@ set ylabel 'unknowns (deg, m/s, Hz)'
 set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.35', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.32', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.98'
-7,16.34948763141962
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.21', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.50', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.74'
+7,16.206490500220077
 e
-7,16.323415640379345
+7,16.500542637951796
 e
-7,19.978944179280067
+7,19.74185898443995
 e
 
 unset multiplot
@@ -57,12 +57,12 @@ set ylabel 'unknowns (deg, m/s, Hz)'
 set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.35', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.32', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.98'
-7,16.34948763141962
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.21', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.50', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.74'
+7,16.206490500220077
 e
-7,16.323415640379345
+7,16.500542637951796
 e
-7,19.978944179280067
+7,19.74185898443995
 e
 
 unset multiplot

@@ -149,5 +149,51 @@ TEST(DynamicsBoundedHistory, FreeFlightAnalysesOnTheWayWhatTheWholeHistoryGives)
     EXPECT_EQ(s.limit_cycle.spectrum_theta.amplitude[k], last10.spectrum_theta.amplitude[k]);
 }
 
+// The observer may end a run after a whole cycle (FreeFlightObserver::endRunAfterCycle, the
+// settled free flight's use): the run is then those cycles, not judged, and its samples and kept
+// cycles are the first cycles of the full run's, bit for bit.
+struct EndAfter : FreeRecord {
+  int end_after = 0;
+  std::vector<int> asked;
+  bool endRunAfterCycle(int cycle) override {
+    asked.push_back(cycle);
+    return cycle == end_after;
+  }
+};
+
+TEST(DynamicsBoundedHistory, TheObserverMayEndAFreeFlightAfterACycle) {
+  const VehicleDefinition file = studies::loadVehicleFile(
+      std::string(ORNI_SOURCE_DIR) + "/tests/data/sensitivity/magpie_rigid_fixture.toml");
+  const FlightCoreModel model(file.model);
+  SimulationOptions o;
+  o.mode = FlightMode::kFree;
+  o.cycles = 12;
+  o.samples_per_cycle = 20;
+  FreeRecord full;
+  ASSERT_EQ(simulateFree(model, file.design_point, o, nullptr, &full).status,
+            SimulationStatus::kOk);
+  EndAfter part;
+  part.end_after = 5;
+  FreeFlightHistory kept;
+  kept.keep_cycles = 2;
+  const FreeFlightSummary s = simulateFree(model, file.design_point, o, &kept, &part);
+  EXPECT_EQ(s.status, SimulationStatus::kOk) << s.message;
+  EXPECT_EQ(s.cycles_run, 5);
+  EXPECT_FALSE(s.analysed);
+  EXPECT_NE(s.message.find("5 of 12 cycles"), std::string::npos) << s.message;
+  EXPECT_EQ(part.asked, (std::vector<int>{1, 2, 3, 4, 5}));
+  const std::size_t n = 5 * 20 + 1;
+  ASSERT_EQ(part.h.size(), n);
+  for (std::size_t i = 0; i < n; ++i) EXPECT_EQ(part.h[i], full.h[i]);
+  ASSERT_EQ(kept.body.size(), 2u * 20u + 1u);
+  EXPECT_EQ(kept.body.back().h_m, full.h[n - 1]);
+  // Never asked after the last cycle: a run that is not ended is judged as always.
+  EndAfter never;
+  never.end_after = 0;
+  const FreeFlightSummary w = simulateFree(model, file.design_point, o, nullptr, &never);
+  EXPECT_TRUE(w.analysed);
+  EXPECT_EQ(never.asked.size(), 11u);
+}
+
 }  // namespace
 }  // namespace orni

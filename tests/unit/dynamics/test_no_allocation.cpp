@@ -115,6 +115,7 @@ void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>
   Imex::explicitRhs(0.0, y.data(), ydot.data(), &sys);  // warm-up
   const long before = g_allocations.load();
   for (int i = 0; i < 200; ++i) {
+    if (sys.nonlinearWing()) Imex::update(1e-4 * i, y.data(), &sys);
     Imex::explicitRhs(1e-4 * i, y.data(), ydot.data(), &sys);
     Imex::implicitRhs(1e-4 * i, y.data(), ydot.data(), &sys);
     Imex::solve(1e-4 * (1 + i % 3), y.data(), ydot.data(), &sys);
@@ -124,9 +125,10 @@ void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>
   IntegratorOptions opts;
   opts.rel_tol = rel_tol;
   sys.absoluteTolerances(rel_tol, 1e-5, 1e-5, &opts.abs_tol);
-  OdeIntegrator integrator(n, &Imex::explicitRhs, &sys,
-                           IntegrationMethod::implicitExplicit(Imex::part(), ImexMethod::kArk437),
-                           opts);
+  OdeIntegrator integrator(
+      n, &Imex::explicitRhs, &sys,
+      IntegrationMethod::implicitExplicit(Imex::part(sys.nonlinearWing()), ImexMethod::kArk437),
+      opts);
   integrator.reset(0.0, y0.data());
   ASSERT_EQ(integrator.advanceTo(0.02), IntegratorStatus::kOk) << integrator.lastError();
   const long before_steps = g_allocations.load();
@@ -135,8 +137,7 @@ void expectNoAllocationInImexSteps(System& sys, int n, const std::vector<double>
   EXPECT_GT(integrator.steps(), 10);
 }
 
-TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
-  const VehicleModel v = testing::magpieVehicle();
+void expectNoAllocationInFlexibleTethered(const VehicleModel& v) {
   const FlightCoreModel model(v);
   const OperatingPoint p = testing::magpieDesignPoint();
   FlexibleTetheredSystem sys(model, *model.flexible, tetheredBodyMotion(p.speed_mps, p.theta_rad),
@@ -147,8 +148,19 @@ TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
   expectNoAllocationInImexSteps(sys, n, y0, 1e-4);
 }
 
-TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
-  const VehicleModel v = testing::magpieVehicle();
+TEST(DynamicsNoAllocation, FlexibleTetheredImexSteps) {
+  expectNoAllocationInFlexibleTethered(testing::magpieVehicle());
+}
+
+// The nonlinear wing: membrane force, Newton stages and the split's update after every step.
+TEST(DynamicsNoAllocation, NonlinearWingTetheredImexSteps) {
+  VehicleModel v = testing::magpieVehicle();
+  v.wing.fe.nonlinear = true;
+  v.wing.fe.max_modes = 12;
+  expectNoAllocationInFlexibleTethered(v);
+}
+
+void expectNoAllocationInFlexibleFreeFlight(const VehicleModel& v) {
   const FlightCoreModel model(v);
   const OperatingPoint p = testing::magpieDesignPoint();
   FreeFlightSystem sys(model, model.flexible.get(), ControlInput{p.freq_hz, p.tail_angle_rad},
@@ -162,6 +174,17 @@ TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
   b.W_mps = p.speed_mps * std::sin(p.theta_rad);
   sys.initialState(0.0, b, y0.data());
   expectNoAllocationInImexSteps(sys, n, y0, 1e-4);
+}
+
+TEST(DynamicsNoAllocation, FlexibleFreeFlightImexSteps) {
+  expectNoAllocationInFlexibleFreeFlight(testing::magpieVehicle());
+}
+
+TEST(DynamicsNoAllocation, NonlinearWingFreeFlightImexSteps) {
+  VehicleModel v = testing::magpieVehicle();
+  v.wing.fe.nonlinear = true;
+  v.wing.fe.max_modes = 12;
+  expectNoAllocationInFlexibleFreeFlight(v);
 }
 
 TEST(DynamicsNoAllocation, CounterSeesAllocations) {  // the test above can fail

@@ -10,6 +10,7 @@
 // - the condensed modal membrane against the full nonlinear FE solution restricted to the same
 //   modes, and, with enough modes, against the full solution itself.
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <vector>
 
@@ -216,6 +217,74 @@ TEST(FeMembraneRom, CondensedEnergyIsTheFullEnergyWithTheMembraneRelaxed) {
     mw.membrane.addForce(qm, &ws, &fm);
     EXPECT_LT(((fp - fm) / (2 * h) - k.col(i)).cwiseAbs().maxCoeff(), 1e-6 * k.cwiseAbs().maxCoeff());
   }
+}
+
+// The strain-rate damped membrane force f = J^T C (Q + beta Q') and its Jacobians: the tangent's
+// two parts sum to d f / dq at q' = 0, the Gauss-Newton part is d f / dq' over beta; its power on
+// q' splits into dV/dt (the energy's rate along q') and the dissipation beta Q'^T C Q' >= 0.
+TEST(FeMembraneRom, DampedForceRatesAndTangentPartsMatchFiniteDifferences) {
+  fe_test::MiniWing w = fe_test::miniWing(6, 10);
+  ModalWingOptions options;
+  options.selection.max_modes = 6;
+  options.nonlinear = true;
+  const ModalWing mw = buildModalWing(w.vehicle, w.mesh, options);
+  ASSERT_FALSE(mw.membrane.empty());
+  const ModalMembraneStiffness& rom = mw.membrane;
+  const int m = mw.modeCount();
+  std::srand(7);
+  const Eigen::VectorXd q = Eigen::VectorXd::Random(m) * 2e-6;
+  const Eigen::VectorXd qd = Eigen::VectorXd::Random(m) * 2e-2;  // q' / q ~ 1e4 1/s: damping
+                                                                // matters in d f / dq
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m);
+  const double beta = 3e-4;
+  EXPECT_GT(beta * qd.cwiseAbs().maxCoeff() / q.cwiseAbs().maxCoeff(), 0.5);
+  ModalMembraneStiffness::Workspace ws(rom.pairCount());
+  ModalMembraneStiffness::TangentWorkspace tws(rom.pairCount(), m);
+  Eigen::MatrixXd gn(m, m), stress(m, m), gn_d(m, m), rest_d(m, m);
+  rom.tangentParts(q, zero, beta, &tws, &gn, &stress);  // at rest: the elastic tangent
+  rom.tangentParts(q, qd, beta, &tws, &gn_d, &rest_d);
+  EXPECT_LT((gn + stress - rom.tangent(q)).cwiseAbs().maxCoeff(),
+            1e-12 * rom.tangent(q).cwiseAbs().maxCoeff());
+  EXPECT_GE(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(gn).eigenvalues().minCoeff(),
+            -1e-12 * gn.cwiseAbs().maxCoeff());  // J^T C J, C positive semi-definite
+  auto force = [&](const Eigen::VectorXd& qq, const Eigen::VectorXd& vv) {
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
+    rom.addForce(qq, vv, beta, &ws, &f);
+    return f;
+  };
+  // Without rates the damped force is the elastic one.
+  Eigen::VectorXd f_elastic = Eigen::VectorXd::Zero(m);
+  rom.addForce(q, &ws, &f_elastic);
+  EXPECT_LT((force(q, zero) - f_elastic).cwiseAbs().maxCoeff(), 1e-14 * f_elastic.norm());
+  const double hq = 1e-9 * q.cwiseAbs().maxCoeff(), hv = 1e-3 * qd.cwiseAbs().maxCoeff();
+  const double scale = (gn + stress).cwiseAbs().maxCoeff();
+  for (int i = 0; i < m; ++i) {
+    Eigen::VectorXd qp = q, qm = q, vp = qd, vm = qd;
+    qp(i) += hq;
+    qm(i) -= hq;
+    vp(i) += hv;
+    vm(i) -= hv;
+    EXPECT_LT(((force(qp, zero) - force(qm, zero)) / (2 * hq) - (gn + stress).col(i))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-6 * scale);
+    EXPECT_LT(((force(q, vp) - force(q, vm)) / (2 * hv) - beta * gn.col(i)).cwiseAbs().maxCoeff(),
+              1e-6 * beta * scale);
+    // Moving: d f / dq = J^T C J + rest(q, q'), the damping force's change with q included.
+    EXPECT_LT(((force(qp, qd) - force(qm, qd)) / (2 * hq) - (gn_d + rest_d).col(i))
+                  .cwiseAbs()
+                  .maxCoeff(),
+              1e-6 * (gn_d + rest_d).cwiseAbs().maxCoeff());
+  }
+  const ModalMembraneStiffness::Rates rates = rom.rates(q, qd, beta, &ws);
+  const double dt = 1e-4 * q.cwiseAbs().maxCoeff() / qd.cwiseAbs().maxCoeff();
+  const double energy_rate = (rom.energy(q + dt * qd, &ws) - rom.energy(q - dt * qd, &ws)) / (2 * dt);
+  EXPECT_NEAR(rates.strain_energy_rate_W, energy_rate, 1e-6 * std::abs(energy_rate));
+  EXPECT_GT(rates.dissipation_W, 0.0);
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(m);
+  const double power = rom.addForce(q, qd, beta, &ws, &f);
+  EXPECT_NEAR(power, qd.dot(f), 1e-12 * std::abs(power));
+  EXPECT_NEAR(power, rates.strain_energy_rate_W + rates.dissipation_W, 1e-12 * std::abs(power));
 }
 
 // With every out-of-plane mode kept, the reduced static solution is the full nonlinear one:
