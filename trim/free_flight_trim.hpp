@@ -12,8 +12,8 @@
 // efficiency of 0.35 by 7.7 deg).
 //
 // Settled: the vehicle converges on the periodic orbit at its controls (periodic_trim.hpp) at the
-// rate of the orbit's slowest Floquet multiplier, the phugoid's (|mu| 0.976-0.986 a cycle on the
-// magpie: e-folding in 40-70 cycles, a 60-130-cycle period, longer than the averaged window). So
+// rate of the orbit's slowest Floquet multiplier, the phugoid's (|mu| 0.976-0.985 a cycle on the
+// magpie: e-folding in 40-70 cycles, a 60-150-cycle period, longer than the averaged window). So
 // the flight goes on, cycle by cycle, until the window's means are within tolerance of the values
 // the flight settles to, which the decay of that slowest motion predicts (fitted to the cycle
 // means, core/analysis/slow_multipliers.hpp); where nothing is left to fit, until the cycle means

@@ -15,7 +15,7 @@ struct SettledFlightOptions {
   double settled_tol_rad = 8.7e-5;
   /// A flight not settled after `cycles` goes on, cycle by cycle, until it is, up to this many
   /// cycles in all (at least `cycles`): the slowest motion, the phugoid, may need several times
-  /// `cycles` (the committed magpie: Floquet multiplier 0.986 a cycle, e-folding in 71 cycles).
+  /// `cycles` (the committed magpie: Floquet multiplier 0.985 a cycle, e-folding in 66 cycles).
   int max_cycles = 1200;
 };
 

@@ -65,9 +65,9 @@ vehicle = "$magpie"
 [simulate]
 mode = "free"
 freq_hz = 12.0
-speed_mps = 16.5005
-theta_deg = 16.21
-tail_angle_deg = 19.74
+speed_mps = 18.0169
+theta_deg = 13.56
+tail_angle_deg = 16.59
 cycles = $2
 [simulate.free]
 bound_h_m = 100.0

@@ -207,13 +207,17 @@ TEST_F(PeriodicTrimEfw, PerturbationAlongTheLeadingEigenvectorDecaysByItsModulus
 // The two-stage trim (Eq. (4), then level settled free flight: trim/free_flight_trim.hpp) settles
 // on the periodic orbit: the same theta_mean, airspeed and tail angle from two methods that share
 // only the vehicle's right-hand side. Tolerances: the secant stops at |climb angle| <= 0.01 deg,
-// and the settled climb angle moves by 1.09 deg per deg of tail angle here (theta by 1.7 deg, the
-// airspeed by -0.68 m/s): up to 0.009 deg of tail angle, 0.016 deg of theta, 0.006 m/s; the settled
-// means are good to 0.005 deg (SettledFlightOptions::settled_tol_rad). Measured: 0.0002 deg,
-// 0.0016 m/s, 0.0004 deg. The two-stage trim's free flights used to be judged after 120 cycles
-// with the last 40 averaged, a third of this phugoid's 132-cycle period (|mu| 0.986 a cycle): the
-// window's mean climb angle was off by 0.15 deg and the trim by 0.14 deg, 0.18 m/s and 0.24 deg
-// (16.35 deg, 16.32 m/s, 19.98 deg).
+// and the settled climb angle moves by 1.87 deg per deg of tail angle here (theta by 2.45 deg, the
+// airspeed by -0.97 m/s; settled flights at the two-stage trim's tail angle +-0.25 deg): up to
+// 0.005 deg of tail angle, 0.013 deg of theta, 0.005 m/s; the settled means are good to 0.005 deg
+// (SettledFlightOptions::settled_tol_rad), up to 0.003 deg of tail angle, 0.007 deg of theta,
+// 0.003 m/s more. Measured: 0.0036 deg, 0.0046 m/s, 0.0036 deg (two-stage 13.5616 deg,
+// 18.0169 m/s, 16.5875 deg). With the old strip-load coupling (before the quarter-chord flat-plate
+// loads) the slopes were 1.09, 1.7 deg and -0.68 m/s per deg and the agreement 0.0002 deg,
+// 0.0016 m/s, 0.0004 deg at 16.21 deg, 16.50 m/s, 19.74 deg. The two-stage trim's free flights
+// used to be judged after 120 cycles with the last 40 averaged, a third of that phugoid's 132-cycle
+// period (|mu| 0.986 a cycle): the window's mean climb angle was off by 0.15 deg and the trim by
+// 0.14 deg, 0.18 m/s and 0.24 deg (16.35 deg, 16.32 m/s, 19.98 deg).
 TEST_F(PeriodicTrimEfw, TwoStageTrimSettlesOnThePeriodicOrbit) {
   const PeriodicTrimSummary& s = *trim_;
   ASSERT_EQ(s.status, TrimStatus::kOk);
