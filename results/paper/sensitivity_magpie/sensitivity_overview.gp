@@ -12,7 +12,7 @@ set bmargin at screen 0.22
 set rmargin at screen 0.88
 set xrange [0.5:14.5]
 set yrange [0.5:8.5]
-set xtics ("theta_mean_deg (9.884 deg)" 1, "speed_mps (5.289 m/s)" 2, "tail_angle_deg (11.81 deg)" 3, "hinge_power_W (0.6408 W)" 4, "pitch_swing_deg (6.039 deg)" 5, "altitude_p2p_m (0.001785 m)" 6, "altitude_p2p_slow_m (0.3054 m)" 7, "norm_ratio_max (0.8719)" 8, "CF_V_min (0.01381)" 9, "CF_V_max (0.2825)" 10, "CF_H_min (0.05528)" 11, "CF_H_max (0.05997)" 12, "CM_CG_min (0.08417)" 13, "CM_CG_max (0.04846)" 14) rotate by 40 right noenhanced font ',9'
+set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (2.604 m/s)" 2, "tail_angle_deg (9.319 deg)" 3, "hinge_power_W (0.0958 W)" 4, "pitch_swing_deg (7.186 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5496 m)" 7, "norm_ratio_max (1.58)" 8, "CF_V_min (0.01381)" 9, "CF_V_max (0.1411)" 10, "CF_H_min (0.0221)" 11, "CF_H_max (0.02343)" 12, "CM_CG_min (0.02829)" 13, "CM_CG_max (0.02254)" 14) rotate by 40 right noenhanced font ',9'
 set ytics ("body.pitch_inertia_kgm2" 8, "kinematics.hinge_x_m" 7, "body.drag_area_m2" 6, "materials.LE1.youngs_modulus_gpa" 5, "materials.CFRP_ROD.youngs_modulus_gpa" 4, "wing.p3_aft_of_le_m" 3, "aero.suction_efficiency" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
 unset grid
 unset key
@@ -34,7 +34,7 @@ set bmargin at screen 0.22
 set rmargin at screen 0.88
 set xrange [0.5:14.5]
 set yrange [0.5:8.5]
-set xtics ("theta_mean_deg (9.884 deg)" 1, "speed_mps (5.289 m/s)" 2, "tail_angle_deg (11.81 deg)" 3, "hinge_power_W (0.6408 W)" 4, "pitch_swing_deg (6.039 deg)" 5, "altitude_p2p_m (0.001785 m)" 6, "altitude_p2p_slow_m (0.3054 m)" 7, "norm_ratio_max (0.8719)" 8, "CF_V_min (0.01381)" 9, "CF_V_max (0.2825)" 10, "CF_H_min (0.05528)" 11, "CF_H_max (0.05997)" 12, "CM_CG_min (0.08417)" 13, "CM_CG_max (0.04846)" 14) rotate by 40 right noenhanced font ',9'
+set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (2.604 m/s)" 2, "tail_angle_deg (9.319 deg)" 3, "hinge_power_W (0.0958 W)" 4, "pitch_swing_deg (7.186 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5496 m)" 7, "norm_ratio_max (1.58)" 8, "CF_V_min (0.01381)" 9, "CF_V_max (0.1411)" 10, "CF_H_min (0.0221)" 11, "CF_H_max (0.02343)" 12, "CM_CG_min (0.02829)" 13, "CM_CG_max (0.02254)" 14) rotate by 40 right noenhanced font ',9'
 set ytics ("body.pitch_inertia_kgm2" 8, "kinematics.hinge_x_m" 7, "body.drag_area_m2" 6, "materials.LE1.youngs_modulus_gpa" 5, "materials.CFRP_ROD.youngs_modulus_gpa" 4, "wing.p3_aft_of_le_m" 3, "aero.suction_efficiency" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
 unset grid
 unset key

@@ -15,7 +15,7 @@ set xtics 1
 set logscale y
 set format y '10^{%L}'
 set ylabel 'scaled residual (-)'
-set yrange [3.99263e-06:*]
+set yrange [1e-05:*]
 plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'accepted iterate', 'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', 0.0001 with lines dt 2 lc rgb '#333333' title 'tolerance'
 unset logscale y
 set format y '%g'
@@ -24,12 +24,12 @@ set ylabel 'unknowns (deg, m/s, Hz)'
 set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.21', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.50', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.74'
-7,16.206490500220077
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 13.56', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 18.02', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 16.59'
+7,13.561567550384005
 e
-7,16.500542637951796
+7,18.016931479037744
 e
-7,19.74185898443995
+7,16.58751219657861
 e
 
 unset multiplot
@@ -48,7 +48,7 @@ set xtics 1
 set logscale y
 set format y '10^{%L}'
 set ylabel 'scaled residual (-)'
-set yrange [3.99263e-06:*]
+set yrange [1e-05:*]
 plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'accepted iterate', 'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', 0.0001 with lines dt 2 lc rgb '#333333' title 'tolerance'
 unset logscale y
 set format y '%g'
@@ -57,12 +57,12 @@ set ylabel 'unknowns (deg, m/s, Hz)'
 set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 16.21', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 16.50', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 19.74'
-7,16.206490500220077
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 13.56', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 18.02', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 16.59'
+7,13.561567550384005
 e
-7,16.500542637951796
+7,18.016931479037744
 e
-7,19.74185898443995
+7,16.58751219657861
 e
 
 unset multiplot
