@@ -1,11 +1,13 @@
 // Calibration of vehicle values the paper leaves open against its published trim point (Table 3):
-// find the values of up to three vehicle parameters for which the vehicle, flying freely at the
+// find the values of up to four vehicle parameters for which the vehicle, flying freely at the
 // published tail angle and frequency, settles into level flight at the published mean pitch and
 // speed (free_flight_trim.hpp: settled means). Ceres Levenberg-Marquardt with bounds and central
-// differences; residuals (theta_mean - theta*) / 1 deg, (airspeed - U*) / (0.1 m/s) and the climb
-// angle / 1 deg. No I/O.
+// differences on the values scaled to their ranges; residuals (theta_mean - theta*) / 1 deg,
+// (airspeed - U*) / (0.1 m/s) and the climb angle / 1 deg. Three residuals: a fourth value leaves
+// a null direction, which the conditioning reports. No I/O.
 #pragma once
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -16,10 +18,29 @@
 
 namespace orni {
 
+enum class CalibrationStage { kTethered = 0, kFreeFlight = 1, kConditioning = 2 };
+
 struct CalibrationEvaluation {
+  CalibrationStage stage = CalibrationStage::kFreeFlight;
   std::vector<double> values;
   SettledFlight settled;
   double residual[3] = {0, 0, 0};
+};
+
+/// How well the target determines the fitted values (linearised at the solution).
+struct CalibrationConditioning {
+  bool ok = false;      ///< the central differences all settled
+  std::string message;  ///< why not
+  /// d(theta deg, U m/s, climb deg)/d(value), 3 x n, by central differences of 1 % of each range.
+  std::vector<std::array<double, 3>> jacobian;
+  /// Singular values of the Jacobian with each value scaled by its range and each residual by
+  /// the band (dimensionless: band widths per range), largest first; their ratio is the condition.
+  std::vector<double> singular_values;
+  double condition_number = 0.0;  ///< largest / smallest singular value; inf when rank-deficient
+  /// Per value: the half-width it is determined to (file units) when the settled flight may lie
+  /// anywhere inside the band, the others re-fitted (sum_j |J^+_ij| band_j); inf along a null
+  /// direction (more values than the target determines).
+  std::vector<double> determined_within;
 };
 
 struct CalibrationSummary {
@@ -32,6 +53,9 @@ struct CalibrationSummary {
   double wall_time_s = 0;
   std::string ceres_report;
   std::vector<CalibrationEvaluation> log;
+  /// Per value: on (within 1e-6 of its range) its lower or upper bound, i.e. the range binds.
+  std::vector<bool> at_lower, at_upper;
+  CalibrationConditioning conditioning;  ///< when options.conditioning
 };
 
 /// Calibrate `base` (its other values unchanged). Throws std::invalid_argument for bad options.

@@ -1,6 +1,7 @@
 // Calibration options (trim/calibration.hpp); light header for the study files.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -10,6 +11,8 @@
 #include "trim/settled_flight_options.hpp"
 
 namespace orni {
+
+struct CalibrationEvaluation;  // trim/calibration.hpp
 
 /// A calibration parameter: one of the vehicle numbers of calibrationKeys(), read and written
 /// through its accessor (core/model/vehicle_fields.hpp).
@@ -21,8 +24,9 @@ struct CalibrationParameter {
 };
 /// The vehicle keys a calibration may vary: wing.member_diameter_scale (spar details),
 /// body.drag_area_m2 (parasite drag), kinematics.hinge_x_m and hinge_z_m (the CG relative to the
-/// hinge), tail.arm_m, body.pitch_inertia_kgm2 and wing.p3_aft_of_le_m (the universal joint on
-/// the root chord). SI = file units for each.
+/// hinge), tail.arm_m, body.pitch_inertia_kgm2, wing.p3_aft_of_le_m (the universal joint on
+/// the root chord), aero.suction_efficiency (the leading-edge suction a thin membrane section
+/// realises) and wing.skin.pretension_N_per_m. SI = file units for each.
 const std::vector<std::string_view>& calibrationKeys();
 /// "wing.member_diameter_scale, body.drag_area_m2, ..." (messages).
 std::string calibrationKeyList();
@@ -39,10 +43,20 @@ void setValue(VehicleModel* v, CalibrationParameter p, double value);
 struct CalibrationVariable {
   CalibrationParameter parameter;
   double initial = 0.0, lower = 0.0, upper = 0.0;
+  /// Where the physical range [lower, upper] comes from (a reference, an estimate); shown with
+  /// the fitted value wherever it is reported ("a fit is a fit").
+  std::string source;
+};
+
+/// The band around the target within which the calibration's conditioning is judged: how far
+/// each fitted value may move while the settled flight stays inside the band (the regression
+/// tolerance of the published point, tests/regression/table3).
+struct CalibrationBand {
+  double theta_deg = 0.5, speed_mps = 0.3, climb_deg = 0.5;
 };
 
 struct CalibrationOptions {
-  std::vector<CalibrationVariable> variables;  ///< 1-3, distinct, lower <= initial <= upper
+  std::vector<CalibrationVariable> variables;  ///< 1-4, distinct, lower <= initial <= upper
   OperatingPoint target;                       ///< published trim point (theta, U, tail, f)
   SettledFlightOptions settled;                ///< free flights of each evaluation
   double tolerance = 0.01;  ///< converged when |theta err| <= tol deg, |U err| <= tol m/s, |climb
@@ -52,6 +66,13 @@ struct CalibrationOptions {
   /// from the initial values, then the free-flight one from its result: the settled free flight
   /// needs a vehicle that roughly flies to settle at all.
   bool tethered_first = true;
+  /// After the solve, central differences of the settled flight at the solution (2 per
+  /// variable) give the Jacobian, its conditioning and how well the target determines each value.
+  bool conditioning = true;
+  CalibrationBand band;
+  /// Called after every evaluation with the log so far (trim/calibration.hpp); the CLI writes
+  /// calibration.csv from it, so a long calibration shows its progress and a kill keeps it.
+  std::function<void(const std::vector<CalibrationEvaluation>&)> on_evaluation;
   bool IsValid(std::string* why) const;
 };
 

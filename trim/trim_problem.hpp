@@ -76,8 +76,9 @@ using MeanLoadsFunction =
 /// The tethered periodic core as a MeanLoadsFunction. Residual runs use `residual_options` (with
 /// stop_when_steady: `cycles` is the maximum); derivative runs use the same tolerances but exactly
 /// `derivative_cycles` cycles from the same quasi-steady start, so that the start-up transient is
-/// the same smooth function of the point on both sides of a difference and cancels. `model` must
-/// outlive the returned function.
+/// the same smooth function of the point on both sides of a difference and cancels; for the
+/// geometrically nonlinear wing, whose transient is not smooth in the point, derivative runs are
+/// periodic runs like the residual runs. `model` must outlive the returned function.
 MeanLoadsFunction tetheredMeanLoads(const FlightCoreModel& model,
                                     const SimulationOptions& residual_options,
                                     int derivative_cycles);

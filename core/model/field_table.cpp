@@ -453,10 +453,13 @@ std::vector<FieldSpec> makeTable() {
       number("calibrate.tolerance", "deg, m/s", 1.0, R::openClosed(0.0, 10.0), "0.01",
              "converged when theta, U and climb angle errors are within it"),
       integer("calibrate.max_iterations", R::closed(1, 200), "20", "solver iterations"),
-      table("calibrate.variables", "required", "[[calibrate.variables]]: 1 to 3 vehicle values"),
+      table("calibrate.variables", "required", "[[calibrate.variables]]: 1 to 4 vehicle values"),
       text("calibrate.variables[].key", "required",
            "wing.member_diameter_scale, body.drag_area_m2, kinematics.hinge_x_m, "
-           "kinematics.hinge_z_m, tail.arm_m, body.pitch_inertia_kgm2 or wing.p3_aft_of_le_m"),
+           "kinematics.hinge_z_m, tail.arm_m, body.pitch_inertia_kgm2, wing.p3_aft_of_le_m, "
+           "aero.suction_efficiency or wing.skin.pretension_N_per_m"),
+      text("calibrate.variables[].source", "none",
+           "where the range [lower, upper] comes from; reported beside the fitted value"),
       number("calibrate.variables[].lower", "key", 1.0, R::any(), "required",
              "lower bound, inside the key's range", {}, "the range of the key"),
       number("calibrate.variables[].upper", "key", 1.0, R::any(), "required",

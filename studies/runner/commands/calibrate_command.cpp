@@ -1,5 +1,6 @@
 #include "studies/runner/commands/calibrate_command.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include "core/model/frames.hpp"
@@ -12,15 +13,18 @@
 
 namespace orni::studies {
 
-int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) {
-  const orni::CalibrationOptions& o = study.calibrate();
-  const orni::CalibrationSummary s = orni::calibrate(study.vehicle, o);
-
-  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+namespace {
+// calibration.csv: one row per settled flight (or tethered Eq. 4 run) of the calibration.
+CsvTable calibrationTable(const orni::CalibrationOptions& o,
+                          const std::vector<orni::CalibrationEvaluation>& log) {
   CsvTable t;
   std::vector<std::vector<double>> cols(o.variables.size());
-  std::vector<double> ok, theta, speed, climb, drift;
-  for (const orni::CalibrationEvaluation& e : s.log) {
+  std::vector<double> stage, ok, theta, speed, climb, drift, r0, r1, r2;
+  for (const orni::CalibrationEvaluation& e : log) {
+    stage.push_back(static_cast<double>(e.stage));
+    r0.push_back(e.residual[0]);
+    r1.push_back(e.residual[1]);
+    r2.push_back(e.residual[2]);
     for (std::size_t i = 0; i < o.variables.size(); ++i) cols[i].push_back(e.values[i]);
     ok.push_back(e.settled.ok ? 1.0 : 0.0);
     theta.push_back(e.settled.theta_mean_rad * kRadToDeg);
@@ -30,18 +34,71 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
   }
   for (std::size_t i = 0; i < o.variables.size(); ++i)
     t.addColumn(orni::keyOf(o.variables[i].parameter), "file units", cols[i]);
+  t.addColumn("stage", "0=tethered Eq. 4; 1=free flight; 2=conditioning", stage);
   t.addColumn("settled", "1=yes", ok);
   t.addColumn("theta_mean", "deg", theta);
   t.addColumn("airspeed", "m/s", speed);
   t.addColumn("climb_angle", "deg", climb);
   t.addColumn("theta_drift", "deg", drift);
-  writeFileAtomic(out_dir / "calibration.csv", t.toString());
+  // The solver's residuals: stage 0 Eq. (4) in percent of the weight (FV - W, FH, M / c_mean);
+  // otherwise theta error (deg), speed error (0.1 m/s), climb angle (deg).
+  t.addColumn("residual_1", "stage 0: % of W; else deg", r0);
+  t.addColumn("residual_2", "stage 0: % of W; else 0.1 m/s", r1);
+  t.addColumn("residual_3", "stage 0: % of W c; else deg", r2);
+  return t;
+}
+}  // namespace
+
+int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) {
+  orni::CalibrationOptions o = study.calibrate();
+  writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(study));
+  // Progress of a long calibration: the evaluations so far, rewritten atomically after each.
+  o.on_evaluation = [&](const std::vector<orni::CalibrationEvaluation>& log) {
+    writeFileAtomic(out_dir / "calibration.csv", calibrationTable(o, log).toString());
+  };
+  const orni::CalibrationSummary s = orni::calibrate(study.vehicle, o);
+
+  writeFileAtomic(out_dir / "calibration.csv", calibrationTable(o, s.log).toString());
 
   orni::VehicleModel calibrated = study.vehicle;
   JsonObject values;
+  std::vector<JsonObject> fitted;  // every value with its range, its source and how well the target fixes it
+  const orni::CalibrationConditioning& k = s.conditioning;
   for (std::size_t i = 0; i < o.variables.size(); ++i) {
-    orni::setValue(&calibrated, o.variables[i].parameter, s.values[i]);
-    values.set(orni::keyOf(o.variables[i].parameter), s.values[i]);
+    const orni::CalibrationVariable& v = o.variables[i];
+    orni::setValue(&calibrated, v.parameter, s.values[i]);
+    values.set(orni::keyOf(v.parameter), s.values[i]);
+    JsonObject f;
+    f.set("key", orni::keyOf(v.parameter))
+        .set("value", s.values[i])
+        .set("lower", v.lower)
+        .set("upper", v.upper)
+        .set("source", v.source)
+        .set("inside_range", !s.at_lower[i] && !s.at_upper[i])
+        .set("binds", s.at_lower[i] ? "lower" : s.at_upper[i] ? "upper" : "none");
+    if (k.ok) {
+      f.set("d_theta_deg_per_unit", k.jacobian[i][0])
+          .set("d_speed_mps_per_unit", k.jacobian[i][1])
+          .set("d_climb_deg_per_unit", k.jacobian[i][2]);
+      if (std::isfinite(k.determined_within[i]))
+        f.set("determined_within", k.determined_within[i]);
+      else
+        f.set("determined_within", "undetermined (null direction)");
+    }
+    fitted.push_back(f);
+  }
+  JsonObject conditioning;
+  conditioning.set("ok", k.ok).set("message", k.message);
+  if (k.ok) {
+    conditioning.set("singular_values", k.singular_values)
+        .set("band", JsonObject()
+                         .set("theta_deg", o.band.theta_deg)
+                         .set("speed_mps", o.band.speed_mps)
+                         .set("climb_deg", o.band.climb_deg));
+    if (std::isfinite(k.condition_number))
+      conditioning.set("condition_number", k.condition_number);
+    else
+      conditioning.set("condition_number", "inf (rank-deficient)");
   }
   writeFileAtomic(out_dir / "calibrated_vehicle.toml",
                   vehicleToToml({calibrated, study.design_point}));
@@ -54,6 +111,8 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
       .set("version", versionString())
       .set("converged", s.converged)
       .set("values", values)
+      .setObjects("fitted", fitted)
+      .set("conditioning", conditioning)
       .set("target", JsonObject()
                          .set("theta_mean_deg", o.target.theta_rad * kRadToDeg)
                          .set("speed_mps", o.target.speed_mps)
@@ -63,7 +122,9 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
                           .set("theta_mean_deg", s.settled.theta_mean_rad * kRadToDeg)
                           .set("airspeed_mps", s.settled.airspeed_mps)
                           .set("climb_angle_deg", s.settled.climb_angle_rad * kRadToDeg)
-                          .set("theta_drift_deg", s.settled.theta_drift_rad * kRadToDeg))
+                          .set("theta_drift_deg", s.settled.theta_drift_rad * kRadToDeg)
+                          .set("ok", s.settled.ok)
+                          .set("message", s.settled.message))
       .set("theta_error_deg", s.theta_error_deg)
       .set("speed_error_mps", s.speed_error_mps)
       .set("climb_angle_deg", s.climb_angle_deg)

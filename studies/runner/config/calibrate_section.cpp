@@ -33,9 +33,9 @@ orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::Vehicl
   o.tolerance = c.optionalDouble(field("calibrate.tolerance"), o.tolerance);
   o.max_iterations = c.optionalInt(field("calibrate.max_iterations"), o.max_iterations);
   std::vector<TableReader> vars =
-      c.optionalTableArray("variables", {"key", "initial", "lower", "upper"});
-  if (vars.empty() || vars.size() > 3)
-    throw c.valueError("variables", "1 to 3 [[calibrate.variables]] tables",
+      c.optionalTableArray("variables", {"key", "initial", "lower", "upper", "source"});
+  if (vars.empty() || vars.size() > 4)
+    throw c.valueError("variables", "1 to 4 [[calibrate.variables]] tables",
                        std::to_string(vars.size()));
   for (TableReader& t : vars) {
     orni::CalibrationVariable v;
@@ -60,6 +60,7 @@ orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::Vehicl
                              orni::displayNumber(v.upper) + "]",
                          t.has("initial") ? sourceText(*t.table().get("initial"))
                                           : orni::displayNumber(v.initial) + " (the vehicle's)");
+    if (t.has("source")) v.source = t.requiredString("source");
     t.finish();
     o.variables.push_back(v);
   }
@@ -83,6 +84,7 @@ void writeCalibrateSection(const orni::CalibrationOptions& o, TomlWriter& out) {
     out.number("initial", v.initial);
     out.number("lower", v.lower);
     out.number("upper", v.upper);
+    if (!v.source.empty()) out.string("source", v.source);
   }
 }
 

@@ -10,13 +10,15 @@
 //   tolerance = 0.01         # deg, m/s, deg
 //   max_iterations = 20      # [1, 200]
 //
-//   [[calibrate.variables]]  # 1 to 3 of them
+//   [[calibrate.variables]]  # 1 to 4 of them (three residuals: a fourth leaves a null direction)
 //   key = "body.drag_area_m2"   # wing.member_diameter_scale, body.drag_area_m2,
 //                               # kinematics.hinge_x_m, kinematics.hinge_z_m, tail.arm_m,
-//                               # body.pitch_inertia_kgm2
+//                               # body.pitch_inertia_kgm2, wing.p3_aft_of_le_m,
+//                               # aero.suction_efficiency, wing.skin.pretension_N_per_m
 //   initial = 0.007
-//   lower = 0.0
+//   lower = 0.0              # the physical range of the value ...
 //   upper = 0.05
+//   source = "C_D 0.1-1 on the frontal area"   # ... and where it comes from (optional)
 #pragma once
 
 #include <vector>

@@ -35,7 +35,8 @@ TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   CalibrationOptions o;
   o.target = trim.solution;  // level settled flight of v at its own tail angle
   const double truth = v.flapping.hinge_x_B_m;
-  o.variables = {{calibrationParameter("kinematics.hinge_x_m"), truth - 0.004, truth - 0.01, truth + 0.005}};
+  o.variables = {{calibrationParameter("kinematics.hinge_x_m"), truth - 0.004, truth - 0.01,
+                  truth + 0.005, "test"}};
   o.tethered_first = false;
   o.tolerance = 0.05;  // one variable, three residuals: least squares, zero at the truth
   const CalibrationSummary s = calibrate(v, o);
@@ -44,6 +45,25 @@ TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   // within 0.3 mm (measured 0.0012 mm). (Started aft of the truth the first free flights do not
   // settle: the CG then nears this vehicle's stability limit, about 25 mm behind the hinge.)
   EXPECT_NEAR(s.values[0], truth, 3e-4) << s.message << "\n" << s.ceres_report;
+  EXPECT_FALSE(s.at_lower[0] || s.at_upper[0]);
+
+  // Conditioning: one value, so one singular value and B = J diag(range) / band a column; the
+  // half-width the band allows is then range sum_j |B_j| / |B|^2 (the pseudo-inverse of a column).
+  const CalibrationConditioning& k = s.conditioning;
+  ASSERT_TRUE(k.ok) << k.message;
+  ASSERT_EQ(k.singular_values.size(), 1u);
+  const double range = 0.015;
+  const double band[3] = {o.band.theta_deg, o.band.speed_mps, o.band.climb_deg};
+  double sum_abs = 0.0, sum_sq = 0.0;
+  for (int j = 0; j < 3; ++j) {
+    const double b = k.jacobian[0][static_cast<std::size_t>(j)] * range / band[j];
+    sum_abs += std::abs(b);
+    sum_sq += b * b;
+  }
+  EXPECT_NEAR(k.singular_values[0], std::sqrt(sum_sq), 1e-9 * std::sqrt(sum_sq));
+  EXPECT_NEAR(k.determined_within[0], range * sum_abs / sum_sq, 1e-9 * range);
+  // Moving the CG moves the settled pitch: well determined, to a fraction of the 15 mm range.
+  EXPECT_LT(k.determined_within[0], 0.3 * range);
 }
 
 }  // namespace
