@@ -56,11 +56,17 @@ bool evaluateTethered(const CalibrationContext& c, const VehicleModel& v, double
   return e->settled.ok;
 }
 
-// A value from its position u in [0, 1] of the variable's range (the solver's unknowns: central
-// differences of 1e-3 of each range, whatever the value's size; a drag area of 4e-4 m^2 stepped by
-// 1e-3 of itself would move the settled flight by less than its averaging noise).
-double unscaled(const CalibrationVariable& v, double u) { return v.lower + u * (v.upper - v.lower); }
-double scaled(const CalibrationVariable& v, double x) { return (x - v.lower) / (v.upper - v.lower); }
+// A value from its position u in [1, 2] of the variable's range, u = 1 at the lower bound (the
+// solver's unknowns: Ceres steps its central differences by a fraction of |u|, so 1-2 % of each
+// range whatever the value's size, never a vanishing step at a bound at zero; a drag area of
+// 4e-4 m^2 stepped by a fraction of itself would move the settled flight by less than the noise
+// of its settled means).
+double unscaled(const CalibrationVariable& v, double u) {
+  return v.lower + (u - 1.0) * (v.upper - v.lower);
+}
+double scaled(const CalibrationVariable& v, double x) {
+  return 1.0 + (x - v.lower) / (v.upper - v.lower);
+}
 
 // Settled free flight of the vehicle with the given scaled values at the target point.
 bool evaluate(const CalibrationContext& c, const double* u, double* r,
@@ -72,7 +78,7 @@ bool evaluate(const CalibrationContext& c, const double* u, double* r,
   for (std::size_t i = 0; i < o.variables.size(); ++i) {
     // Held inside the range: Ceres's central differences step past a bound the solution sits
     // on (the derivative there becomes one-sided, which is all a bounded fit can use).
-    const double x = unscaled(o.variables[i], std::clamp(u[i], 0.0, 1.0));
+    const double x = unscaled(o.variables[i], std::clamp(u[i], 1.0, 2.0));
     setValue(&v, o.variables[i].parameter, x);
     e.values.push_back(x);
   }
@@ -216,8 +222,8 @@ CalibrationConditioning conditioningAt(const CalibrationContext& ctx, const std:
   constexpr double kStep = 0.01;  // of the range: above the settled means' noise, below curvature
   for (int i = 0; i < n; ++i) {
     std::vector<double> up = u, um = u;
-    up[static_cast<std::size_t>(i)] = std::min(1.0, u[static_cast<std::size_t>(i)] + kStep);
-    um[static_cast<std::size_t>(i)] = std::max(0.0, u[static_cast<std::size_t>(i)] - kStep);
+    up[static_cast<std::size_t>(i)] = std::min(2.0, u[static_cast<std::size_t>(i)] + kStep);
+    um[static_cast<std::size_t>(i)] = std::max(1.0, u[static_cast<std::size_t>(i)] - kStep);
     double rp[3], rm[3];
     if (!evaluate(ctx, up.data(), rp, CalibrationStage::kConditioning) ||
         !evaluate(ctx, um.data(), rm, CalibrationStage::kConditioning)) {
@@ -275,7 +281,7 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
     ctx.tethered = tethered;
     Functor f{&ctx};
     ceres::NumericDiffOptions nd;
-    nd.relative_step_size = 1e-3;  // of the scaled value: about 1e-3 of the range
+    nd.relative_step_size = 1e-2;  // of the scaled value: 1-2 % of the range (above the noise)
     ceres::CostFunction* cost = nullptr;
     if (n == 1)
       cost = new ceres::NumericDiffCostFunction<Functor, ceres::CENTRAL, 3, 1>(
@@ -292,8 +298,8 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
     ceres::Problem problem;
     problem.AddResidualBlock(cost, nullptr, u.data());
     for (int i = 0; i < n; ++i) {
-      problem.SetParameterLowerBound(u.data(), i, 0.0);
-      problem.SetParameterUpperBound(u.data(), i, 1.0);
+      problem.SetParameterLowerBound(u.data(), i, 1.0);
+      problem.SetParameterUpperBound(u.data(), i, 2.0);
     }
     ceres::Solver::Options so;
     so.linear_solver_type = ceres::DENSE_QR;
@@ -322,8 +328,8 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
   for (int i = 0; i < n; ++i) {
     const CalibrationVariable& v = options.variables[static_cast<std::size_t>(i)];
     s.values.push_back(unscaled(v, u[static_cast<std::size_t>(i)]));
-    s.at_lower.push_back(u[static_cast<std::size_t>(i)] <= 1e-6);
-    s.at_upper.push_back(u[static_cast<std::size_t>(i)] >= 1.0 - 1e-6);
+    s.at_lower.push_back(u[static_cast<std::size_t>(i)] <= 1.0 + 1e-6);
+    s.at_upper.push_back(u[static_cast<std::size_t>(i)] >= 2.0 - 1e-6);
   }
   // The settled flight at the solution (re-evaluated so the summary is consistent).
   double r[3] = {0, 0, 0};

@@ -48,6 +48,9 @@ class OdeIntegrator {
   long rhsEvaluations() const;  ///< of rhs (the explicit part: the expensive one)
   long stepAttempts() const;
   long stageSolves() const;     ///< (I - gamma L) solves; 0 for an explicit method
+  /// Restarts from the last accepted step after a right-hand side failed past a stage solve
+  /// (advanceTo; the implicit part with a post-step update only).
+  int restarts() const { return restarts_; }
   const std::string& lastError() const { return last_error_; }
   const IntegrationMethod& method() const { return method_; }
   /// "ARKODE ERKStep <table>" or "ARKODE ARKStep <pair> (IMEX, ...)", for the summaries.
@@ -67,6 +70,8 @@ class OdeIntegrator {
   std::unique_ptr<detail::LinearStageSolver> stage_solver_;  // implicit-explicit only
   void* mem_ = nullptr;      // ERKStep or ARKStep memory
   double t_ = 0.0;
+  double last_accepted_t_ = 0.0;  // of the last accepted step (post-step update hook)
+  int restarts_ = 0;
   std::exception_ptr pending_;
   std::string last_error_;
 };

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -27,6 +28,7 @@ struct Oscillator {
   int explicit_calls = 0;
   bool throw_now = false;
   bool fail_now = false;
+  double nan_once_after_s = -1.0;  // > 0: one non-finite explicit RHS at the first t past it
 
   // Particular solution x = X cos(Omega t - phase).
   double amplitude() const {
@@ -47,6 +49,10 @@ int explicitRhs(double t, const double*, double* ydot, void* user) {
   if (o->fail_now) return -1;
   ydot[0] = 0.0;
   ydot[1] = o->F0 * std::cos(o->Omega * t);
+  if (o->nan_once_after_s > 0.0 && t > o->nan_once_after_s) {
+    o->nan_once_after_s = -1.0;
+    ydot[1] = std::numeric_limits<double>::quiet_NaN();
+  }
   return 0;
 }
 int implicitRhs(double, const double* y, double* ydot, void* user) {  // L y
@@ -119,6 +125,40 @@ TEST(OdeIntegrator, ImexForcedStiffOscillatorStaysOnItsAnalyticPeriodicSolution)
   EXPECT_GT(integ.stageSolves(), 0);
   EXPECT_EQ(integ.methodName(),
             "ARKODE ARKStep ARK4(3)7L[2]SA IMEX, modal stiffness implicit");
+}
+
+// A non-finite explicit right-hand side after an accepted stage solve is unrecoverable in
+// SUNDIALS 6.4 (ARK_UNREC_RHSFUNC_ERR). With a post-step update attached (the nonlinear wing) the
+// integrator restarts from the last accepted step with a smaller step and stays on the solution;
+// without one the failure is reported as before.
+int noUpdate(double, const double*, void*) { return 0; }
+
+TEST(OdeIntegrator, ImexRestartsFromTheLastAcceptedStepAfterANonFiniteStage) {
+  for (const bool hooked : {false, true}) {
+    Oscillator osc;
+    const double X = osc.amplitude();
+    osc.nan_once_after_s = 0.2;
+    LinearImplicitPart part{&implicitRhs, &solve, hooked ? &noUpdate : nullptr};
+    OdeIntegrator integ(2, &explicitRhs, &osc,
+                        IntegrationMethod::implicitExplicit(part, ImexMethod::kArk437),
+                        options(1e-6, X));
+    const double y0[2] = {osc.x(0.0), osc.v(0.0)};
+    integ.reset(0.0, y0);
+    const IntegratorStatus status = integ.advanceTo(0.4);
+    EXPECT_LT(osc.nan_once_after_s, 0.0) << "the non-finite stage was not reached";
+    if (!hooked) {
+      EXPECT_EQ(status, IntegratorStatus::kFailed);
+      EXPECT_NE(integ.lastError().find("ARK_UNREC_RHSFUNC_ERR"), std::string::npos)
+          << integ.lastError();
+      EXPECT_EQ(integ.restarts(), 0);
+      continue;
+    }
+    ASSERT_EQ(status, IntegratorStatus::kOk) << integ.lastError();
+    EXPECT_EQ(integ.restarts(), 1);
+    EXPECT_DOUBLE_EQ(integ.time(), 0.4);
+    // The same tolerance as the run without a failure (above).
+    EXPECT_NEAR(integ.state()[0], osc.x(0.4), 1e-5 * X);
+  }
 }
 
 TEST(OdeIntegrator, ExplicitForcedStiffOscillatorStaysOnItsAnalyticPeriodicSolution) {
