@@ -11,17 +11,17 @@ set lmargin at screen 0.30
 set bmargin at screen 0.22
 set rmargin at screen 0.88
 set xrange [0.5:14.5]
-set yrange [0.5:8.5]
-set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (2.604 m/s)" 2, "tail_angle_deg (9.319 deg)" 3, "hinge_power_W (0.0958 W)" 4, "pitch_swing_deg (7.186 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5496 m)" 7, "norm_ratio_max (1.58)" 8, "CF_V_min (0.01381)" 9, "CF_V_max (0.1411)" 10, "CF_H_min (0.0221)" 11, "CF_H_max (0.02343)" 12, "CM_CG_min (0.02829)" 13, "CM_CG_max (0.02254)" 14) rotate by 40 right noenhanced font ',9'
-set ytics ("body.pitch_inertia_kgm2" 8, "kinematics.hinge_x_m" 7, "body.drag_area_m2" 6, "materials.LE1.youngs_modulus_gpa" 5, "materials.CFRP_ROD.youngs_modulus_gpa" 4, "wing.p3_aft_of_le_m" 3, "aero.suction_efficiency" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
+set yrange [0.5:9.5]
+set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (4.16 m/s)" 2, "tail_angle_deg (9.319 deg)" 3, "hinge_power_W (0.0646 W)" 4, "pitch_swing_deg (7.186 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5496 m)" 7, "norm_ratio_max (1.58)" 8, "CF_V_min (0.01901)" 9, "CF_V_max (0.258)" 10, "CF_H_min (0.04259)" 11, "CF_H_max (0.04526)" 12, "CM_CG_min (0.05643)" 13, "CM_CG_max (0.04516)" 14) rotate by 40 right noenhanced font ',9'
+set ytics ("body.pitch_inertia_kgm2" 9, "kinematics.hinge_x_m" 8, "body.drag_area_m2" 7, "materials.LE1.youngs_modulus_gpa" 6, "materials.CFRP_ROD.youngs_modulus_gpa" 5, "wing.p3_aft_of_le_m" 4, "aero.suction_efficiency" 3, "wing.skin.pretension_N_per_m" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
 unset grid
 unset key
 set cbrange [0:1]
 set palette defined (0 '#ffffff', 1 '#c0392b')
 set cblabel 'swing / largest swing of the prediction'
 set style fill solid 1.0 border rgb '#999999'
-plot 'tornado.csv' skip 2 using ($3):(9-$6):(($3)-0.5):(($3)+0.5):((9-$6)-0.5):((9-$6)+0.5):($14) with boxxyerror lc palette, \
-  'tornado.csv' skip 2 using ($3):(9-$6):(sprintf('%.2f', ($14))) with labels font ',8'
+plot 'tornado.csv' skip 2 using ($3):(10-$6):(($3)-0.5):(($3)+0.5):((10-$6)-0.5):((10-$6)+0.5):($14) with boxxyerror lc palette, \
+  'tornado.csv' skip 2 using ($3):(10-$6):(sprintf('%.2f', ($14))) with labels font ',8'
 
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
@@ -33,16 +33,16 @@ set lmargin at screen 0.30
 set bmargin at screen 0.22
 set rmargin at screen 0.88
 set xrange [0.5:14.5]
-set yrange [0.5:8.5]
-set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (2.604 m/s)" 2, "tail_angle_deg (9.319 deg)" 3, "hinge_power_W (0.0958 W)" 4, "pitch_swing_deg (7.186 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5496 m)" 7, "norm_ratio_max (1.58)" 8, "CF_V_min (0.01381)" 9, "CF_V_max (0.1411)" 10, "CF_H_min (0.0221)" 11, "CF_H_max (0.02343)" 12, "CM_CG_min (0.02829)" 13, "CM_CG_max (0.02254)" 14) rotate by 40 right noenhanced font ',9'
-set ytics ("body.pitch_inertia_kgm2" 8, "kinematics.hinge_x_m" 7, "body.drag_area_m2" 6, "materials.LE1.youngs_modulus_gpa" 5, "materials.CFRP_ROD.youngs_modulus_gpa" 4, "wing.p3_aft_of_le_m" 3, "aero.suction_efficiency" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
+set yrange [0.5:9.5]
+set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (4.16 m/s)" 2, "tail_angle_deg (9.319 deg)" 3, "hinge_power_W (0.0646 W)" 4, "pitch_swing_deg (7.186 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5496 m)" 7, "norm_ratio_max (1.58)" 8, "CF_V_min (0.01901)" 9, "CF_V_max (0.258)" 10, "CF_H_min (0.04259)" 11, "CF_H_max (0.04526)" 12, "CM_CG_min (0.05643)" 13, "CM_CG_max (0.04516)" 14) rotate by 40 right noenhanced font ',9'
+set ytics ("body.pitch_inertia_kgm2" 9, "kinematics.hinge_x_m" 8, "body.drag_area_m2" 7, "materials.LE1.youngs_modulus_gpa" 6, "materials.CFRP_ROD.youngs_modulus_gpa" 5, "wing.p3_aft_of_le_m" 4, "aero.suction_efficiency" 3, "wing.skin.pretension_N_per_m" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
 unset grid
 unset key
 set cbrange [0:1]
 set palette defined (0 '#ffffff', 1 '#c0392b')
 set cblabel 'swing / largest swing of the prediction'
 set style fill solid 1.0 border rgb '#999999'
-plot 'tornado.csv' skip 2 using ($3):(9-$6):(($3)-0.5):(($3)+0.5):((9-$6)-0.5):((9-$6)+0.5):($14) with boxxyerror lc palette, \
-  'tornado.csv' skip 2 using ($3):(9-$6):(sprintf('%.2f', ($14))) with labels font ',8'
+plot 'tornado.csv' skip 2 using ($3):(10-$6):(($3)-0.5):(($3)+0.5):((10-$6)-0.5):((10-$6)+0.5):($14) with boxxyerror lc palette, \
+  'tornado.csv' skip 2 using ($3):(10-$6):(sprintf('%.2f', ($14))) with labels font ',8'
 
 unset output

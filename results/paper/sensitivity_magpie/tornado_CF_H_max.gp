@@ -10,8 +10,8 @@ set tmargin at screen 0.91
 set xlabel "change of CF_H_max from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
 set rmargin at screen 0.96
-set yrange [0.4:8.6]
-set ytics ("aero.suction_efficiency: 0.5 .. 1 (base 0.98)" 8, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 7, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 6, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 5, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 4, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 3, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 2, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 1) noenhanced font ',9'
+set yrange [0.4:9.6]
+set ytics ("aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 9, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 8, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 3, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
 set grid noytics
 set offsets graph 0.18, graph 0.18, 0, 0
 set style fill solid 0.85 border rgb '#333333'
@@ -19,11 +19,11 @@ set key bottom right box opaque
 lo(d) = d < 0 ? d : 0
 hi(d) = d > 0 ? d : 0
 set arrow 1 from first 0, graph 0 to first 0, graph 1 nohead lw 2 lc rgb '#333333'
-plot 'tornado.csv' skip 2 every ::88::95 using (0.5*$11):(9-$4):(lo($11)):(hi($11)):((9-$4)-0.4):((9-$4)) with boxxyerror lc rgb '#2471a3' title 'parameter at the low end', \
-  'tornado.csv' skip 2 every ::88::95 using (0.5*$12):(9-$4):(lo($12)):(hi($12)):((9-$4)):((9-$4)+0.4) with boxxyerror lc rgb '#c0392b' title 'parameter at the high end', \
-  'tornado.csv' skip 2 every ::88::95 using ($11>=0?$11:1/0):((9-$4)-0.2):(sprintf('%+.3g', $11)) with labels left offset 0.5,0 font ',9' notitle, \
-  'tornado.csv' skip 2 every ::88::95 using ($12<0?$12:1/0):((9-$4)+0.2):(sprintf('%+.3g', $12)) with labels right offset -0.5,0 font ',9' notitle, \
-  'tornado.csv' skip 2 every ::88::95 using ($12>=0?$12:1/0):((9-$4)+0.2):(sprintf('%+.3g', $12)) with labels left offset 0.5,0 font ',9' notitle
+plot 'tornado.csv' skip 2 every ::99::107 using (0.5*$11):(10-$4):(lo($11)):(hi($11)):((10-$4)-0.4):((10-$4)) with boxxyerror lc rgb '#2471a3' title 'parameter at the low end', \
+  'tornado.csv' skip 2 every ::99::107 using (0.5*$12):(10-$4):(lo($12)):(hi($12)):((10-$4)):((10-$4)+0.4) with boxxyerror lc rgb '#c0392b' title 'parameter at the high end', \
+  'tornado.csv' skip 2 every ::99::107 using ($11>=0?$11:1/0):((10-$4)-0.2):(sprintf('%+.3g', $11)) with labels left offset 0.5,0 font ',9' notitle, \
+  'tornado.csv' skip 2 every ::99::107 using ($12<0?$12:1/0):((10-$4)+0.2):(sprintf('%+.3g', $12)) with labels right offset -0.5,0 font ',9' notitle, \
+  'tornado.csv' skip 2 every ::99::107 using ($12>=0?$12:1/0):((10-$4)+0.2):(sprintf('%+.3g', $12)) with labels left offset 0.5,0 font ',9' notitle
 
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
@@ -34,8 +34,8 @@ set tmargin at screen 0.91
 set xlabel "change of CF_H_max from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
 set rmargin at screen 0.96
-set yrange [0.4:8.6]
-set ytics ("aero.suction_efficiency: 0.5 .. 1 (base 0.98)" 8, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 7, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 6, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 5, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 4, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 3, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 2, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 1) noenhanced font ',9'
+set yrange [0.4:9.6]
+set ytics ("aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 9, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 8, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 3, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
 set grid noytics
 set offsets graph 0.18, graph 0.18, 0, 0
 set style fill solid 0.85 border rgb '#333333'
@@ -43,10 +43,10 @@ set key bottom right box opaque
 lo(d) = d < 0 ? d : 0
 hi(d) = d > 0 ? d : 0
 set arrow 1 from first 0, graph 0 to first 0, graph 1 nohead lw 2 lc rgb '#333333'
-plot 'tornado.csv' skip 2 every ::88::95 using (0.5*$11):(9-$4):(lo($11)):(hi($11)):((9-$4)-0.4):((9-$4)) with boxxyerror lc rgb '#2471a3' title 'parameter at the low end', \
-  'tornado.csv' skip 2 every ::88::95 using (0.5*$12):(9-$4):(lo($12)):(hi($12)):((9-$4)):((9-$4)+0.4) with boxxyerror lc rgb '#c0392b' title 'parameter at the high end', \
-  'tornado.csv' skip 2 every ::88::95 using ($11>=0?$11:1/0):((9-$4)-0.2):(sprintf('%+.3g', $11)) with labels left offset 0.5,0 font ',9' notitle, \
-  'tornado.csv' skip 2 every ::88::95 using ($12<0?$12:1/0):((9-$4)+0.2):(sprintf('%+.3g', $12)) with labels right offset -0.5,0 font ',9' notitle, \
-  'tornado.csv' skip 2 every ::88::95 using ($12>=0?$12:1/0):((9-$4)+0.2):(sprintf('%+.3g', $12)) with labels left offset 0.5,0 font ',9' notitle
+plot 'tornado.csv' skip 2 every ::99::107 using (0.5*$11):(10-$4):(lo($11)):(hi($11)):((10-$4)-0.4):((10-$4)) with boxxyerror lc rgb '#2471a3' title 'parameter at the low end', \
+  'tornado.csv' skip 2 every ::99::107 using (0.5*$12):(10-$4):(lo($12)):(hi($12)):((10-$4)):((10-$4)+0.4) with boxxyerror lc rgb '#c0392b' title 'parameter at the high end', \
+  'tornado.csv' skip 2 every ::99::107 using ($11>=0?$11:1/0):((10-$4)-0.2):(sprintf('%+.3g', $11)) with labels left offset 0.5,0 font ',9' notitle, \
+  'tornado.csv' skip 2 every ::99::107 using ($12<0?$12:1/0):((10-$4)+0.2):(sprintf('%+.3g', $12)) with labels right offset -0.5,0 font ',9' notitle, \
+  'tornado.csv' skip 2 every ::99::107 using ($12>=0?$12:1/0):((10-$4)+0.2):(sprintf('%+.3g', $12)) with labels left offset 0.5,0 font ',9' notitle
 
 unset output

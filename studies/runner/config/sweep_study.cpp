@@ -351,7 +351,8 @@ bool isAnalysisKey(const std::string& key, StudyKind run) {
 
 std::string keyUnit(const std::string& key) {
   static const std::vector<std::pair<std::string, std::string>> kUnits = {
-      {"_kgpm3", "kg/m^3"}, {"_kgm2", "kg m^2"}, {"_m2ps", "m^2/s"}, {"_mps2", "m/s^2"},
+      {"_N_per_m", "N/m"},  {"_kgpm3", "kg/m^3"}, {"_kgm2", "kg m^2"}, {"_m2ps", "m^2/s"},
+      {"_mps2", "m/s^2"},
       {"_degps", "deg/s"},  {"_mps", "m/s"},     {"_deg", "deg"},    {"_gpa", "GPa"},
       {"_hz", "Hz"},        {"_kg", "kg"},       {"_m2", "m^2"},     {"_m", "m"},
       {"_s", "s"},          {"_w", "W"},         {"_n", "N"},        {"_nm", "N m"}};
