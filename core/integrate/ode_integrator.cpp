@@ -32,6 +32,13 @@ struct OdeCallback {
     auto* self = static_cast<OdeIntegrator*>(user_data);
     return call(self, self->method_.linearPart().apply, t, y, ydot);
   }
+  // ARKODE's error and warning messages (ARKErrHandlerFn): kept for lastError().
+  static void storeError(int, const char* module, const char* function, char* msg,
+                         void* user_data) {
+    auto* self = static_cast<OdeIntegrator*>(user_data);
+    self->arkode_message_ = std::string(module ? module : "") + "::" +
+                            (function ? function : "") + ": " + (msg ? msg : "");
+  }
   // ARKODE's post-processing of an accepted step: the linear part's update (the split changes
   // between steps only; SUNDIALS 6.4 evaluates every stage of a step, the first included, after
   // this call, so no stage value of the old split is reused).
@@ -58,6 +65,7 @@ struct ArkodeStepper {
   // The method's own settings: the Butcher table(s); for ARKStep the stage solver.
   void (*configure)(void* mem, const IntegrationMethod& method, LinearStageSolver* stage_solver);
   int (*set_user_data)(void* mem, void* user_data);
+  int (*set_err_handler)(void* mem, ARKErrHandlerFn handler, void* user_data);
   int (*sv_tolerances)(void* mem, sunrealtype rel_tol, N_Vector abs_tol);
   int (*set_max_num_steps)(void* mem, long max_steps);
   int (*set_max_step)(void* mem, sunrealtype max_step);
@@ -118,6 +126,7 @@ const ArkodeStepper kErkStep{
     },
     &configureErk,
     &ERKStepSetUserData,
+    &ERKStepSetErrHandlerFn,
     &ERKStepSVtolerances,
     &ERKStepSetMaxNumSteps,
     &ERKStepSetMaxStep,
@@ -136,6 +145,7 @@ const ArkodeStepper kArkStep{
     },
     &configureArk,
     &ARKStepSetUserData,
+    &ARKStepSetErrHandlerFn,
     &ARKStepSVtolerances,
     &ARKStepSetMaxNumSteps,
     &ARKStepSetMaxStep,
@@ -206,6 +216,10 @@ void OdeIntegrator::reset(double t0, const double* y0) {
   mem_ = stepper_->create(t0, asVector(y_), asContext(context_));
   if (!mem_) throw std::runtime_error(std::string(stepper_->module) + "Create failed");
   stepper_->set_user_data(mem_, this);
+  // SUNDIALS's messages go into lastError(), not to stderr: a library call stays quiet, and a
+  // failure the integrator recovers from (the restart in advanceTo) leaves no trace on the
+  // console.
+  stepper_->set_err_handler(mem_, &OdeCallback::storeError, this);
   stepper_->sv_tolerances(mem_, opts_.rel_tol, asVector(atol_));
   stepper_->configure(mem_, method_, stage_solver_.get());
   stepper_->set_max_num_steps(mem_, opts_.max_steps);
@@ -217,6 +231,7 @@ void OdeIntegrator::reset(double t0, const double* y0) {
 IntegratorStatus OdeIntegrator::advanceTo(double tout) {
   if (!mem_) throw std::logic_error("OdeIntegrator::advanceTo before reset");
   sunrealtype t_reached = t_;
+  arkode_message_.clear();
   int flag = stepper_->evolve(mem_, tout, asVector(y_), &t_reached, ARK_NORMAL);
   detail::rethrowPending(&pending_);
   t_ = t_reached;
@@ -234,6 +249,7 @@ IntegratorStatus OdeIntegrator::advanceTo(double tout) {
     sunrealtype h_last = 0.0;
     ARKStepGetLastStep(mem_, &h_last);
     ++restarts_;
+    arkode_message_.clear();
     reset(last_accepted_t_, N_VGetArrayPointer(asVector(y_)));
     ARKStepSetInitStep(mem_, 0.1 * std::abs(h_last));
     t_reached = t_;
@@ -245,6 +261,7 @@ IntegratorStatus OdeIntegrator::advanceTo(double tout) {
     char* name = stepper_->flag_name(flag);
     last_error_ = std::string("ARKODE ") + stepper_->module + " failed at t = " +
                   std::to_string(t_reached) + " s: " + (name ? name : "unknown flag");
+    if (!arkode_message_.empty()) last_error_ += " (" + arkode_message_ + ")";
     std::free(name);
     return IntegratorStatus::kFailed;
   }

@@ -74,6 +74,7 @@ class OdeIntegrator {
   int restarts_ = 0;
   std::exception_ptr pending_;
   std::string last_error_;
+  std::string arkode_message_;  // SUNDIALS's last error message (storeError), for last_error_
 };
 
 }  // namespace orni

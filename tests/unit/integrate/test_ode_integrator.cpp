@@ -144,7 +144,9 @@ TEST(OdeIntegrator, ImexRestartsFromTheLastAcceptedStepAfterANonFiniteStage) {
                         options(1e-6, X));
     const double y0[2] = {osc.x(0.0), osc.v(0.0)};
     integ.reset(0.0, y0);
+    ::testing::internal::CaptureStderr();
     const IntegratorStatus status = integ.advanceTo(0.4);
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");  // recovered or not: quiet
     EXPECT_LT(osc.nan_once_after_s, 0.0) << "the non-finite stage was not reached";
     if (!hooked) {
       EXPECT_EQ(status, IntegratorStatus::kFailed);
@@ -203,9 +205,14 @@ TEST(OdeIntegrator, UnrecoverableFailureIsReportedNotThrownAndNamesTheStepper) {
   for (const bool imex : {true, false}) {
     StartedOscillator s(imex);
     s.osc.fail_now = true;
+    ::testing::internal::CaptureStderr();
     EXPECT_EQ(s.integ.advanceTo(0.01), IntegratorStatus::kFailed);
+    // SUNDIALS's own message is in lastError(), and nothing reaches the console.
+    EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
     const std::string stepper = imex ? "ARKODE ARKStep failed" : "ARKODE ERKStep failed";
     EXPECT_NE(s.integ.lastError().find(stepper), std::string::npos) << s.integ.lastError();
+    EXPECT_NE(s.integ.lastError().find("right-hand side"), std::string::npos)
+        << s.integ.lastError();
   }
 }
 
