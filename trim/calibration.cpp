@@ -16,6 +16,7 @@
 #include "core/model/field_table.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/cancellation.hpp"
+#include "trim/ceres_logging.hpp"
 
 namespace orni {
 
@@ -315,6 +316,7 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
     // Tethered stage: 1e-3 % of W is plenty for a starting point of the free-flight stage.
     ToleranceCallback stop(tethered ? 1e-3 : options.tolerance);
     so.callbacks.push_back(&stop);
+    quietCeresLogging();  // our summary says why the solve ended
     ceres::Solver::Summary cs;
     ceres::Solve(so, &problem, &cs);
     throwIfCancelled();  // core/model/cancellation.hpp

@@ -14,6 +14,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "core/model/frames.hpp"
+#include "trim/ceres_logging.hpp"
 
 namespace orni {
 
@@ -193,6 +194,7 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
   so.callbacks.push_back(&callback);
 
   ceres::Solver::Summary cs;
+  quietCeresLogging();  // our summary says why the solve ended
   ceres::Solve(so, &ceres_problem, &cs);
   throwIfCancelled();  // core/model/cancellation.hpp: the solve above stopped early for it
 

@@ -220,7 +220,11 @@ TEST(TrimAnalytic, FailureAtTheInitialGuessIsReported) {
     e.message = "integrator failure (test)";
     return e;
   };
+  ::testing::internal::CaptureStderr();
   const TrimSummary s = solveTrim(kRef, failing, analyticOptions());
+  // Ceres's own log line ("Terminating: Residual and Jacobian evaluation failed") stays off the
+  // console: the summary says it.
+  EXPECT_EQ(::testing::internal::GetCapturedStderr(), "");
   EXPECT_EQ(s.status, TrimStatus::kNotConverged);
   EXPECT_EQ(s.termination, TrimTermination::kSimulationFailure);
   EXPECT_NE(s.message.find("integrator failure (test)"), std::string::npos) << s.message;
