@@ -214,7 +214,8 @@ namespace {
 // The Jacobian of the settled flight at the solution by central differences of 1 % of each range
 // (one-sided at a bound), its singular values in band-per-range units and the half-width each
 // value is determined to (calibration.hpp).
-CalibrationConditioning conditioningAt(const CalibrationContext& ctx, const std::vector<double>& u) {
+CalibrationConditioning conditioningAt(const CalibrationContext& ctx,
+                                       const std::vector<double>& u) {
   const CalibrationOptions& o = *ctx.options;
   const int n = static_cast<int>(u.size());
   CalibrationConditioning k;
@@ -228,7 +229,8 @@ CalibrationConditioning conditioningAt(const CalibrationContext& ctx, const std:
     double rp[3], rm[3];
     if (!evaluate(ctx, up.data(), rp, CalibrationStage::kConditioning) ||
         !evaluate(ctx, um.data(), rm, CalibrationStage::kConditioning)) {
-      k.message = "a conditioning flight of " + keyOf(o.variables[static_cast<std::size_t>(i)].parameter) +
+      k.message = "a conditioning flight of " +
+                  keyOf(o.variables[static_cast<std::size_t>(i)].parameter) +
                   " did not settle: " + ctx.log->back().settled.message;
       return k;
     }
@@ -275,7 +277,7 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
   const auto t0 = std::chrono::steady_clock::now();
   CalibrationSummary s;
   const int n = static_cast<int>(options.variables.size());
-  std::vector<double> u;  // scaled to [0, 1] of each range
+  std::vector<double> u;  // scaled to [1, 2] of each range (unscaled/scaled above)
   for (const CalibrationVariable& v : options.variables) u.push_back(scaled(v, v.initial));
   CalibrationContext ctx{&base, &options, &s.log};
   auto solve = [&](bool tethered) {

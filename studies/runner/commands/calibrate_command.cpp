@@ -62,7 +62,8 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
 
   orni::VehicleModel calibrated = study.vehicle;
   JsonObject values;
-  std::vector<JsonObject> fitted;  // every value with its range, its source and how well the target fixes it
+  // Every value with its range, its source and how well the target fixes it.
+  std::vector<JsonObject> fitted;
   const orni::CalibrationConditioning& k = s.conditioning;
   for (std::size_t i = 0; i < o.variables.size(); ++i) {
     const orni::CalibrationVariable& v = o.variables[i];
