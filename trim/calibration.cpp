@@ -91,6 +91,7 @@ bool evaluate(const CalibrationContext& c, const double* u, double* r,
     }
     const FlightCoreModel model(v, FlightCoreModel::Checks::kRequired, c.modal_wings.get());
     SimulationOptions sim;
+    sim.rel_tol = settledFlightRelTol(model);
     e.settled = settledFreeFlight(model, o.target, sim, o.settled);
   } catch (const std::exception& ex) {
     e.settled.ok = false;

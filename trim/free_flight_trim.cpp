@@ -58,6 +58,16 @@ class SettlingMonitor final : public FreeFlightObserver {
 
   int cycles() const { return static_cast<int>(theta_.size()); }
 
+  static bool clean(const SlowMultiplierFit& f) {
+    return f.ok && f.relative_residual <= kCleanFitResidual;
+  }
+  // The `count` cycle means of y that end with cycle `last`.
+  static std::vector<double> tail(const std::vector<double>& y, std::size_t last,
+                                  std::size_t count) {
+    return std::vector<double>(y.begin() + static_cast<std::ptrdiff_t>(last - count),
+                               y.begin() + static_cast<std::ptrdiff_t>(last));
+  }
+
   // The means over the window that ends with cycle `cycle` (>= window_cycles) and the settling
   // test: the slowest motion fitted over the flight's second half (at least the window); with a
   // clean decaying fit, the window's means against the values it predicts; without one, the
@@ -95,20 +105,21 @@ class SettlingMonitor final : public FreeFlightObserver {
     const double tol = options_.settled_tol_rad;
 
     const std::size_t fitted = std::max(static_cast<std::size_t>(W), last / 2);
-    auto tail = [&](const std::vector<double>& y) {
-      return std::vector<double>(y.begin() + (last - fitted), y.begin() + last);
-    };
-    r.slow = fitSlowMultipliers(tail(theta_));
-    if (r.slow.ok && r.slow.relative_residual <= kCleanFitResidual) {
+    r.window_theta_rad = r.theta_mean_rad;
+    r.window_airspeed_mps = r.airspeed_mps;
+    r.window_climb_angle_rad = r.climb_angle_rad;
+    r.slow = fitSlowMultipliers(tail(theta_, last, fitted));
+    if (clean(r.slow)) {
       r.unstable = r.slow.modulus >= 1.0;
       if (!r.unstable) {
         r.settled_theta_rad = r.slow.limit;
-        r.settled_airspeed_mps = settledValue(r.slow, tail(airspeed_));
-        r.settled_climb_angle_rad = settledValue(r.slow, tail(climb_));
+        r.settled_airspeed_mps = settledValue(r.slow, tail(airspeed_, last, fitted));
+        r.settled_climb_angle_rad = settledValue(r.slow, tail(climb_, last, fitted));
         r.remaining = std::max({std::abs(r.theta_mean_rad - r.settled_theta_rad),
                                 std::abs(r.airspeed_mps / r.settled_airspeed_mps - 1.0),
                                 std::abs(r.climb_angle_rad - r.settled_climb_angle_rad)});
         r.ok = finite && r.remaining <= tol;  // NaN fails
+        if (!r.ok && options_.extrapolate) extrapolate(last, fitted, finite, &r);
       }
     } else {
       r.ok = finite && r.theta_band_rad <= tol && r.airspeed_band <= tol && r.climb_band_rad <= tol;
@@ -117,6 +128,29 @@ class SettlingMonitor final : public FreeFlightObserver {
   }
 
  private:
+  // SettledFlightOptions::extrapolate: the second fit, over the last third (at least 16 cycles,
+  // at most the first fit's stretch), and the two fixed points' agreement. On agreement the
+  // first fit's fixed point (the longer stretch: less noise) becomes the settled means.
+  void extrapolate(std::size_t last, std::size_t fitted, bool finite, SettledFlight* r) const {
+    const std::size_t third = std::min(fitted, std::max<std::size_t>(16, last / 3));
+    if (third == fitted) return;  // no second stretch to confirm with
+    const SlowMultiplierFit b = fitSlowMultipliers(tail(theta_, last, third));
+    if (!clean(b) || !(b.modulus < 1.0)) return;
+    const double theta_b = b.limit;
+    const double airspeed_b = settledValue(b, tail(airspeed_, last, third));
+    const double climb_b = settledValue(b, tail(climb_, last, third));
+    r->extrapolation_spread =
+        std::max({std::abs(r->settled_theta_rad - theta_b),
+                  std::abs(r->settled_airspeed_mps / airspeed_b - 1.0),
+                  std::abs(r->settled_climb_angle_rad - climb_b)});
+    if (!(finite && r->extrapolation_spread <= options_.settled_tol_rad)) return;  // NaN fails
+    r->ok = true;
+    r->extrapolated = true;
+    r->theta_mean_rad = r->settled_theta_rad;
+    r->airspeed_mps = r->settled_airspeed_mps;
+    r->climb_angle_rad = r->settled_climb_angle_rad;
+  }
+
   int spc_;
   double freq_hz_;
   SettledFlightOptions options_;
@@ -232,6 +266,19 @@ SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoi
     r.cycles_flown = flown;
     const std::string slow = slowMotionText(r, period_s);
     char buf[600];
+    if (s.status == SimulationStatus::kOk && r.ok && r.extrapolated) {
+      std::snprintf(buf, sizeof buf,
+                    "settled means predicted after %d cycles by the decay of the slowest motion "
+                    "(fits over the flight's second half and last third agree to %.4f deg): "
+                    "theta %.3f deg, airspeed %.3f m/s, climb angle %.3f deg (the last %d "
+                    "cycles: theta %.3f deg, climb angle %.3f deg)%s%s",
+                    flown, r.extrapolation_spread * kRadToDeg, r.theta_mean_rad * kRadToDeg,
+                    r.airspeed_mps, r.climb_angle_rad * kRadToDeg, options.window_cycles,
+                    r.window_theta_rad * kRadToDeg, r.window_climb_angle_rad * kRadToDeg,
+                    slow.empty() ? "" : "; the slowest motion ", slow.c_str());
+      r.message = buf;
+      return r;
+    }
     if (s.status == SimulationStatus::kOk && r.ok) {
       std::snprintf(buf, sizeof buf,
                     "settled means over the last %d of %d cycles: theta %.3f deg, airspeed %.3f "
@@ -317,6 +364,11 @@ SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoi
     r.message = ex.what();
   }
   return r;
+}
+
+double settledFlightRelTol(const FlightCoreModel& model) {
+  const bool nonlinear = model.flexible != nullptr && model.flexible->nonlinear();
+  return nonlinear ? 1e-5 : SimulationOptions{}.rel_tol;
 }
 
 FreeFlightTrim solveFreeFlightTrim(const FlightCoreModel& model, const OperatingPoint& start,

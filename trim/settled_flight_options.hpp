@@ -17,6 +17,13 @@ struct SettledFlightOptions {
   /// cycles in all (at least `cycles`): the slowest motion, the phugoid, may need several times
   /// `cycles` (the committed magpie: Floquet multiplier 0.985 a cycle, e-folding in 66 cycles).
   int max_cycles = 1200;
+  /// Stop as soon as the values the flight settles to are known, not when it has flown there:
+  /// when the slowest motion fitted over the flight's second half and over its last third
+  /// (both clean and decaying) predict the same settled theta, airspeed and climb angle within
+  /// settled_tol_rad, those predictions are the settled means (SettledFlight::extrapolated).
+  /// Two fits over stretches of different transient amplitude agree only where the motion left
+  /// is the linear decay the fit assumes. false: fly until the window's means are there.
+  bool extrapolate = true;
 };
 
 }  // namespace orni

@@ -310,7 +310,8 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
                             options);
   if (options.refine_in_free_flight && s.converged) {
     // Stage 2: level settled free flight from the Eq. (4) trim (free_flight_trim.hpp).
-    SimulationOptions sim;  // default tolerances for the free flights
+    SimulationOptions sim;  // default tolerances for the free flights, tighter for the
+    sim.rel_tol = settledFlightRelTol(model);  // nonlinear wing (free_flight_trim.hpp)
     FreeFlightTrimOptions fo;
     fo.settled.cycles = options.refine_cycles;
     fo.settled.window_cycles = std::max(1, options.refine_cycles / 3);
