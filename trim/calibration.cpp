@@ -83,6 +83,20 @@ bool evaluate(const CalibrationContext& c, const double* u, double* r,
     setValue(&v, o.variables[i].parameter, x);
     e.values.push_back(x);
   }
+  // Ceres evaluates some points twice (a Jacobian's centre after a rejected step); runs are
+  // deterministic, so an earlier run at the same values and kind is reused, not flown again
+  // (logged again, so the log still lists every evaluation Ceres asked for).
+  for (const CalibrationEvaluation& earlier : *c.log) {
+    if (earlier.values != e.values ||
+        (earlier.stage == CalibrationStage::kTethered) != c.tethered)
+      continue;
+    const CalibrationStage kind = e.stage;
+    e = earlier;
+    e.stage = kind;
+    record(c, e);
+    for (int i = 0; i < 3; ++i) r[i] = e.residual[i];
+    return e.settled.ok;
+  }
   try {
     if (c.tethered) {
       const bool ok = evaluateTethered(c, v, r, &e);

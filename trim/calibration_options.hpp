@@ -59,8 +59,9 @@ struct CalibrationOptions {
   std::vector<CalibrationVariable> variables;  ///< 1-4, distinct, lower <= initial <= upper
   OperatingPoint target;                       ///< published trim point (theta, U, tail, f)
   SettledFlightOptions settled;                ///< free flights of each evaluation
-  double tolerance = 0.01;  ///< converged when |theta err| <= tol deg, |U err| <= tol m/s, |climb
-                            ///< angle| <= tol deg
+  /// Converged when the residual vector (theta error in deg, U error in 0.1 m/s, climb angle in
+  /// deg) has a norm <= tol: each |theta err| <= tol deg, |U err| <= 0.1 tol m/s, |climb| <= tol.
+  double tolerance = 0.01;
   int max_iterations = 20;
   /// First solve the cheaper Eq. (4) version (tethered cycle means in equilibrium at the target)
   /// from the initial values, then the free-flight one from its result: the settled free flight

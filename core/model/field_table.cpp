@@ -450,9 +450,13 @@ std::vector<FieldSpec> makeTable() {
       integer("calibrate.window_cycles", R::closed(1, 9999), "settled_cycles / 3",
               "averaged last cycles", {}, "< calibrate.settled_cycles"),
       // 10 deg or 10 m/s: a calibration looser than that says nothing.
-      number("calibrate.tolerance", "deg, m/s", 1.0, R::openClosed(0.0, 10.0), "0.01",
-             "converged when theta, U and climb angle errors are within it"),
+      number("calibrate.tolerance", "deg, 0.1 m/s", 1.0, R::openClosed(0.0, 10.0), "0.01",
+             "converged when the theta and climb angle errors (deg) and the U error (in 0.1 m/s: "
+             "0.01 holds U to 1 mm/s) are within it"),
       integer("calibrate.max_iterations", R::closed(1, 200), "20", "solver iterations"),
+      boolean("calibrate.tethered_first", "true",
+              "first fit Eq. (4)'s tethered means at the target, then the settled free flight "
+              "from there"),
       table("calibrate.variables", "required", "[[calibrate.variables]]: 1 to 4 vehicle values"),
       text("calibrate.variables[].key", "required",
            "wing.member_diameter_scale, body.drag_area_m2, kinematics.hinge_x_m, "

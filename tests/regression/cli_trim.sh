@@ -47,7 +47,7 @@ check "resolved study is a fixed point" cmp -s "$out/study.resolved.toml" "$scra
 check "same inputs give the same evaluations" cmp -s "$out/trim_iterations.csv" "$scratch/resolved/trim_iterations.csv"
 check "plot redraws the convergence figure" "$bin" plot "$out"
 
-# Regression on the committed prediction (results/paper/table3_trim): the 12 Hz trim of the honest
+# Regression on the committed prediction (results/paper/trim_magpie): the 12 Hz trim of the honest
 # vehicle (issue 13) is theta 13.56 +- 0.1 deg, U 18.02 +- 0.05 m/s, tail 16.59 +- 0.1 deg (the
 # periodic orbit of `trim --method periodic`; measured 13.562, 18.017, 16.588; 16.21, 16.50, 19.74
 # before the strip loads went on at the quarter chord as a flat plate's nodal loads; 16.35, 16.32,

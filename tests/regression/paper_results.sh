@@ -27,14 +27,16 @@
 #
 # Which studies: every paper study but the optimisation and the sensitivity study (measured on
 # the 2-core machine, -j 2: together ~50 s: the two sweeps ~15 s each, the rest a few s);
-# optimize_magpie and sensitivity_magpie (minutes) are left to results/regenerate.sh.
+# optimize_magpie and sensitivity_magpie (minutes) are left to results/regenerate.sh, and
+# table3_trim (the calibrated vehicle's nonlinear-wing trim, ~2.5 min) to tests/regression/
+# setup_main.sh, whose main run compares it with its baseline (and checks it against Table 3).
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
 root=$(cd "$root" && pwd)
 rm -rf "$scratch"; mkdir -p "$scratch"
 tool=${ORNI_RESULTS:-$(dirname "$bin")/../tools/orni_results}
 fast=(fig2_rfw_theta0 fig2_rfw_theta20 fig2_rfw_flexible_theta0 fig2_rfw_flexible_theta20
-      fig5_efw_aeromap fig5_efw_aeromap_wing_only table3_trim fig6_8_free_flight
+      fig5_efw_aeromap fig5_efw_aeromap_wing_only trim_magpie fig6_8_free_flight
       fig9_constrained_flight_test placement_sweep_magpie sweep_tail_arm_area)
 rel=1e-2
 abs_scale=2e-3
@@ -53,7 +55,7 @@ done
 st="$scratch/selftest"
 mkdir -p "$st/base" "$st/same" "$st/small" "$st/big" "$st/nan"
 for d in base same small big nan; do
-  cp -r "$base/fig5_efw_aeromap" "$base/table3_trim" "$st/$d/"
+  cp -r "$base/fig5_efw_aeromap" "$base/trim_magpie" "$st/$d/"
 done
 cmp_() { "$tool" compare "$@" --rel "$rel" --abs-scale "$abs_scale" --report 3 > "$st/last.log" 2>&1; }
 # perturb FILE COLUMN FACTOR OFFSET: the column's first data cell becomes v*FACTOR + OFFSET
@@ -65,14 +67,14 @@ perturb() {
 }
 perturb "$st/small/fig5_efw_aeromap/aeromap.csv" FV_mean_N 1.001 0
 perturb "$st/big/fig5_efw_aeromap/aeromap.csv" FV_mean_N 1 0.1
-sed -i -E 's/("theta_mean_deg": )([-0-9.e]+)/\1null/' "$st/nan/table3_trim/summary.json"
+sed -i -E 's/("theta_mean_deg": )([-0-9.e]+)/\1null/' "$st/nan/trim_magpie/summary.json"
 cmp_ "$st/base" "$st/same";  check "comparer: identical folders pass" test $? -eq 0
 cmp_ "$st/base" "$st/small"; check "comparer: a 1e-3 relative change passes" test $? -eq 0
 cmp_ "$st/base" "$st/big";   r=$?
 check "comparer: +0.1 N on one aeromap cell (~6x its tolerance) fails" test $r -eq 1
 check "comparer: ... and names the cell" grep -q 'FAIL .*aeromap.csv: row 1, FV_mean_N' "$st/last.log"
 cmp_ "$st/base" "$st/nan";   check "comparer: a NaN (null) trim angle fails" test $? -eq 1
-rm "$st/same/table3_trim/trim_progress.csv"
+rm "$st/same/trim_magpie/trim_progress.csv"
 cmp_ "$st/base" "$st/same";  check "comparer: a missing CSV fails" test $? -eq 1
 
 # --- re-run the fast studies and compare ----------------------------------------------------

@@ -8,7 +8,7 @@ using orni::field;
 
 std::vector<std::string> calibrateSectionKeys() {
   return {"theta_mean_deg", "speed_mps", "tail_angle_deg", "freq_hz", "settled_cycles",
-          "window_cycles",  "tolerance", "max_iterations", "variables"};
+          "window_cycles",  "tolerance", "max_iterations", "tethered_first", "variables"};
 }
 
 orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::VehicleModel& vehicle,
@@ -32,6 +32,7 @@ orni::CalibrationOptions readCalibrateSection(TableReader& c, const orni::Vehicl
                        sourceText(*c.table().get("window_cycles")));
   o.tolerance = c.optionalDouble(field("calibrate.tolerance"), o.tolerance);
   o.max_iterations = c.optionalInt(field("calibrate.max_iterations"), o.max_iterations);
+  o.tethered_first = c.optionalBool("tethered_first", o.tethered_first);
   std::vector<TableReader> vars =
       c.optionalTableArray("variables", {"key", "initial", "lower", "upper", "source"});
   if (vars.empty() || vars.size() > 4)
@@ -78,6 +79,7 @@ void writeCalibrateSection(const orni::CalibrationOptions& o, TomlWriter& out) {
   out.integer("window_cycles", o.settled.window_cycles);
   out.number("tolerance", o.tolerance);
   out.integer("max_iterations", o.max_iterations);
+  out.boolean("tethered_first", o.tethered_first);
   for (const orni::CalibrationVariable& v : o.variables) {
     out.arrayHeader({"calibrate", "variables"});
     out.string("key", orni::keyOf(v.parameter));

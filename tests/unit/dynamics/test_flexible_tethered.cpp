@@ -187,7 +187,7 @@ TEST(DynamicsFlexibleTethered, InertialStiffnessModelsDifferByTheirMatrices) {
 // Issue 3, acceptance 4: the cycle means of the committed magpie at its trim point change by less
 // than 1 % when the mode count doubles and when the mesh size halves. The point is the honest
 // vehicle's 12 Hz trim as first committed (theta 16.35 deg, U 16.32 m/s, tail 19.98 deg; the
-// refined trim is now 13.56 deg, 18.02 m/s, 16.59 deg, results/paper/table3_trim, after the
+// refined trim is now 13.56 deg, 18.02 m/s, 16.59 deg, results/paper/trim_magpie, after the
 // quarter-chord strip-load coupling), where the mean FV carried the weight. The scale of every force channel is that mean FV
 // (about W): at a trim, FH is a residue near zero and against itself no tolerance means anything.
 // The pitching moment against FV c_mean, the scale the trim's residual uses (trim/). Measured

@@ -23,7 +23,7 @@ constexpr double kImexVsReferenceTol = 1e-4;
 constexpr double kStageSolveTol = 1e-12;
 
 // The committed magpie at its 12 Hz trim as first committed (16.35 deg, 16.32 m/s, 19.98 deg; now
-// 13.56 deg, 18.02 m/s, 16.59 deg, results/paper/table3_trim, after the quarter-chord strip-load
+// 13.56 deg, 18.02 m/s, 16.59 deg, results/paper/trim_magpie, after the quarter-chord strip-load
 // coupling: a nearby flight regime).
 VehicleModel magpieAtTrim() { return testing::magpieVehicle(); }
 OperatingPoint magpieTrimPoint() {

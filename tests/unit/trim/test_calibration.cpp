@@ -25,7 +25,7 @@ TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   t.initial = testing::magpieDesignPoint();
   t.initial.freq_hz = 12.0;
   t.initial.theta_rad = 15.0 * kDegToRad;  // near its trim (13.56 deg, 18.02 m/s, 16.59 deg:
-                                           // results/paper/table3_trim)
+                                           // results/paper/trim_magpie)
   t.initial.speed_mps = 15.0;
   t.initial.tail_angle_rad = 18.0 * kDegToRad;
   t.verify_free_flight = false;

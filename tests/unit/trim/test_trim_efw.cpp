@@ -2,7 +2,7 @@
 // 13, Table 1's wing read literally, one fitted discrete choice) at the paper's 12 Hz: the residual
 // is the core's cycle means minus the weight; the Eq. (4) stage re-evaluated with an independent,
 // tighter simulation is in equilibrium to 1e-4 W; the free-flight refined trim is the vehicle's
-// committed prediction (results/paper/table3_trim) and flies bounded; three initial guesses find
+// committed prediction (results/paper/trim_magpie) and flies bounded; three initial guesses find
 // the same trim; impossible requests end not_converged with a reason. The honest vehicle does not
 // trim at the paper's Table 3 point (theta 9.2 deg, U 10.8 m/s, tail 11.85 deg): its wing makes
 // more thrust than its small drag needs there (results/README.md, the literal-wing
@@ -29,7 +29,7 @@ constexpr double kEquilibriumFraction = 1e-4;
 constexpr double kSameTrimDeg = 0.05;
 constexpr double kSameTrimSpeed = 0.02;
 constexpr double kTrimFreqHz = 12.0;
-// The honest vehicle's committed 12 Hz trim (results/paper/table3_trim/summary.json) and how far a
+// The honest vehicle's committed 12 Hz trim (results/paper/trim_magpie/summary.json) and how far a
 // change may move it before this regression fails: a few times the multi-start spread above, far
 // below any physical change (0.5 deg, 0.3 m/s, 0.5 deg are issue 13's bounds for Table 3). It is
 // the periodic orbit of test_periodic_trim.cpp (13.558 deg, 18.022 m/s, 16.584 deg; measured here
