@@ -57,6 +57,11 @@ bool evaluateTethered(const CalibrationContext& c, const VehicleModel& v, double
   return e->settled.ok;
 }
 
+// A value whose component along a null direction of the scaled Jacobian exceeds this is reported
+// undetermined (CalibrationConditioning::null_component): the null direction is mostly that
+// value. Below it the value is determined up to that component times the free value's travel.
+constexpr double kUndeterminedComponent = 0.5;
+
 // A value from its position u in [1, 2] of the variable's range, u = 1 at the lower bound (the
 // solver's unknowns: Ceres steps its central differences by a fraction of |u|, so 1-2 % of each
 // range whatever the value's size, never a vanishing step at a bound at zero; a drag area of
@@ -234,7 +239,6 @@ CalibrationConditioning conditioningAt(const CalibrationContext& ctx,
   const CalibrationOptions& o = *ctx.options;
   const int n = static_cast<int>(u.size());
   CalibrationConditioning k;
-  const double band[3] = {o.band.theta_deg, o.band.speed_mps / 0.1, o.band.climb_deg};
   Eigen::MatrixXd J(3, n);  // residual units (deg, 0.1 m/s, deg) per scaled value
   constexpr double kStep = 0.01;  // of the range: above the settled means' noise, below curvature
   for (int i = 0; i < n; ++i) {
@@ -252,8 +256,21 @@ CalibrationConditioning conditioningAt(const CalibrationContext& ctx,
     const double du = up[static_cast<std::size_t>(i)] - um[static_cast<std::size_t>(i)];
     for (int j = 0; j < 3; ++j) J(j, i) = (rp[j] - rm[j]) / du;
   }
+  return conditioningOfJacobian(J, o.variables, o.band);
+}
+}  // namespace
+
+CalibrationConditioning conditioningOfJacobian(const Eigen::MatrixXd& J,
+                                               const std::vector<CalibrationVariable>& variables,
+                                               const CalibrationBand& calibration_band) {
+  const int n = static_cast<int>(J.cols());
+  if (J.rows() != 3 || n != static_cast<int>(variables.size()) || n < 1)
+    throw std::invalid_argument("conditioningOfJacobian: expected a 3 x n Jacobian, n values");
+  CalibrationConditioning k;
+  const double band[3] = {calibration_band.theta_deg, calibration_band.speed_mps / 0.1,
+                          calibration_band.climb_deg};
   for (int i = 0; i < n; ++i) {
-    const CalibrationVariable& v = o.variables[static_cast<std::size_t>(i)];
+    const CalibrationVariable& v = variables[static_cast<std::size_t>(i)];
     const double range = v.upper - v.lower;
     k.jacobian.push_back({J(0, i) / range, J(1, i) * 0.1 / range, J(2, i) / range});
   }
@@ -274,17 +291,19 @@ CalibrationConditioning conditioningAt(const CalibrationContext& ctx,
   Eigen::MatrixXd pinv = Eigen::MatrixXd::Zero(n, 3);
   for (int r = 0; r < rank; ++r) pinv += V.col(r) * U.col(r).transpose() / sv(r);
   for (int i = 0; i < n; ++i) {
-    const CalibrationVariable& v = o.variables[static_cast<std::size_t>(i)];
-    bool null_part = false;
-    for (int r = rank; r < n; ++r) null_part = null_part || std::abs(V(i, r)) > 1e-6;
+    const CalibrationVariable& v = variables[static_cast<std::size_t>(i)];
+    double null_part = 0.0;
+    for (int r = rank; r < n; ++r) null_part = std::max(null_part, std::abs(V(i, r)));
     // pinv maps band-scaled residuals (a box of half-width 1) to scaled values.
     const double half = pinv.row(i).cwiseAbs().sum() * (v.upper - v.lower);
-    k.determined_within.push_back(null_part ? std::numeric_limits<double>::infinity() : half);
+    k.null_component.push_back(null_part);
+    k.determined_within.push_back(null_part > kUndeterminedComponent
+                                      ? std::numeric_limits<double>::infinity()
+                                      : half);
   }
   k.ok = true;
   return k;
 }
-}  // namespace
 
 CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions& options) {
   std::string why;

@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 #include "trim/calibration_options.hpp"
@@ -41,7 +43,23 @@ struct CalibrationConditioning {
   /// anywhere inside the band, the others re-fitted (sum_j |J^+_ij| band_j); inf along a null
   /// direction (more values than the target determines).
   std::vector<double> determined_within;
+  /// Per value: its largest component (range-scaled, of a unit vector) along a null direction of
+  /// the scaled Jacobian; 0 when the fit is fully determined. With more values than residuals
+  /// the null direction says which value the target leaves free: a component above 0.5 makes the
+  /// value undetermined (determined_within inf), one below leaves it determined to within
+  /// determined_within by the least-norm solution, plus that component times how far the free
+  /// value may move.
+  std::vector<double> null_component;
 };
+
+/// The conditioning of a fit from its Jacobian J (3 x n: theta error in deg, speed error in 0.1
+/// m/s, climb angle in deg, per value scaled to its range, i.e. per unit of u in [1, 2]): the
+/// per-unit Jacobian, the singular values of J with its rows divided by the band, the condition
+/// number, each value's null_component and determined_within. Throws std::invalid_argument for a
+/// J that is not 3 x variables.size().
+CalibrationConditioning conditioningOfJacobian(const Eigen::MatrixXd& J,
+                                               const std::vector<CalibrationVariable>& variables,
+                                               const CalibrationBand& band);
 
 struct CalibrationSummary {
   bool converged = false;

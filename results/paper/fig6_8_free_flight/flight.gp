@@ -4,7 +4,7 @@ set grid lc rgb '#dddddd'
 set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'flight.png.tmp'
-set multiplot layout 3,2 columnsfirst title "fig6_8_free_flight (free flight): U0 = 18.0169 m/s, f = 12 Hz, theta0 = 13.5616 deg, tail = 16.5875 deg" noenhanced font ',12'
+set multiplot layout 3,2 columnsfirst title "fig6_8_free_flight (free flight): U0 = 18.0212 m/s, f = 12 Hz, theta0 = 13.5605 deg, tail = 16.5849 deg" noenhanced font ',12'
 set key off
 set grid
 set xlabel 'time (s)'
@@ -29,7 +29,7 @@ unset multiplot
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'flight.svg.tmp'
-set multiplot layout 3,2 columnsfirst title "fig6_8_free_flight (free flight): U0 = 18.0169 m/s, f = 12 Hz, theta0 = 13.5616 deg, tail = 16.5875 deg" noenhanced font ',12'
+set multiplot layout 3,2 columnsfirst title "fig6_8_free_flight (free flight): U0 = 18.0212 m/s, f = 12 Hz, theta0 = 13.5605 deg, tail = 16.5849 deg" noenhanced font ',12'
 set key off
 set grid
 set xlabel 'time (s)'

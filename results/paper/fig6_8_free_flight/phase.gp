@@ -4,7 +4,7 @@ set grid lc rgb '#dddddd'
 set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'phase.png.tmp'
-set title "fig6_8_free_flight (free flight): U0 = 18.0169 m/s, f = 12 Hz, theta0 = 13.5616 deg, tail = 16.5875 deg" noenhanced font ',12'
+set title "fig6_8_free_flight (free flight): U0 = 18.0212 m/s, f = 12 Hz, theta0 = 13.5605 deg, tail = 16.5849 deg" noenhanced font ',12'
 set key off
 set grid
 set xlabel '{/Symbol q} (deg)'
@@ -14,7 +14,7 @@ plot 'histories.csv' skip 2 using ($1 >= 1 ? $5 : 1/0):8 with lines lc rgb '#8e4
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'phase.svg.tmp'
-set title "fig6_8_free_flight (free flight): U0 = 18.0169 m/s, f = 12 Hz, theta0 = 13.5616 deg, tail = 16.5875 deg" noenhanced font ',12'
+set title "fig6_8_free_flight (free flight): U0 = 18.0212 m/s, f = 12 Hz, theta0 = 13.5605 deg, tail = 16.5849 deg" noenhanced font ',12'
 set key off
 set grid
 set xlabel '{/Symbol q} (deg)'

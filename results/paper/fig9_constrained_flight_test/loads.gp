@@ -4,7 +4,7 @@ set grid lc rgb '#dddddd'
 set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'loads.png.tmp'
-set multiplot layout 4,1 title "fig9_constrained_flight_test (tethered): U = 18.0169 m/s, f = 12 Hz, theta = 13.5616 deg, cycles 8-10 of 10 (shaded: downstroke)" noenhanced font ',13'
+set multiplot layout 4,1 title "fig9_constrained_flight_test (tethered): U = 18.0212 m/s, f = 12 Hz, theta = 13.5605 deg, cycles 8-10 of 10 (shaded: downstroke)" noenhanced font ',13'
 set lmargin 12
 set rmargin 22
 set key outside right top vertical Left reverse
@@ -28,7 +28,7 @@ unset multiplot
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'loads.svg.tmp'
-set multiplot layout 4,1 title "fig9_constrained_flight_test (tethered): U = 18.0169 m/s, f = 12 Hz, theta = 13.5616 deg, cycles 8-10 of 10 (shaded: downstroke)" noenhanced font ',13'
+set multiplot layout 4,1 title "fig9_constrained_flight_test (tethered): U = 18.0212 m/s, f = 12 Hz, theta = 13.5605 deg, cycles 8-10 of 10 (shaded: downstroke)" noenhanced font ',13'
 set lmargin 12
 set rmargin 22
 set key outside right top vertical Left reverse

@@ -4,7 +4,7 @@ set grid lc rgb '#dddddd'
 set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'zmp.png.tmp'
-set multiplot title "fig9_constrained_flight_test - constrained flight test (tethered): theta = 13.5616 deg, f = 12 Hz, U = 18.0169 m/s, tail = 16.5875 deg, cycle 10" noenhanced font ',13'
+set multiplot title "fig9_constrained_flight_test - constrained flight test (tethered): theta = 13.5605 deg, f = 12 Hz, U = 18.0212 m/s, tail = 16.5849 deg, cycle 10" noenhanced font ',13'
 set lmargin 13
 set rmargin 12
 set tmargin 0.5
@@ -48,7 +48,7 @@ set key outside below center horizontal maxrows 2 box font ',10'
 set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'
 set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'
 set label 3 'gaps: no ZMP where |C_{F,normal}| < 10 % of its maximum' at graph 0.99, graph 0.06 right font ',9'
-plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.157109 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0333042 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
+plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.15717 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0332978 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
 unset label 1
 unset label 2
 unset label 3
@@ -57,7 +57,7 @@ unset multiplot
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'zmp.svg.tmp'
-set multiplot title "fig9_constrained_flight_test - constrained flight test (tethered): theta = 13.5616 deg, f = 12 Hz, U = 18.0169 m/s, tail = 16.5875 deg, cycle 10" noenhanced font ',13'
+set multiplot title "fig9_constrained_flight_test - constrained flight test (tethered): theta = 13.5605 deg, f = 12 Hz, U = 18.0212 m/s, tail = 16.5849 deg, cycle 10" noenhanced font ',13'
 set lmargin 13
 set rmargin 12
 set tmargin 0.5
@@ -101,7 +101,7 @@ set key outside below center horizontal maxrows 2 box font ',10'
 set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'
 set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'
 set label 3 'gaps: no ZMP where |C_{F,normal}| < 10 % of its maximum' at graph 0.99, graph 0.06 right font ',9'
-plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.157109 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0333042 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
+plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.15717 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0332978 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
 unset label 1
 unset label 2
 unset label 3

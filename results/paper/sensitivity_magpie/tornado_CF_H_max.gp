@@ -5,7 +5,7 @@ set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'tornado_CF_H_max.png.tmp'
 set label 101 "sensitivity_magpie: CF_H_max (constrained flight test: maximum of C_F,H)" at screen 0.5, 0.975 center noenhanced font ',13'
-set label 102 "base vehicle: 0.05445; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
+set label 102 "base vehicle: 0.05439; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
 set tmargin at screen 0.91
 set xlabel "change of CF_H_max from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
@@ -29,7 +29,7 @@ unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'tornado_CF_H_max.svg.tmp'
 set label 101 "sensitivity_magpie: CF_H_max (constrained flight test: maximum of C_F,H)" at screen 0.5, 0.975 center noenhanced font ',13'
-set label 102 "base vehicle: 0.05445; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
+set label 102 "base vehicle: 0.05439; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
 set tmargin at screen 0.91
 set xlabel "change of CF_H_max from the base vehicle's value" noenhanced
 set lmargin at screen 0.40

@@ -5,7 +5,7 @@ set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'tornado_altitude_p2p_slow_m.png.tmp'
 set label 101 "sensitivity_magpie: altitude_p2p_slow_m (free flight: slow altitude oscillation peak-to-peak)" at screen 0.5, 0.975 center noenhanced font ',13'
-set label 102 "base vehicle: 0.155 m; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
+set label 102 "base vehicle: 0.1519 m; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
 set tmargin at screen 0.91
 set xlabel "change of altitude_p2p_slow_m from the base vehicle's value (m)" noenhanced
 set lmargin at screen 0.40
@@ -30,7 +30,7 @@ unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'tornado_altitude_p2p_slow_m.svg.tmp'
 set label 101 "sensitivity_magpie: altitude_p2p_slow_m (free flight: slow altitude oscillation peak-to-peak)" at screen 0.5, 0.975 center noenhanced font ',13'
-set label 102 "base vehicle: 0.155 m; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
+set label 102 "base vehicle: 0.1519 m; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
 set tmargin at screen 0.91
 set xlabel "change of altitude_p2p_slow_m from the base vehicle's value (m)" noenhanced
 set lmargin at screen 0.40

@@ -5,13 +5,13 @@ set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'tornado_norm_ratio_max.png.tmp'
 set label 101 "sensitivity_magpie: norm_ratio_max (free flight: bounded-norm ratio (Eq. 5; bounded below 1))" at screen 0.5, 0.975 center noenhanced font ',13'
-set label 102 "base vehicle: 0.5185; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
+set label 102 "base vehicle: 0.5179; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
 set tmargin at screen 0.91
 set xlabel "change of norm_ratio_max from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
 set rmargin at screen 0.96
 set yrange [0.4:9.6]
-set ytics ("body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 3, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
+set ytics ("body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 3, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
 set grid noytics
 set offsets graph 0.18, graph 0.18, 0, 0
 set style fill solid 0.85 border rgb '#333333'
@@ -30,13 +30,13 @@ unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'tornado_norm_ratio_max.svg.tmp'
 set label 101 "sensitivity_magpie: norm_ratio_max (free flight: bounded-norm ratio (Eq. 5; bounded below 1))" at screen 0.5, 0.975 center noenhanced font ',13'
-set label 102 "base vehicle: 0.5185; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
+set label 102 "base vehicle: 0.5179; bars: the change with the parameter at the low and at the high end of its range, largest swing on top" at screen 0.5, 0.945 center noenhanced font ',10'
 set tmargin at screen 0.91
 set xlabel "change of norm_ratio_max from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
 set rmargin at screen 0.96
 set yrange [0.4:9.6]
-set ytics ("body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 3, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
+set ytics ("body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 3, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
 set grid noytics
 set offsets graph 0.18, graph 0.18, 0, 0
 set style fill solid 0.85 border rgb '#333333'

@@ -4,7 +4,7 @@ set grid lc rgb '#dddddd'
 set key top right box opaque
 set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
 set output 'trim_convergence.png.tmp'
-set multiplot layout 2,1 title "table3_trim trim (ok), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W\nstage 2: level settled free flight moves the trim point (open circles)" noenhanced font ',13'
+set multiplot layout 2,1 title "trim_magpie trim (ok), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W\nstage 2: level settled free flight moves the trim point (open circles)" noenhanced font ',13'
 set lmargin 12
 set rmargin 44
 set tmargin 4
@@ -24,12 +24,12 @@ set ylabel 'unknowns (deg, m/s, Hz)'
 set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 13.56', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 18.02', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 16.59'
-7,13.561567550384005
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 13.56', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 18.02', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 16.58'
+7,13.560467489540088
 e
-7,18.016931479037744
+7,18.02115337072936
 e
-7,16.58751219657861
+7,16.584888568521148
 e
 
 unset multiplot
@@ -37,7 +37,7 @@ unset multiplot
 unset output
 set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
 set output 'trim_convergence.svg.tmp'
-set multiplot layout 2,1 title "table3_trim trim (ok), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W\nstage 2: level settled free flight moves the trim point (open circles)" noenhanced font ',13'
+set multiplot layout 2,1 title "trim_magpie trim (ok), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W\nstage 2: level settled free flight moves the trim point (open circles)" noenhanced font ',13'
 set lmargin 12
 set rmargin 44
 set tmargin 4
@@ -57,12 +57,12 @@ set ylabel 'unknowns (deg, m/s, Hz)'
 set xrange [-0.2:7.3]
 set xtics add ('stage 2' 7)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 13.56', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 18.02', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 16.59'
-7,13.561567550384005
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 13.56', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 18.02', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 16.58'
+7,13.560467489540088
 e
-7,18.016931479037744
+7,18.02115337072936
 e
-7,16.58751219657861
+7,16.584888568521148
 e
 
 unset multiplot

@@ -81,6 +81,7 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
       f.set("d_theta_deg_per_unit", k.jacobian[i][0])
           .set("d_speed_mps_per_unit", k.jacobian[i][1])
           .set("d_climb_deg_per_unit", k.jacobian[i][2]);
+      f.set("null_direction_component", k.null_component[i]);
       if (std::isfinite(k.determined_within[i]))
         f.set("determined_within", k.determined_within[i]);
       else

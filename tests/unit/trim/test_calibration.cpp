@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "tests/support/magpie_vehicle.hpp"
 #include "core/dynamics/flight_core.hpp"
@@ -64,6 +66,42 @@ TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   EXPECT_NEAR(k.determined_within[0], range * sum_abs / sum_sq, 1e-9 * range);
   // Moving the CG moves the settled pitch: well determined, to a fraction of the 15 mm range.
   EXPECT_LT(k.determined_within[0], 0.3 * range);
+}
+
+// Four values against three residuals: the Jacobian has a null direction, and which value it
+// leaves free is what a user needs to know. Here the fourth value moves nothing (its column is
+// zero, like P3 on one side of the nonlinear wing's fold): the null direction is that value alone,
+// so it is undetermined and the three others are determined exactly as a three-value fit would
+// determine them.
+TEST(TrimCalibration, ConditioningNamesTheValueANullDirectionLeavesFree) {
+  std::vector<CalibrationVariable> vars(4);
+  for (int i = 0; i < 4; ++i) vars[static_cast<std::size_t>(i)] = {{}, 0.5, 0.0, 1.0 + i, "test"};
+  Eigen::MatrixXd J(3, 4);  // deg, 0.1 m/s, deg per scaled value
+  J << 0.40, -0.03, 0.34, 0.00,  //
+       0.23, 0.06, -1.69, 0.00,  //
+       0.46, -0.03, 0.07, 0.00;
+  const CalibrationBand band;
+  const CalibrationConditioning k4 = conditioningOfJacobian(J, vars, band);
+  ASSERT_TRUE(k4.ok);
+  ASSERT_EQ(k4.null_component.size(), 4u);
+  EXPECT_NEAR(k4.null_component[3], 1.0, 1e-12);
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(k4.null_component[static_cast<std::size_t>(i)], 0.0, 1e-12);
+  EXPECT_TRUE(std::isinf(k4.determined_within[3]));
+  EXPECT_TRUE(std::isinf(k4.condition_number));
+  const CalibrationConditioning k3 = conditioningOfJacobian(
+      J.leftCols(3), std::vector<CalibrationVariable>(vars.begin(), vars.begin() + 3), band);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NEAR(k4.determined_within[static_cast<std::size_t>(i)],
+                k3.determined_within[static_cast<std::size_t>(i)],
+                1e-9 * k3.determined_within[static_cast<std::size_t>(i)]);
+  EXPECT_TRUE(std::isfinite(k3.condition_number));
+
+  // A null direction shared evenly by two values (two identical columns): neither is determined.
+  J.col(3) = J.col(2);
+  const CalibrationConditioning shared = conditioningOfJacobian(J, vars, band);
+  EXPECT_NEAR(shared.null_component[2], std::sqrt(0.5), 1e-9);
+  EXPECT_TRUE(std::isinf(shared.determined_within[2]) && std::isinf(shared.determined_within[3]));
+  EXPECT_THROW(conditioningOfJacobian(J.leftCols(2), vars, band), std::invalid_argument);
 }
 
 }  // namespace
