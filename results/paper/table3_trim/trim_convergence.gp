@@ -1,0 +1,50 @@
+# Figure 'trim_convergence' written by ornithopter; redraw with `ornithopter plot DIR`.
+set datafile separator ','
+set grid lc rgb '#dddddd'
+set key top right box opaque
+set terminal pngcairo size 1200,900 enhanced font 'DejaVu Sans,11'
+set output 'trim_convergence.png.tmp'
+set multiplot layout 2,1 title "table3_trim trim (not_converged), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W" noenhanced font ',13'
+set lmargin 12
+set rmargin 44
+set tmargin 4
+set key outside right top vertical Left reverse noenhanced
+set xrange [-0.2:22.2]
+set xlabel 'iteration'
+set xtics 1
+set logscale y
+set format y '10^{%L}'
+set ylabel 'scaled residual (-)'
+set yrange [1e-05:*]
+plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'accepted iterate', 'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', 0.0001 with lines dt 2 lc rgb '#333333' title 'tolerance'
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set ylabel 'unknowns (deg, m/s, Hz)'
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)'
+unset multiplot
+
+unset output
+set terminal svg size 1200,900 enhanced font 'DejaVu Sans,11' background rgb 'white'
+set output 'trim_convergence.svg.tmp'
+set multiplot layout 2,1 title "table3_trim trim (not_converged), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W" noenhanced font ',13'
+set lmargin 12
+set rmargin 44
+set tmargin 4
+set key outside right top vertical Left reverse noenhanced
+set xrange [-0.2:22.2]
+set xlabel 'iteration'
+set xtics 1
+set logscale y
+set format y '10^{%L}'
+set ylabel 'scaled residual (-)'
+set yrange [1e-05:*]
+plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' title 'accepted iterate', 'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', 0.0001 with lines dt 2 lc rgb '#333333' title 'tolerance'
+unset logscale y
+set format y '%g'
+set yrange [*:*]
+set ylabel 'unknowns (deg, m/s, Hz)'
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)'
+unset multiplot
+
+unset output
