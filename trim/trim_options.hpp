@@ -62,6 +62,13 @@ struct TrimOptions {
   /// tail angle of level settled free flight with its settled theta_mean and airspeed, as the
   /// paper refined its trim point (section 3.3).
   bool refine_in_free_flight = true;
+  /// Eq. (4) only gives the refinement its release point: a stalled Eq. (4) solve (the cost
+  /// stopped falling, no bound reached) whose max scaled residual is within this fraction of the
+  /// weight is refined too, and the trim is then judged by its level settled flight alone. 1 % of
+  /// the weight: the calibrated magpie's nonlinear wing stalls at 0.25 % (2 deg and 1.3 m/s from
+  /// its settled flight, which any release within a few degrees reaches); the honest magpie's
+  /// stalled sweep points stall at 1.4 % and more, far from any equilibrium.
+  double refine_stalled_max_residual = 1e-2;
   int refine_cycles = 120;         ///< cycles of each settled free flight at least (last third
                                    ///< averaged; extended until settled, up to 10 times as
                                    ///< many), [6, 10000]

@@ -308,7 +308,10 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
   TrimSummary s = solveTrim(reference,
                             tetheredMeanLoads(model, options.simulation, options.derivative_cycles),
                             options);
-  if (options.refine_in_free_flight && s.converged) {
+  const bool stalled_near =
+      !s.converged && s.termination == TrimTermination::kStalled &&
+      s.scaled_residual_max <= options.refine_stalled_max_residual;
+  if (options.refine_in_free_flight && (s.converged || stalled_near)) {
     // Stage 2: level settled free flight from the Eq. (4) trim (free_flight_trim.hpp).
     SimulationOptions sim;  // default tolerances for the free flights, tighter for the
     sim.rel_tol = settledFlightRelTol(model);  // nonlinear wing (free_flight_trim.hpp)
@@ -325,7 +328,20 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
     s.free_flight_climb_angle_rad = ft.settled.climb_angle_rad;
     if (ft.converged) {
       s.solution = ft.solution;
-      s.message = "Eq. (4) " + s.message + "; free-flight refinement: " + ft.message;
+      if (stalled_near) {
+        // Judged by the level settled flight alone (TrimOptions::refine_stalled_max_residual).
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "Eq. (4) stalled within %.0e of the weight (max scaled residual %.3e), "
+                      "released there; ",
+                      options.refine_stalled_max_residual, s.scaled_residual_max);
+        s.status = TrimStatus::kOk;
+        s.converged = true;
+        s.message = std::string(buf) + "free-flight refinement: " + ft.message + " (Eq. (4): " +
+                    s.message + ")";
+      } else {
+        s.message = "Eq. (4) " + s.message + "; free-flight refinement: " + ft.message;
+      }
     } else {
       s.status = TrimStatus::kNotConverged;
       s.converged = false;

@@ -2,8 +2,8 @@
 # The README's first command (`bash .ci/setup.sh main`, issue 14 defect 12) leaves `git status`
 # clean: its runs (.ci/main_run.sh) go to a git-ignored folder, never into the committed
 # results/paper/, are compared with results/paper/ with the paper_results tolerances, and the
-# paper-vs-ours table comes from its own run (the honest vehicle's trim, the prediction) and the
-# committed calibration to Table 3 (a fit).
+# paper-vs-ours table comes from its own run: the calibrated vehicle's trim (a fit) beside the
+# honest vehicle's (the prediction).
 #   usage: bash setup_main.sh <ornithopter-binary> <repo-root> <scratch-dir>
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
@@ -27,32 +27,31 @@ bash "$root/.ci/main_run.sh" "$build" "$scratch/main-run" > "$scratch/out.txt" 2
 rc=$?
 check "main_run.sh exits 0 ($rc)" test $rc -eq 0
 check "... compares with results/paper/ and every value matches" \
-  grep -q 'orni_results compare: 6 runs, .*: 0 failed' "$scratch/out.txt"
+  grep -q 'orni_results compare: 7 runs, .*: 0 failed' "$scratch/out.txt"
 check "... says so" grep -q 'matches the committed results/paper/' "$scratch/out.txt"
 check "... prints the table from its own run" \
-  grep -q "this run ($scratch/main-run/trim_magpie)" "$scratch/out.txt"
+  grep -q "ours: $scratch/main-run/table3_trim/summary.json" "$scratch/out.txt"
 ours=$(grep 'mean pitch theta_MEAN' "$scratch/out.txt" | awk '{ print $(NF-1) }')
-run=$(json "$scratch/main-run/trim_magpie/summary.json" theta_mean_deg)
-check "... with its own honest trim pitch ($ours against $run)" awk_true "($ours - $run)^2 < 1e-4"
+run=$(json "$scratch/main-run/table3_trim/summary.json" theta_mean_deg)
+check "... with its own calibrated trim pitch ($ours against $run)" awk_true "($ours - $run)^2 < 1e-4"
 ours=$(grep 'mean pitch theta_MEAN' "$scratch/out.txt" | awk '{ print $NF }')
-cal="$root/results/paper/calibrate_table3/summary.json"
-# (json takes the first match of a key: theta_error_deg, speed_error_mps and climb_angle_deg are
-# the settled flight's, against the target 9.2 deg, 10.8 m/s, level.)
-dth=$(json "$cal" theta_error_deg); du=$(json "$cal" speed_error_mps); cl=$(json "$cal" climb_angle_deg)
-check "... and the committed calibration's settled pitch ($ours against 9.2 + $dth)" \
-  awk_true "($ours - 9.2 - ($dth))^2 < 1e-4"
+run=$(json "$scratch/main-run/trim_magpie/summary.json" theta_mean_deg)
+check "... and its own honest trim pitch ($ours against $run)" awk_true "($ours - $run)^2 < 1e-4"
 check "... naming the fit a fit" grep -q 'calibrated (fit)' "$scratch/out.txt"
 check "... and claiming no reproduction" bash -c "! grep -qi 'reproduced' '$scratch/out.txt'"
-# The vehicle calibrated to Table 3 (issue 26; a fit, no prediction): the committed calibration's
-# settled flight at Table 3's tail angle lies within the regression band (0.5 deg, 0.3 m/s, and
-# 0.5 deg of climb angle) of Table 3's theta 9.2 deg and U 10.8 m/s in level flight, and the
-# vehicle released at Table 3's point flies bounded (Eq. 5).
-check "calibrated settled theta 9.2 + ($dth) = 9.2 +- 0.5 deg" awk_true "($dth) ^ 2 <= 0.25"
-check "calibrated settled U 10.8 + ($du) = 10.8 +- 0.3 m/s" awk_true "($du) ^ 2 <= 0.09"
-check "calibrated settled climb angle $cl = 0 +- 0.5 deg" awk_true "($cl) ^ 2 <= 0.25"
+# The regression on the published point (issue 26): the vehicle calibrated to Table 3 (a fit, no
+# prediction) trims at 12 Hz within (0.5 deg, 0.3 m/s, 0.5 deg) of Table 3 (9.2 deg, 10.8 m/s,
+# 11.85 deg), and released at Table 3's point it flies bounded (Eq. 5). (The Eq. 5 check at its
+# trim reports a secular altitude drift: results/README.md.)
+t3="$scratch/main-run/table3_trim/summary.json"
+check "table3_trim converged" test "$(json "$t3" status)" = ok
+th=$(json "$t3" theta_mean_deg); u=$(json "$t3" speed_mps); ta=$(json "$t3" tail_angle_deg)
+check "table3_trim theta $th = 9.2 +- 0.5 deg" awk_true "($th - 9.2) ^ 2 <= 0.25"
+check "table3_trim U $u = 10.8 +- 0.3 m/s" awk_true "($u - 10.8) ^ 2 <= 0.09"
+check "table3_trim tail $ta = 11.85 +- 0.5 deg" awk_true "($ta - 11.85) ^ 2 <= 0.25"
 check "the calibrated vehicle released at Table 3's point flies bounded" \
   grep -q '"bounded": true' "$scratch/main-run/fig6_8_free_flight_table3/summary.json"
-for r in fig2_rfw_theta0 fig2_rfw_theta20 trim_magpie fig6_8_free_flight \
+for r in fig2_rfw_theta0 fig2_rfw_theta20 table3_trim trim_magpie fig6_8_free_flight \
          fig6_8_free_flight_table3 fig9_constrained_flight_test; do
   check "... wrote $r" test -s "$scratch/main-run/$r/summary.json"
 done
@@ -62,7 +61,7 @@ if [[ -n "${before+set}" ]]; then
 fi
 
 # A stale baseline fails the comparison (and so `setup.sh main` and cli.paper_results); two of the
-# runs are enough for that (ORNI_MAIN_RUNS).
+# runs are enough for that (ORNI_MAIN_RUNS), the nonlinear-wing trim is not run twice.
 stale="$scratch/stale_root"
 mkdir -p "$stale/.ci" "$stale/results" "$stale/studies"
 cp "$root/.ci/main_run.sh" "$stale/.ci/"

@@ -137,6 +137,36 @@ TEST(TrimEfw, ThreeInitialGuessesFindTheSameTrim) {
 }
 
 // A 10 kg vehicle at 12 Hz: not enough lift at any speed and pitch inside the bounds.
+// Eq. (4) only gives the free-flight refinement its release point: a solve stopped early as
+// stalled (here forced: an iteration that does not cut the cost a million-fold is a stall) but
+// within 1 % of the weight is refined to the same level settled flight as the converged one
+// (TrimOptions::refine_stalled_max_residual); with that allowance at zero it is not refined.
+TEST(TrimEfw, StalledEquation4NearTheEquilibriumIsRefinedToTheSameTrim) {
+  const VehicleModel v = efw();
+  const FlightCoreModel model(v);
+  TrimOptions o = optionsAt(v, kTrimFreqHz);
+  o.initial.theta_rad = 13.0 * kDegToRad;  // near the trim: Eq. (4) within 1 % after a step
+  o.initial.speed_mps = 17.5;
+  o.initial.tail_angle_rad = 16.0 * kDegToRad;
+  o.stall_iterations = 1;
+  o.stall_decrease = 0.999999;
+  const TrimSummary s = solveTrim(model, o);
+  ASSERT_TRUE(s.refined_in_free_flight) << s.message;
+  ASSERT_EQ(s.status, TrimStatus::kOk) << s.message;
+  EXPECT_GT(s.scaled_residual_max, kEquilibriumFraction) << "Eq. (4) did not stall early";
+  EXPECT_LE(s.scaled_residual_max, o.refine_stalled_max_residual);
+  EXPECT_EQ(s.message.rfind("Eq. (4) stalled within", 0), 0u) << s.message;
+  EXPECT_NEAR(s.solution.theta_rad * kRadToDeg, kCommittedThetaDeg, kThetaTolDeg);
+  EXPECT_NEAR(s.solution.speed_mps, kCommittedSpeed, kSpeedTol);
+  EXPECT_NEAR(s.solution.tail_angle_rad * kRadToDeg, kCommittedTailDeg, kTailTolDeg);
+
+  o.refine_stalled_max_residual = 0.0;
+  o.verify_free_flight = false;
+  const TrimSummary strict = solveTrim(model, o);
+  EXPECT_EQ(strict.status, TrimStatus::kNotConverged);
+  EXPECT_FALSE(strict.refined_in_free_flight);
+}
+
 TEST(TrimEfw, ImpossibleRequestIsNotConvergedWithAReason) {
   VehicleModel v = efw();
   v.body.mass_kg = 10.0;
