@@ -88,9 +88,11 @@ bool evaluate(const CalibrationContext& c, const double* u, double* r,
     setValue(&v, o.variables[i].parameter, x);
     e.values.push_back(x);
   }
-  // Ceres evaluates some points twice (a Jacobian's centre after a rejected step); runs are
-  // deterministic, so an earlier run at the same values and kind is reused, not flown again
-  // (logged again, so the log still lists every evaluation Ceres asked for).
+  // Ceres evaluates some points twice (with bounds its trust-region minimizer runs a projected
+  // line search whose trial points evaluate the gradient, a full central-difference Jacobian, and
+  // it may come back to the same point); runs are deterministic, so an earlier run at the same
+  // values and kind is reused, not flown again (logged again, so the log still lists every
+  // evaluation Ceres asked for).
   for (const CalibrationEvaluation& earlier : *c.log) {
     if (earlier.values != e.values ||
         (earlier.stage == CalibrationStage::kTethered) != c.tethered)
