@@ -9,7 +9,12 @@
 // follows q quasi-statically: d minimises the in-plane energy, K_mm d = -sum_p Q_p F_p, i.e.
 // d = sum_p Q_p U_p with U_p = -K_mm^-1 F_p. What is left is a potential of q alone,
 //   V_NL(q) = 1/2 Q^T C Q,   C_ps = sum_e w_e h_p^T D_e h_s + U_p^T F_s   (P x P, P = M(M+1)/2),
-// quartic in q, exactly the in-plane-relaxed von Karman energy restricted to u_w = Phi q. This is
+// quartic in q, exactly the in-plane-relaxed von Karman energy restricted to u_w = Phi q (with the
+// members stretched by their out-of-plane slopes only, MemberStretch::kOutOfPlaneOnly: the full
+// model's default also charges their in-plane rotation, which is not quadratic in the relaxation
+// and is not here; on the EFW under 53 Pa it is worth 36.2 -> 29.3 mm at the mid-span trailing
+// edge, and with it the truncation to the linear modes is this model's open accuracy gap,
+// test_fe_membrane_efw.cpp). This is
 // the enforced-displacement ROM of Muravyov & Rizzi (2003) with the membrane's "companion"
 // displacements solved for once per pair instead of fitted (the relaxation Mignolet et al. 2013
 // require, done exactly); it has no quadratic term because a flat wing's bending cannot stretch
@@ -20,7 +25,8 @@
 // Why this route and not implicit condensation (Hollkamp & Gordon 2008) or a prestressed
 // linearisation: both need nonlinear static solves of the full model (ICE: hundreds for a cubic
 // fit of 12 modes; prestress: one per trim iteration), this needs one in-plane factorisation and
-// M(M+1)/2 back-substitutions (78 for 12 modes), and it is exact where they are fits.
+// M(M+1)/2 back-substitutions (78 for 12 modes), and it is exact where they are fits (though a fit
+// to the full model would also carry the members' in-plane rotation, which this cannot).
 #pragma once
 
 #include <vector>

@@ -54,7 +54,8 @@ Eigen::Matrix<double, 3, 2> etaJacobian(const Vec2& g) {
 
 }  // namespace
 
-VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh)
+VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh,
+                               MemberStretch member_stretch)
     : dof_count_(kDofsPerNode * mesh.nodeCount()) {
   if (!mesh.triangles.empty()) {
     const ShellProperties skin = skinShellProperties(wing_structure);
@@ -94,6 +95,9 @@ VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMe
                      mesh.nodes_W_m[static_cast<std::size_t>(b.nodes[0])];
       m.length_m = d.norm();
       m.axis = d / m.length_m;
+      m.transverse = member_stretch == MemberStretch::kOutOfPlaneOnly
+                         ? Mat3(Vec3::UnitZ() * Vec3::UnitZ().transpose())
+                         : Mat3(Mat3::Identity() - m.axis * m.axis.transpose());
       const BeamProperties& p = props[static_cast<std::size_t>(b.member)];
       m.axial_stiffness_n = p.youngs_modulus_pa * p.section.area_m2;
       members_.push_back(m);
@@ -121,7 +125,7 @@ Eigen::VectorXd VonKarmanTerms::internalForce(const Eigen::VectorXd& u) const {
   for (const Member& m : members_) {
     const Vec3 du = u.segment<3>(globalDof(m.nodes[1], kU)) - u.segment<3>(globalDof(m.nodes[0], kU));
     const double l = m.length_m;
-    const Vec3 pdu = du - m.axis * m.axis.dot(du);
+    const Vec3 pdu = m.transverse * du;
     const double eta = 0.5 * pdu.squaredNorm() / (l * l);
     const double n_total = m.axial_stiffness_n * (m.axis.dot(du) / l + eta);
     const Vec3 fe = m.axial_stiffness_n * eta * m.axis + (n_total / l) * pdu;
@@ -143,7 +147,7 @@ double VonKarmanTerms::energy(const Eigen::VectorXd& u) const {
   for (const Member& m : members_) {
     const Vec3 du = u.segment<3>(globalDof(m.nodes[1], kU)) - u.segment<3>(globalDof(m.nodes[0], kU));
     const double l = m.length_m;
-    const Vec3 pdu = du - m.axis * m.axis.dot(du);
+    const Vec3 pdu = m.transverse * du;
     const double eta = 0.5 * pdu.squaredNorm() / (l * l);
     pi += m.axial_stiffness_n * l * (m.axis.dot(du) / l * eta + 0.5 * eta * eta);
   }
@@ -198,7 +202,7 @@ SparseMatrix VonKarmanTerms::tangent(const Eigen::VectorXd& u) const {
   for (const Member& m : members_) {
     const Vec3 du = u.segment<3>(globalDof(m.nodes[1], kU)) - u.segment<3>(globalDof(m.nodes[0], kU));
     const double l = m.length_m;
-    const Mat3 p = Mat3::Identity() - m.axis * m.axis.transpose();
+    const Mat3& p = m.transverse;
     const Vec3 pdu = p * du;
     const double eta = 0.5 * pdu.squaredNorm() / (l * l);
     const double ea = m.axial_stiffness_n;
