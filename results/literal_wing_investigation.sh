@@ -25,6 +25,7 @@ candidates=(
   "literal|Table 1 read literally: solid rods; P3 universal joint with cross axis normal|"
   "rigid|the same wing rigid (no deformation)|wing.structure = \"rigid\""
   "p3_cross_span|P3 universal joint with cross axis span (rotation about y_W held): the committed vehicle|wing.fe.p3_cross_axis = \"span\""
+  "nonlinear|the committed vehicle's wing (P3 cross axis span) geometrically nonlinear: the skin and members stretch (24 modes; not yet the default)|wing.fe.p3_cross_axis = \"span\";wing.fe.nonlinear = true"
   "p3_spherical|P3 ball joint (no rotation held)|wing.fe.p3_joint = \"spherical\""
   "p3_revolute_x|P3 pin along the flapping axis only (rotations about y_W and z_W held)|wing.fe.p3_joint = \"revolute_x\""
   "p3_clamped|stiffener roots driven in flap (P3 clamped)|wing.fe.p3_joint = \"clamped\""

@@ -1,5 +1,10 @@
 #include "trim/free_flight_check.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+
 #include "core/dynamics/flight_core.hpp"
 #include "core/analysis/limit_cycle.hpp"
 #include "core/dynamics/free_flight.hpp"
@@ -15,6 +20,33 @@ const char* toString(FreeFlightStatus s) {
     case FreeFlightStatus::kFailed: return "failed";
   }
   return "failed";
+}
+
+FreeFlightCheckOptions coveringSlowMotion(const FreeFlightCheckOptions& options,
+                                          const SlowMultiplierFit& slow, std::string* why) {
+  FreeFlightCheckOptions out = options;
+  // A clean fit of a decaying oscillation.
+  if (!slow.ok || !(slow.relative_residual <= kCleanSlowFitResidual) || !(slow.modulus < 1.0))
+    return out;
+  const double arg = std::abs(std::arg(slow.mu[0]));
+  if (!(arg > 1e-3)) return out;  // not an oscillation
+  const double period_cycles = 2.0 * 3.14159265358979323846 / arg;
+  const double window_share = 1.0 - options.free.transient_fraction;
+  const double needed = std::ceil(kCheckSlowPeriods * period_cycles / window_share);
+  const double cap = 10.0 * options.cycles;
+  const int cycles = static_cast<int>(std::min(needed, cap));
+  if (cycles <= options.cycles) return out;
+  out.cycles = cycles;
+  if (why != nullptr) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf,
+                  "horizon raised from %d to %d cycles so that the window after the transient "
+                  "covers %d periods of the slowest motion (%.1f cycles each)%s",
+                  options.cycles, cycles, kCheckSlowPeriods, period_cycles,
+                  needed > cap ? "; capped at ten times the horizon" : "");
+    *why = buf;
+  }
+  return out;
 }
 
 FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const OperatingPoint& trim,

@@ -10,6 +10,7 @@
 #include <limits>
 #include <string>
 
+#include "core/analysis/slow_multipliers.hpp"
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 
@@ -52,6 +53,22 @@ struct FreeFlightVerification {
   double drift = std::numeric_limits<double>::quiet_NaN();
   double drift_limit = std::numeric_limits<double>::quiet_NaN();
 };
+
+/// Periods of the slowest oscillation the check's window (after the transient) covers when that
+/// motion is known (coveringSlowMotion).
+constexpr int kCheckSlowPeriods = 3;
+
+/// The check's horizon for a trim whose settled free flight measured its slowest motion `slow`
+/// (a clean fit of a decaying oscillation, one value a flapping cycle): options.cycles raised so
+/// that the window after the transient covers kCheckSlowPeriods periods of it, at most ten times
+/// options.cycles; options unchanged without such a fit. Why: the secular-drift test fits a line
+/// to the window's cycle means, and a window of about one period of a slow oscillation reads the
+/// oscillation as a trend (measured on the calibrated magpie at Table 3's point: the release's
+/// 4.2-s phugoid gave an h "drift" of 0.91 of its bound over the default 60 cycles, 0.03 of a
+/// bound over 200 cycles, the settled climb angle being -0.004 deg). `*why` (optional) gets the
+/// reason when the horizon was raised.
+FreeFlightCheckOptions coveringSlowMotion(const FreeFlightCheckOptions& options,
+                                          const SlowMultiplierFit& slow, std::string* why = nullptr);
 
 /// Fly the vehicle freely from the trim point `trim` (options.cycles cycles, default tolerances)
 /// and check paper Eq. (5): kBounded, kUnbounded (not bounded or diverged, with the reason) or

@@ -19,11 +19,8 @@ namespace orni {
 
 namespace {
 
-// A fit of the slowest motion (core/analysis/slow_multipliers.hpp) is used when its residual is
-// below this fraction of the motion: a settling free flight of the magpie fits to 2e-4 - 1e-3
-// (rigid and flexible wing, any stretch of 60-600 cycles while the phugoid is above the
-// integrator's noise), a stretch left with noise only to 0.07 and more.
-constexpr double kCleanFitResidual = 0.01;
+// A fit of the slowest motion is used when it is clean (kCleanSlowFitResidual).
+constexpr double kCleanFitResidual = kCleanSlowFitResidual;
 
 // The cycle means of a free flight as it is flown (theta, airspeed, climb angle; the altitude and
 // time at each cycle boundary) and the settling test (SettledFlightOptions) after every cycle from

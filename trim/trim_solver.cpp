@@ -311,6 +311,7 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
   const bool stalled_near =
       !s.converged && s.termination == TrimTermination::kStalled &&
       s.scaled_residual_max <= options.refine_stalled_max_residual;
+  SlowMultiplierFit slow_motion;  // of the settled flight at the refined trim, when flown
   if (options.refine_in_free_flight && (s.converged || stalled_near)) {
     // Stage 2: level settled free flight from the Eq. (4) trim (free_flight_trim.hpp).
     SimulationOptions sim;  // default tolerances for the free flights, tighter for the
@@ -326,6 +327,7 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
     s.free_flight_trim_message = ft.message;
     s.free_flight_trim_evaluations = ft.evaluations;
     s.free_flight_climb_angle_rad = ft.settled.climb_angle_rad;
+    if (ft.converged) slow_motion = ft.settled.slow;
     if (ft.converged) {
       s.solution = ft.solution;
       if (stalled_near) {
@@ -355,7 +357,11 @@ TrimSummary solveTrim(const FlightCoreModel& model, const TrimOptions& options) 
     s.free_flight.status = FreeFlightStatus::kSkipped;
     s.free_flight.message = "trim not converged: no free-flight check";
   } else {
-    s.free_flight = verifyFreeFlight(model, s.solution, options.free_flight);
+    // Eq. (5) over a window long enough for the slowest motion the refinement measured.
+    std::string horizon_note;
+    s.free_flight = verifyFreeFlight(
+        model, s.solution, coveringSlowMotion(options.free_flight, slow_motion, &horizon_note));
+    if (!horizon_note.empty()) s.free_flight.message += " (" + horizon_note + ")";
   }
   s.wall_time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return s;

@@ -29,6 +29,12 @@ struct SlowMultiplierFit {
   double a1 = 0.0, a2 = 0.0;  ///< the recursion's coefficients
 };
 
+/// A fit is used (its multiplier and fixed point trusted) when its relative_residual is at most
+/// this: a settling free flight of the magpie fits to 2e-4 - 1e-3 (rigid and flexible wing, any
+/// stretch of 60-600 cycles while the phugoid is above the integrator's noise), a stretch left
+/// with noise only to 0.07 and more.
+constexpr double kCleanSlowFitResidual = 0.01;
+
 /// Fit of the sequence y (one value a period, oldest first); ok false for fewer than 8 values, a
 /// constant sequence or a singular fit.
 SlowMultiplierFit fitSlowMultipliers(const std::vector<double>& y);
