@@ -39,20 +39,30 @@ lists every key, ``v.to_toml()`` gives the complete vehicle file (every default 
 ``.line`` of an error about a key you did not set refers to this text)."""
 
 
+def _existing_file(path):
+    """The path as a string; FileNotFoundError (not InputError) when no file is there, as open()."""
+    p = _os.fspath(path)
+    if not _os.path.isfile(p):
+        import errno
+        raise FileNotFoundError(errno.ENOENT, _os.strerror(errno.ENOENT), p)
+    return p
+
+
 def load_vehicle(path):
     """Read a vehicle file (TOML) with the CLI's reader and checks.
 
-    Returns a :class:`Vehicle`. Raises :class:`InputError` (``.file``, ``.line``, ``.key``,
-    ``.expected``) for a bad file."""
-    return _core.Vehicle.load(_os.fspath(path))
+    Returns a :class:`Vehicle`. Raises FileNotFoundError when there is no such file and
+    :class:`InputError` (``.file``, ``.line``, ``.key``, ``.expected``) for a bad file."""
+    return _core.Vehicle.load(_existing_file(path))
 
 
 def load_study(path):
     """Read a study file (TOML, any kind) with the CLI's reader and checks.
 
     Returns a :class:`Study` (``.kind``, ``.name``, ``.path``) for :func:`optimize` or :func:`run`.
-    Raises :class:`InputError` for a bad file."""
-    return _core.load_study(_os.fspath(path))
+    Raises FileNotFoundError when there is no such file and :class:`InputError` for a bad file
+    (a vehicle file it names that does not exist included: that is an error in the study)."""
+    return _core.load_study(_existing_file(path))
 
 
 def _read_summary(out_dir):

@@ -64,7 +64,7 @@ def test_load_study():
     s = ornithopter.load_study(os.path.join(SOURCE_DIR, "studies", "examples", "rfw_theta20.toml"))
     assert s.kind == "simulate"
     assert s.name
-    with pytest.raises(ornithopter.InputError):
+    with pytest.raises(FileNotFoundError):  # as open() would: not an InputError
         ornithopter.load_study(os.path.join(SOURCE_DIR, "no_such_study.toml"))
 
 
@@ -75,3 +75,14 @@ def test_docstrings_say_units_and_defaults():
         assert f.__doc__ and len(f.__doc__) > 80
     assert "Hz" in ornithopter.trim.__doc__ and "default" in ornithopter.trim.__doc__
     assert "m/s" in ornithopter.simulate.__doc__ and "deg" in ornithopter.simulate.__doc__
+
+
+def test_missing_file_raises_file_not_found(tmp_path):
+    missing = tmp_path / "no_such_vehicle.toml"
+    for load in (ornithopter.load_vehicle, ornithopter.load_study, ornithopter.run):
+        with pytest.raises(FileNotFoundError) as e:
+            load(missing)
+        assert e.value.filename == str(missing)
+    # A directory is not a file either.
+    with pytest.raises(FileNotFoundError):
+        ornithopter.load_vehicle(tmp_path)
