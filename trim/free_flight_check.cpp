@@ -5,6 +5,7 @@
 #include <complex>
 #include <cstdio>
 
+#include "core/analysis/slow_multipliers.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/analysis/limit_cycle.hpp"
 #include "core/dynamics/free_flight.hpp"

@@ -10,13 +10,13 @@
 #include <limits>
 #include <string>
 
-#include "core/analysis/slow_multipliers.hpp"
 #include "core/dynamics/simulation_options.hpp"
 #include "core/model/vehicle_model.hpp"
 
 namespace orni {
 
 struct FlightCoreModel;
+struct SlowMultiplierFit;  // core/analysis/slow_multipliers.hpp (not an installed header)
 
 enum class FreeFlightStatus {
   kNotAvailable,  ///< free-flight mode not implemented in this version
