@@ -9,6 +9,7 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/analysis/limit_cycle.hpp"
 #include "core/dynamics/free_flight.hpp"
+#include "core/model/frames.hpp"
 
 namespace orni {
 
@@ -31,7 +32,7 @@ FreeFlightCheckOptions coveringSlowMotion(const FreeFlightCheckOptions& options,
     return out;
   const double arg = std::abs(std::arg(slow.mu[0]));
   if (!(arg > 1e-3)) return out;  // not an oscillation
-  const double period_cycles = 2.0 * 3.14159265358979323846 / arg;
+  const double period_cycles = 2.0 * kPi / arg;
   const double window_share = 1.0 - options.free.transient_fraction;
   const double needed = std::ceil(kCheckSlowPeriods * period_cycles / window_share);
   const double cap = 10.0 * options.cycles;

@@ -19,9 +19,6 @@ namespace orni {
 
 namespace {
 
-// A fit of the slowest motion is used when it is clean (kCleanSlowFitResidual).
-constexpr double kCleanFitResidual = kCleanSlowFitResidual;
-
 // The cycle means of a free flight as it is flown (theta, airspeed, climb angle; the altitude and
 // time at each cycle boundary) and the settling test (SettledFlightOptions) after every cycle from
 // options.cycles on: the run ends at the first cycle that passes.
@@ -56,7 +53,7 @@ class SettlingMonitor final : public FreeFlightObserver {
   int cycles() const { return static_cast<int>(theta_.size()); }
 
   static bool clean(const SlowMultiplierFit& f) {
-    return f.ok && f.relative_residual <= kCleanFitResidual;
+    return f.ok && f.relative_residual <= kCleanSlowFitResidual;
   }
   // The `count` cycle means of y that end with cycle `last`.
   static std::vector<double> tail(const std::vector<double>& y, std::size_t last,
@@ -161,7 +158,7 @@ class SettlingMonitor final : public FreeFlightObserver {
 // or "decays by ...", empty without a clean fit.
 std::string slowMotionText(const SettledFlight& r, double period_s) {
   const SlowMultiplierFit& f = r.slow;
-  if (!f.ok || !(f.relative_residual <= kCleanFitResidual)) return std::string();
+  if (!f.ok || !(f.relative_residual <= kCleanSlowFitResidual)) return std::string();
   const double arg = std::abs(std::arg(f.mu[0]));
   char osc[80] = "";
   if (arg > 1e-3)
