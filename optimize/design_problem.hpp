@@ -1,6 +1,6 @@
-// The design problem of issue 6: size a vehicle so that it trims (paper Eq. 4), flies within the
-// bounded-norm criterion (paper Eq. 5) and needs as little flapping power as possible, instead of
-// the paper's heuristic search of tail area, aspect ratio, elevation and the P1-P4 distance.
+// The design problem (docs/theory.md 12.1): size a vehicle so that it trims (paper Eq. 4), flies
+// within the bounded-norm criterion (paper Eq. 5) and needs as little flapping power as possible,
+// instead of the paper's heuristic search of tail area, aspect ratio, elevation and the P1-P4 distance.
 //
 // One evaluation (evaluateDesign): apply the design to a copy of the vehicle (design_space.hpp),
 // check it (core's model checks, core/model/vehicle_validation.hpp: the ranges of the field table
@@ -30,7 +30,7 @@
 //                    tethered run at the trim point / limit - 1;
 //   structural_mass  (optional) mass of both wings (members + skin) / limit - 1;
 //   floquet_max_modulus (optional, periodic trim) largest Floquet multiplier modulus of the
-//                    trimmed orbit / limit - 1 (the orbit's stability, issue 16; a limit < 1
+//                    trimmed orbit / limit - 1 (the orbit's stability, docs/theory.md 10.4; a limit < 1
 //                    demands a stable orbit with that margin).
 // The trim: options.trim.method two-stage (solveTrim) or periodic (solvePeriodicTrim: the orbit
 // of free flight, its Floquet multipliers, and the bounded-norm check when verify_free_flight).

@@ -1,4 +1,4 @@
-// The optimiser driver: NLopt (private to this library, architecture.md 1) minimising a Problem
+// The optimiser driver: NLopt (private to this library, docs/design.md 1) minimising a Problem
 // (problem.hpp) over a box of variables, with inequality constraints, as a multi-start run.
 //
 // Method. The variables are scaled to the unit box. Algorithm (optimizer_options.hpp):
@@ -27,7 +27,7 @@
 // the evaluation budget or an error.
 //
 // Exceptions: std::invalid_argument for invalid options or box; an exception thrown by a hook (a
-// journal that cannot be written) stops every start and is rethrown (style.md habit 7: never
+// journal that cannot be written) stops every start and is rethrown (docs/design.md 7.7: never
 // across the C callback).
 #pragma once
 

@@ -1,4 +1,4 @@
-// OptimizerOptions: the options of one optimisation (style.md habit 5: plain struct, documented
+// OptimizerOptions: the options of one optimisation (docs/design.md 7.5: plain struct, documented
 // defaults, IsValid). Light header (no NLopt, no model) so that the study files can hold them; the
 // driver is optimizer.hpp.
 #pragma once

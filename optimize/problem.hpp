@@ -1,7 +1,7 @@
 // What the optimiser driver (optimizer.hpp) minimises: a Problem maps a design vector x (physical
 // units, inside the variable box) to an objective and inequality constraints g_i(x) <= 0.
 //
-// Model vs data (style.md habit 1): a Problem is immutable and shared by the starts of a
+// Model vs data (docs/design.md 7.1): a Problem is immutable and shared by the starts of a
 // multi-start run on several threads; each start owns a ProblemWorkspace (made by
 // makeWorkspace()) that carries whatever state one start's evaluation sequence needs (the design
 // problem keeps its warm start there). evaluate() and observe() must be safe to call concurrently

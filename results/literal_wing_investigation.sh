@@ -39,7 +39,7 @@ candidates=(
   "no_stall|no stall (stall angles +-60 deg)|aero.stall_angle_max_deg = 60.0;aero.stall_angle_min_deg = -60.0"
   "suction_half|leading-edge suction efficiency 0.5|aero.suction_efficiency = 0.5"
   "diameters_x3115|the first wave's fit: every diameter x 3.115 (7 times the mass)|wing.member_diameter_scale = 3.11465"
-  "softening_only|spin softening without geometric stiffening (the model before structure.md 3.7)|wing.fe.inertial_stiffness = \"softening_only\""
+  "softening_only|spin softening without geometric stiffening (the model before docs/theory.md 4.6)|wing.fe.inertial_stiffness = \"softening_only\""
   "no_inertial_stiffness|neither spin softening nor geometric stiffening|wing.fe.inertial_stiffness = \"none\""
 )
 

@@ -3,9 +3,9 @@
 //
 // Each grid point is one simulateTethered run (core/dynamics/tethered_simulation.hpp) that stops at
 // the periodic steady state. Points run on the thread pool of core/grid/point_pool.hpp and share
-// the const FlightCoreModel (style.md habit 1: each run owns its workspace); results are stored by
-// point index, so they do not depend on the thread count. No file I/O here: the journal that makes a
-// map resumable lives in the runner, fed by the on_point callback and the `known` results.
+// the const FlightCoreModel (docs/design.md 7.1: each run owns its workspace); results are stored
+// by point index, so they do not depend on the thread count. No file I/O here: the journal that
+// makes a map resumable lives in the runner, fed by the on_point callback and the `known` results.
 #pragma once
 
 #include <array>

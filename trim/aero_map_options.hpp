@@ -1,5 +1,5 @@
-// Options of an aero-map build (style.md habit 5: plain struct, defaults, IsValid). Kept apart from
-// aero_map.hpp so that the study-file reader can hold them without the flight core's headers.
+// Options of an aero-map build (docs/design.md 7.5: plain struct, defaults, IsValid). Kept apart
+// from aero_map.hpp so that the study-file reader can hold them without the flight core's headers.
 #pragma once
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 // Ceres logs through glog to stderr (a cost function that fails, a solve that stops on it). Our
-// summaries already say why a solve ended, so library calls keep the console quiet (issue 28):
+// summaries already say why a solve ended, so library calls keep the console quiet:
 // quietCeresLogging() raises glog's threshold to FATAL once per process. Internal: not installed.
 #pragma once
 

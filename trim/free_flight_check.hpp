@@ -1,5 +1,5 @@
 // Free-flight verification of a trim point: the hook for the bounded-norm check of paper Eq. (5)
-// (architecture.md 2: deviations of [U W theta Q h] scaled by their bounds R_i stay <= 1 over the
+// (docs/design.md 2: deviations of [U W theta Q h] scaled by their bounds R_i stay <= 1 over the
 // horizon, no secular drift).
 //
 // verifyFreeFlight() flies the vehicle freely (core/dynamics/free_flight.hpp) from the trim point
@@ -28,13 +28,13 @@ enum class FreeFlightStatus {
 /// "not_available", "skipped", "bounded", "unbounded", "failed".
 const char* toString(FreeFlightStatus s);
 
-/// Options of the free-flight check (defaults per architecture.md 2).
+/// Options of the free-flight check (defaults per docs/design.md 2).
 struct FreeFlightCheckOptions {
   int cycles = 60;                    ///< flapping cycles to fly, [1, 100000]
   FreeFlightOptions free;             ///< bounds R_i (R_theta = 40 deg), transient, divergence
 };
 
-/// Result: the keys of a free-mode `simulate` summary (architecture.md 4).
+/// Result: the keys of a free-mode `simulate` summary (docs/design.md 4).
 struct FreeFlightVerification {
   FreeFlightStatus status = FreeFlightStatus::kNotAvailable;
   std::string message;

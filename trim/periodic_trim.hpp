@@ -1,4 +1,4 @@
-// Periodic-orbit trim of the free-flying vehicle and its Floquet stability (issue 16).
+// Periodic-orbit trim of the free-flying vehicle and its Floquet stability (docs/theory.md 10.3-10.4).
 //
 // A flapping vehicle in trimmed flight flies a periodic orbit, not an equilibrium. Found here
 // directly: the state at flap phase 0 (body theta, U, W, Q; modal q, q'; every MST-TD state) and

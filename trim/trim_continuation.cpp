@@ -122,7 +122,7 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
   }
   // A first step below its floor cannot move the parameter measurably: the corrector's noise
   // (residual_tol) moves the point more than the step does, and the branch may wander back to its
-  // start and "reach the end of the range" there (issue 30, item 1).
+  // start and "reach the end of the range" there, a false result.
   const double step_floor = kStepFloorOfRange * std::abs(options.to - lambda0);
   if (options.step < step_floor) {
     char buf[320];

@@ -1,4 +1,4 @@
-// Continuation of trimmed flapping flight (issue 16, part B): the periodic-orbit trim
+// Continuation of trimmed flapping flight (docs/theory.md 10.5): the periodic-orbit trim
 // (periodic_trim.hpp) followed over one parameter of the free-flight period map (the flapping
 // frequency, the tail angle or a forward CG shift) by pseudo-arclength continuation
 // (core/analysis/periodic_continuation.hpp), with the Floquet multipliers of every point and the
@@ -29,7 +29,7 @@
 
 namespace orni {
 
-/// Options of continueTrim (style.md habit 5). Units of the parameter: Hz, rad, m.
+/// Options of continueTrim (docs/design.md 7.5). Units of the parameter: Hz, rad, m.
 struct TrimContinuationOptions {
   PeriodicControl parameter = PeriodicControl::kFrequency;  ///< must differ from the control
   double to = 14.0;             ///< the end of the branch (parameter units)

@@ -1,4 +1,4 @@
-// TrimOptions: the options of one trim solve (style.md habit 5: plain struct, documented
+// TrimOptions: the options of one trim solve (docs/design.md 7.5: plain struct, documented
 // defaults, IsValid). Light header (no core dynamics) so that the study files can hold them; the
 // solver is trim_solver.hpp.
 #pragma once

@@ -10,13 +10,13 @@
 // plus tail, about P1 = the CG, in the flight-path frame of level flight (FV up, FH forward),
 // gravity not included. The weight acts at the CG, so it enters r_V only. Eq. (4) has no fuselage
 // term; the vehicle model adds the fuselage's parasite drag (body.drag_area_m2, at the CG against
-// the flight path; issue 13), so FH is the wings' mean thrust minus the tail and body drag.
+// the flight path; the paper omits it), so FH is the wings' mean thrust minus the tail and body drag.
 //
 // The unknowns are a subset of (theta_mean, U, delta_T, f); the others are held at their given
 // values. The solver works in "solver units" (deg, m/s, deg, Hz), in which all four are O(1-10)
 // and the finite-difference steps are fixed absolute numbers.
 //
-// No Ceres type appears here (architecture.md 1): the Ceres side is in trim_solver.cpp.
+// No Ceres type appears here (docs/design.md 1): the Ceres side is in trim_solver.cpp.
 #pragma once
 
 #include <array>

@@ -1,8 +1,8 @@
 // The trim solver: Ceres drives the residuals of paper Eq. (4) (trim_problem.hpp) to zero over
-// the chosen unknowns (architecture.md 1, data flow of a trim study), then hands a converged trim
+// the chosen unknowns (docs/design.md 1, data flow of a trim study), then hands a converged trim
 // to the free-flight check (free_flight_check.hpp).
 //
-// Style (style.md habit 5, Ceres): TrimOptions (trim_options.hpp) with documented defaults and
+// Style (docs/design.md 7.5, Ceres): TrimOptions (trim_options.hpp) with documented defaults and
 // IsValid(); TrimSummary with a status and a termination reason instead of exceptions for "did not
 // converge", and a one-line BriefReport(). solveTrim() does no I/O and is thread-compatible (one
 // model may be shared by solves on several threads; each solve owns its workspaces), so sweeps

@@ -1,5 +1,5 @@
 // Finite-wing constants, Scherer's modified Theodorsen function and the friction coefficient of
-// DeLaurier's MST (aero-mst.md M3, M11, section 7).
+// DeLaurier's MST (docs/theory.md 5.2 (M3, M11) and 5.6).
 #include <cmath>
 
 #include "core/aero/mst_strip.hpp"
@@ -10,7 +10,7 @@ MstConstants MstConstants::fromAspectRatio(double aspect_ratio) {
   MstConstants constants;
   constants.aspect_ratio = aspect_ratio;
   if (std::isinf(aspect_ratio)) {
-    // 2-D limit of M3: C1 -> 0.5, C2 -> 0.181, AR/(2+AR) -> 1 (aero-mst.md O2 last row).
+    // 2-D limit of M3: C1 -> 0.5, C2 -> 0.181, AR/(2+AR) -> 1 (docs/theory.md 5.10, O2).
     constants.C1 = 0.5;
     constants.C2 = 0.181;
     constants.jones_factor = 1.0;
@@ -18,7 +18,7 @@ MstConstants MstConstants::fromAspectRatio(double aspect_ratio) {
   }
   constants.C1 = 0.5 * aspect_ratio / (2.32 + aspect_ratio);     // M3
   constants.C2 = 0.181 + 0.772 / aspect_ratio;                    // M3
-  constants.jones_factor = aspect_ratio / (2.0 + aspect_ratio);   // R.T. Jones, section 3.2
+  constants.jones_factor = aspect_ratio / (2.0 + aspect_ratio);   // R.T. Jones, docs/theory.md 5.2
   return constants;
 }
 

@@ -1,4 +1,4 @@
-// DeLaurier (1993) modified strip theory, algebraic, per strip: aero-mst.md sections 3-5 (M1-M19)
+// DeLaurier (1993) modified strip theory, algebraic, per strip: docs/theory.md 5.2-5.4 (M1-M19)
 // with DeLaurier's instantaneous (hard) stall switch. Pitch axis at the leading edge; plunge h
 // positive down; SI units, radians.
 #include <cassert>

@@ -1,10 +1,10 @@
 // Strip aerodynamics of one wing section: DeLaurier's (1993) modified strip theory and the
-// time-domain MST-TD of aero-mst.md section 9. Pure functions: no hidden state, no allocation,
+// time-domain MST-TD of docs/theory.md 5.7-5.9. Pure functions: no hidden state, no allocation,
 // callable in any order by the integrator, the trim solver and the optimiser.
 //
-// Conventions (aero-mst.md 1.2): DeLaurier's. Plunge h positive DOWN, theta nose-up, normal force
-// dN towards the upper surface, chordwise force dFx towards the leading edge (forward), moments
-// nose-up positive. Angles in radians, SI units.
+// Conventions (docs/theory.md 1.5): DeLaurier's. Plunge h positive DOWN, theta nose-up, normal
+// force dN towards the upper surface, chordwise force dFx towards the leading edge (forward),
+// moments nose-up positive. Angles in radians, SI units.
 #pragma once
 
 #include <cmath>
@@ -26,7 +26,7 @@ inline double apparentMassPerSpan_kgpm(double density_kgpm3, double chord_m) {
 
 using Vec3 = Eigen::Vector3d;
 
-/// Constants derived from the aspect ratio (aero-mst.md M3, R.T. Jones' finite-wing factor).
+/// Constants derived from the aspect ratio (docs/theory.md 5.2 (M3), R.T. Jones' finite-wing factor).
 struct MstConstants {
   double aspect_ratio = 0.0;  ///< AR = b^2/S of the wing pair
   double C1 = 0.0;            ///< 0.5 AR/(2.32 + AR)
@@ -37,13 +37,13 @@ struct MstConstants {
 };
 
 /// Scherer's fit of the modified Theodorsen function (M3): F'(k), G'(k) and G'(k)/k (finite at
-/// k = 0, aero-mst.md pitfall 4).
+/// k = 0, docs/theory.md 5.11 (pitfall 4)).
 struct SchererFunction {
   double F = 1.0, G = 0.0, G_over_k = 0.0;
 };
 SchererFunction schererFunction(const MstConstants& constants, double reduced_frequency);
 
-/// The attached-flow circulatory force of MST-TD at large relative angles (issue 13 item 7).
+/// The attached-flow circulatory force of MST-TD at large relative angles (docs/theory.md 5.9).
 /// DeLaurier's M7 is dNc = 2 pi (alpha' + thetabar) rho U V/2 c dy, with the linear angle
 /// alpha ~ hdot/U (= tan of the physical angle in pure plunge) and V the local speed at the bound
 /// vortex, whose normal component U (alpha' + thetabar) is reduced by the finite-wing downwash.
@@ -84,7 +84,7 @@ struct StripContext {
   double kinematic_viscosity_m2ps = 1.5e-5;
 };
 
-/// DeLaurier's planar kinematic inputs of one strip (aero-mst.md 2.2), pitch axis at the LE.
+/// DeLaurier's planar kinematic inputs of one strip (docs/theory.md 5.1), pitch axis at the LE.
 struct PlanarKinematics {
   double U = 0.0;          ///< flight speed, m/s, > 0
   double theta_a = 0.0;    ///< incidence of the flapping axis relative to U, rad
@@ -97,13 +97,13 @@ struct PlanarKinematics {
   double omega = 0.0;      ///< flapping circular frequency, rad/s (for k = omega c/(2U))
 };
 
-/// 3-D section kinematics (aero-mst.md 2.3). All vectors in one common frame.
+/// 3-D section kinematics (docs/theory.md 5.1). All vectors in one common frame.
 struct SectionKinematics {
   Vec3 e_c = Vec3::UnitX();   ///< unit chord vector, TE -> LE (forward)
   Vec3 n = -Vec3::UnitZ();    ///< unit chord normal towards the upper surface
   Vec3 v_P = Vec3::Zero();    ///< inertial velocity of the reference point P, m/s
   Vec3 a_P = Vec3::Zero();    ///< inertial acceleration of P (its u-dot-free part in a coupled
-                              ///< solve, structure.md 4.2), m/s^2
+                              ///< solve, docs/theory.md 6.2), m/s^2
   Vec3 w_s = Vec3::Zero();    ///< angular velocity of the section, rad/s
   Vec3 wdot_s = Vec3::Zero(); ///< angular acceleration of the section, rad/s^2
   Vec3 v_air = Vec3::Zero();  ///< local air velocity (0 in still air), m/s
@@ -117,8 +117,8 @@ struct SectionKinematics {
 /// [x1, x2, f] for the Jones lag (option B). 0 for DeLaurier 1993.
 int statesPerStrip(const AeroParameters& params);
 
-/// Loads of one strip, in the section frame, with their points of action (aero-mst.md 5, 6.3).
-/// The blend of MST-TD (9.4.2) is already applied to each component.
+/// Loads of one strip, in the section frame, with their points of action (docs/theory.md 5.4, 5.5).
+/// The blend of MST-TD (5.8) is already applied to each component.
 struct SectionLoads {
   double dN_c4_N = 0.0;     ///< normal force acting at the quarter chord (circulatory part)
   double dN_c2_N = 0.0;     ///< normal force acting at mid-chord (apparent mass + separated)
@@ -141,7 +141,7 @@ struct SectionLoads {
   }
 };
 
-/// Detailed intermediate values of DeLaurier's model, for term-by-term tests (aero-mst.md O9).
+/// Detailed intermediate values of DeLaurier's model, for term-by-term tests (docs/theory.md 5.10, O9).
 struct DeLaurierTerms {
   double k = 0, F = 0, G_over_k = 0, alpha = 0, alphadot = 0, w0_over_U = 0, alpha_prime = 0;
   double Vx = 0, Vy = 0, V = 0, Cn = 0, dNc = 0, vdot2 = 0, dNa = 0;
@@ -150,29 +150,29 @@ struct DeLaurierTerms {
   double Vn_mid = 0, Vhat = 0, dN = 0, dFx = 0, dMac = 0, dMa = 0, dM_le = 0, dP = 0;
 };
 
-/// DeLaurier (1993) algebraic MST, aero-mst.md M1-M19, hard stall switch (stall_width ignored).
-/// If `terms` is not null it receives every intermediate value.
+/// DeLaurier (1993) algebraic MST, docs/theory.md 5.2-5.4 (M1-M19), hard stall switch (stall_width
+/// ignored). If `terms` is not null it receives every intermediate value.
 SectionLoads evalDeLaurier1993(const StripContext& context, const StripGeometry& geometry,
                                const PlanarKinematics& kinematics,
                                DeLaurierTerms* terms = nullptr);
 
-/// MST-TD (aero-mst.md 9.5). `states` holds statesPerStrip() values of this strip; their time
+/// MST-TD (docs/theory.md 5.9). `states` holds statesPerStrip() values of this strip; their time
 /// derivatives are written to `state_derivatives` (may be null when not needed).
 SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometry,
                        const SectionKinematics& kinematics, const double* states,
                        double* state_derivatives);
 
-/// Quasi-steady initial states of MST-TD for the given kinematics (aero-mst.md 9.3: z = alpha_34,
-/// f = f_st), written to `states`.
+/// Quasi-steady initial states of MST-TD for the given kinematics (docs/theory.md 5.7: z =
+/// alpha_34, f = f_st), written to `states`.
 void initialMstTdStates(const StripContext& context, const StripGeometry& geometry,
                         const SectionKinematics& kinematics, double* states);
 
-/// Static separation function f_st (aero-mst.md 9.4.1), with asymmetric stall limits; a hard
+/// Static separation function f_st (docs/theory.md 5.8), with asymmetric stall limits; a hard
 /// switch (0 or 1) when stall_width_rad == 0.
 double staticSeparation(const AeroParameters& params, double alpha_crit_rad);
 
 /// Resolve section loads into a force and a moment about the reference point P, in the frame of
-/// the section vectors (aero-mst.md 6.3): F = dN n + dFx e_c; normal components at c/4 and c/2
+/// the section vectors (docs/theory.md 5.5): F = dN n + dFx e_c; normal components at c/4 and c/2
 /// with their lever arms from P, couples about a_pitch = e_c x n.
 void resolveSectionLoads(const SectionLoads& loads, const StripGeometry& geometry,
                          const Vec3& e_c, const Vec3& n, Vec3* force_N, Vec3* moment_P_Nm);

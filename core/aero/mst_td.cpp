@@ -1,7 +1,7 @@
-// MST-TD: time-domain modified strip theory per strip (aero-mst.md section 9): circulatory lag as
-// ODE states (9.3 option A Scherer [z, f] or option B Jones [x1, x2, f]), resultant angle of attack
-// from the 3-D section kinematics (2.3), smooth lagged separation (9.4.1, 9.4.2), per-step
-// algorithm 9.5. Pure functions, no allocation.
+// MST-TD: time-domain modified strip theory per strip (docs/theory.md 5.7-5.9): circulatory lag as
+// ODE states (5.7 option A Scherer [z, f] or option B Jones [x1, x2, f]), resultant angle of attack
+// from the 3-D section kinematics (5.1), smooth lagged separation (5.8), per-step
+// algorithm 5.9. Pure functions, no allocation.
 #include <cassert>
 #include <cmath>
 
@@ -17,7 +17,7 @@ namespace {
 constexpr double kTwoPi = 2.0 * kPi;
 constexpr double kHalfPi = 0.5 * kPi;
 
-// R.T. Jones' two-term Wagner approximation (9.3 option B).
+// R.T. Jones' two-term Wagner approximation (5.7 option B).
 constexpr double kJonesA1 = 0.165;
 constexpr double kJonesB1 = 0.0455;
 constexpr double kJonesA2 = 0.335;
@@ -28,7 +28,7 @@ inline int lagStateCount(const AeroParameters& params) {
   return params.lag == CirculationLag::kScherer1 ? 1 : 2;
 }
 
-/// Section quantities of aero-mst.md 2.3 and 9.5 steps 1-3.
+/// Section quantities of docs/theory.md 5.1, 5.9 steps 1-3.
 struct FlowAtSection {
   double V_t_mps;        ///< chordwise flow, LE -> TE positive
   double qn_P_mps;       ///< q . n at P
@@ -46,7 +46,7 @@ inline FlowAtSection extractFlow(const AeroParameters& params, const StripGeomet
   const double c = geometry.chord_m;
   const double x_P = geometry.ref_aft_of_le_m;
   FlowAtSection flow;
-  // 2.3: q = v_air - v_P; a_pitch = e_c x n; V_t = -q.e_c; Vn(x) = q.n + thetadot (x - x_P).
+  // 5.1: q = v_air - v_P; a_pitch = e_c x n; V_t = -q.e_c; Vn(x) = q.n + thetadot (x - x_P).
   const Vec3 q = kin.v_air - kin.v_P;
   const Vec3 a_pitch = kin.e_c.cross(kin.n);
   flow.thetadot_radps = kin.w_s.dot(a_pitch);
@@ -59,10 +59,10 @@ inline FlowAtSection extractFlow(const AeroParameters& params, const StripGeomet
   // vdot2 = -a_P.n + q.(w_s x n) + thetaddot (c/2 - x_P)
   flow.vdot2_mps2 =
       -kin.a_P.dot(kin.n) + q.dot(kin.w_s.cross(kin.n)) + thetaddot * (0.5 * c - x_P);
-  // 9.5 step 2: V_r = max(|(V_t, Vn_34)|, V_min).
+  // 5.9 step 2: V_r = max(|(V_t, Vn_34)|, V_min).
   const double V_r = std::sqrt(flow.V_t_mps * flow.V_t_mps + flow.Vn_34_mps * flow.Vn_34_mps);
   flow.V_r_mps = V_r > params.min_speed_mps ? V_r : params.min_speed_mps;
-  // 9.5 step 3: resultant angle, clipped to +-pi/2 (pitfall 10: no atan2 wrap into the lag).
+  // 5.9 step 3: resultant angle, clipped to +-pi/2 (pitfall 10: no atan2 wrap into the lag).
   // At rest (both components exactly zero, possibly signed zeros) the angle is 0, not atan2's +-pi.
   double alpha_34 = (flow.V_t_mps == 0.0 && flow.Vn_34_mps == 0.0)
                         ? 0.0
@@ -73,7 +73,7 @@ inline FlowAtSection extractFlow(const AeroParameters& params, const StripGeomet
   return flow;
 }
 
-/// 9.3: alpha'_t = [AR/(2+AR)] (alpha_E + alpha0) - alpha0.
+/// 5.7: alpha'_t = [AR/(2+AR)] (alpha_E + alpha0) - alpha0.
 inline double finiteWingAngle(const StripContext& context, double alpha_E_rad) {
   const double alpha0 = context.params->zero_lift_angle_rad;
   return context.constants.jones_factor * (alpha_E_rad + alpha0) - alpha0;
@@ -93,7 +93,7 @@ double staticSeparation(const AeroParameters& params, double alpha_crit_rad) {
   if (!(width > 0.0)) {  // hard switch, M14
     return (alpha_crit_rad >= a_min && alpha_crit_rad <= a_max) ? 1.0 : 0.0;
   }
-  // 9.4.1: f_st = 0.5 [1 - tanh((|a| - alpha_s)/delta_s)], with alpha_s = a_max on the upper
+  // 5.8: f_st = 0.5 [1 - tanh((|a| - alpha_s)/delta_s)], with alpha_s = a_max on the upper
   // side and -a_min on the lower side. The two sides meet at the midpoint of the limits, where
   // both give the same value (continuous; for symmetric limits exactly the |a| form).
   const double midpoint = 0.5 * (a_max + a_min);
@@ -111,7 +111,7 @@ void initialMstTdStates(const StripContext& context, const StripGeometry& geomet
   assert(context.params != nullptr && states != nullptr);
   const AeroParameters& params = *context.params;
   const FlowAtSection flow = extractFlow(params, geometry, kinematics);
-  // Quasi-steady: lag states at their equilibrium, so alpha_E = alpha_34 (9.3).
+  // Quasi-steady: lag states at their equilibrium, so alpha_E = alpha_34 (5.7).
   const int n_lag = lagStateCount(params);
   if (params.lag == CirculationLag::kScherer1) {
     states[0] = flow.alpha_34_rad;
@@ -135,14 +135,14 @@ SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometr
   const double x_P = geometry.ref_aft_of_le_m;
   const double alpha0 = params.zero_lift_angle_rad;
 
-  // 9.5 steps 1-3.
+  // 5.9 steps 1-3.
   const FlowAtSection flow = extractFlow(params, geometry, kinematics);
   const double V_r = flow.V_r_mps;
   const double inv_V_r = 1.0 / V_r;
   const double thetadot = flow.thetadot_radps;
-  const double sdot = 2.0 * V_r / c;  // reduced-time rate, 1/s (9.3)
+  const double sdot = 2.0 * V_r / c;  // reduced-time rate, 1/s (5.7)
 
-  // 9.5 step 4: lagged angle alpha_E (9.3), finite-wing angle alpha'_t, stall angle alpha_crit.
+  // 5.9 step 4: lagged angle alpha_E (5.7), finite-wing angle alpha'_t, stall angle alpha_crit.
   const int n_lag = lagStateCount(params);
   double alpha_E = 0.0;
   if (params.lag == CirculationLag::kScherer1) {
@@ -158,9 +158,9 @@ SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometr
     }
   }
   const double alpha_t = finiteWingAngle(context, alpha_E);
-  const double alpha_crit = alpha_t - 0.75 * c * thetadot * inv_V_r;  // 9.4.2 (M14 form)
+  const double alpha_crit = alpha_t - 0.75 * c * thetadot * inv_V_r;  // 5.8 (M14 form)
 
-  // 9.4.1, 9.4.2: separation state. T_f0 = 0: f follows f_st instantly, derivative 0.
+  // 5.8: separation state. T_f0 = 0: f follows f_st instantly, derivative 0.
   const double f_st = staticSeparation(params, alpha_crit);
   double f = f_st;
   if (params.separation_lag_tf0 > 0.0) {
@@ -174,7 +174,7 @@ SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometr
     state_derivatives[n_lag] = 0.0;
   }
 
-  // 9.5 step 5: attached branch, bounded at large angles (boundedAttachedFlow: the finite-wing
+  // 5.9 step 5: attached branch, bounded at large angles (boundedAttachedFlow: the finite-wing
   // angle as J sin(alpha_E + alpha0) and DeLaurier's Kutta-Joukowski dynamic pressure).
   const BoundedAttachedFlow bounded =
       boundedAttachedFlow(context.constants.jones_factor, alpha_E + alpha0);
@@ -208,7 +208,7 @@ SectionLoads evalMstTd(const StripContext& context, const StripGeometry& geometr
   const double Vhat = std::sqrt(flow.V_t_mps * flow.V_t_mps + Vn_50 * Vn_50);
   const double dNc_s = params.crossflow_drag_coefficient * 0.5 * rho * Vhat * Vn_50 * c * dy;
 
-  // 9.5 step 6: blend with f (9.4.2), points of action per component (5, 6.3).
+  // 5.9 step 6: blend with f (5.8), points of action per component (5.4, 5.5).
   SectionLoads loads;
   loads.dN_c4_N = f * dNc;
   loads.dN_c2_N = (1.0 - f) * dNc_s + 0.5 * (1.0 + f) * dNa;  // (f + 0.5 (1 - f)) dNa

@@ -170,7 +170,7 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
   const double* __restrict wdy = b.wdy.data();
   const double* __restrict wdz = b.wdz.data();
 
-  // Pass 1: kinematics (2.3), lag (9.3 option A), angles of the stall criterion (9.4).
+  // Pass 1: kinematics (5.1), lag (5.7 option A), angles of the stall criterion (5.8).
 #pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
   for (Eigen::Index j = 0; j < n; ++j) {
     // q = v_air - v_P, a_pitch = e_c x n, thetadot, thetaddot, V_t, Vn(x), vdot2.
@@ -188,10 +188,10 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
     const double vdot2 = -(aPx[j] * nx[F(j)] + aPy[j] * ny[F(j)] + aPz[j] * nz[F(j)]) +
                          qx * (wy * nz[F(j)] - wz * ny[F(j)]) + qy * (wz * nx[F(j)] - wx * nz[F(j)]) +
                          qz * (wx * ny[F(j)] - wy * nx[F(j)]) + thdd * lever50[j];
-    // 9.5 steps 2-3: V_r floored; resultant 3/4-chord angle clipped to +-pi/2.
+    // 5.9 steps 2-3: V_r floored; resultant 3/4-chord angle clipped to +-pi/2.
     const double Vr = std::max(std::sqrt(Vt * Vt + Vn34 * Vn34), min_speed);
     const double alpha34 = std::max(std::min(atan2Poly(Vn34, Vt), kHalfPi), -kHalfPi);
-    // 9.3 option A: alpha_E = (1 - C1) alpha_34 + C1 z, dz/dt = sdot C2 (alpha_34 - z).
+    // 5.7 option A: alpha_E = (1 - C1) alpha_34 + C1 z, dz/dt = sdot C2 (alpha_34 - z).
     const double z = states[2 * j];
     const double alpha_E = (1.0 - C1) * alpha34 + C1 * z;
     const double alpha_t = J * (alpha_E + alpha0) - alpha0;  // alpha'_t
@@ -202,8 +202,8 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
     speed_ratio_a[j] = std::sqrt(1.0 - one_minus_J2 * (sE * sE));
     angle_b_a[j] = J * sE;
     const double inv_Vr = 1.0 / Vr;
-    const double alpha_crit = alpha_t - (lever75[j] + xP[j]) * thd * inv_Vr;  // 9.4.2: 0.75 c
-    // 9.4.1: f_st = 0.5 [1 - tanh(x)] = 1 / (1 + exp(2x)), split at the midpoint of the limits.
+    const double alpha_crit = alpha_t - (lever75[j] + xP[j]) * thd * inv_Vr;  // 5.8: 0.75 c
+    // 5.8: f_st = 0.5 [1 - tanh(x)] = 1 / (1 + exp(2x)), split at the midpoint of the limits.
     const double x = alpha_crit >= stall_mid ? alpha_crit - stall_max : stall_min - alpha_crit;
     fst_arg[j] = std::min(stall_scale * x, 700.0);
     zdot[j] = (C2 * Vr) * two_over_c[j] * (alpha34 - z);
@@ -225,7 +225,7 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
   }
   const double* __restrict fst = fst_arg;
 
-  // Pass 2: separation (9.4), attached and separated branches (9.5 step 5, M7-M17), loads (6.3).
+  // Pass 2: separation (5.8), attached and separated branches (5.9 step 5, M7-M17), loads (5.5).
   double* __restrict Fx = b.Fx.data();
   double* __restrict Fy = b.Fy.data();
   double* __restrict Fz = b.Fz.data();
@@ -252,7 +252,7 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
     const double dNa = k_apparent[j] * vdot2_a[j];                          // dNa (M8)
     const double dNs = k_crossflow[j] * std::sqrt(Vt * Vt + Vn50 * Vn50) * Vn50;  // dNc_s
     const double dN2 = (1.0 - f) * dNs + 0.5 * (1.0 + f) * dNa;
-    // Chordwise: suction (off in reversed flow), camber, friction (M9-M12), blended (9.4.2).
+    // Chordwise: suction (off in reversed flow), camber, friction (M9-M12), blended (5.8).
     const double alpha_s = angle_b - alpha0 - (lever25[j] + xP[j]) * thd * inv_Vr_a[j];  // suction
     double dFx = Vt > 0.0 ? suction_eff * kTwoPi * alpha_s * alpha_s * qcdy : 0.0;  // dTs
     dFx += kTwoPi * alpha0 * (angle_b - alpha0) * qcdy;                        // - dDcamber
@@ -260,7 +260,7 @@ void evalBatch(const StripContext& context, StripBatch& b, const double* states,
     // Couples (M17 with q_ref; V_r in the apparent-mass couple), blended.
     const double couple =
         f * (cm_ac * qrcdy * chord[j] - k_couple1[j] * Vr * thd - k_couple2[j] * thdd_a[j]);
-    // 6.3: F = dN n + dFx e_c; moment about P along a_pitch.
+    // 5.5: F = dN n + dFx e_c; moment about P along a_pitch.
     const double dN = dN4 + dN2;
     Fx[j] = dN * nx[F(j)] + dFx * ecx[F(j)];
     Fy[j] = dN * ny[F(j)] + dFx * ecy[F(j)];

@@ -1,4 +1,4 @@
-// MST-TD over all strips of a wing at once, in structure-of-arrays form (aero-mst.md 9.5): two
+// MST-TD over all strips of a wing at once, in structure-of-arrays form (docs/theory.md 5.9): two
 // fused passes over the strips that the compiler vectorises (kinematics, lag and stall angle;
 // then separation and loads), with Eigen's vectorised exp for f_st between them. Same equations,
 // same order of operations, as evalMstTd() (the scalar reference, tests/unit/aero/
@@ -31,7 +31,7 @@ struct StripBatch {
 
   // Geometry and cached coefficients (set once per model / flight speed).
   ArrayXd chord_m, width_m, ref_aft_of_le_m, friction_coefficient;
-  // Kinematics per evaluation (aero-mst.md 2.3), one frame for all vectors.
+  // Kinematics per evaluation (docs/theory.md 5.1), one frame for all vectors.
   ArrayXd ecx, ecy, ecz, nx, ny, nz;            ///< chord TE->LE, upper normal
   ArrayXd vx, vy, vz, ax, ay, az;               ///< v_P, a_P
   ArrayXd wx, wy, wz, wdx, wdy, wdz;            ///< w_s, wdot_s

@@ -1,5 +1,5 @@
 // Resolution of strip loads into a force and a moment about the strip reference point P
-// (aero-mst.md 6.3, M18 generalised to any point on the chord line).
+// (docs/theory.md 5.5, M18 generalised to any point on the chord line).
 #include <Eigen/Geometry>
 
 #include "core/aero/mst_strip.hpp"
@@ -10,7 +10,7 @@ void resolveSectionLoads(const SectionLoads& loads, const StripGeometry& geometr
                          const Vec3& e_c, const Vec3& n, Vec3* force_N, Vec3* moment_P_Nm) {
   const double c = geometry.chord_m;
   const double x_P = geometry.ref_aft_of_le_m;
-  // 6.3: F = dN n + dFx e_c (dFx acts on the chord line: no lever arm about P on the chord).
+  // 5.5: F = dN n + dFx e_c (dFx acts on the chord line: no lever arm about P on the chord).
   if (force_N != nullptr) *force_N = (loads.dN_c4_N + loads.dN_c2_N) * n + loads.dFx_N * e_c;
   if (moment_P_Nm != nullptr) {
     // A normal force N at x aft of the LE has r = -(x - x_P) e_c from P: r x (N n) =

@@ -1,4 +1,4 @@
-// Horizontal tail: seed paper Eq. (3) with the free-flight incidence of aero-mst.md section 10.
+// Horizontal tail: seed paper Eq. (3) with the free-flight incidence of docs/theory.md section 7.
 #include <cassert>
 
 #include "core/aero/tail.hpp"
@@ -16,8 +16,8 @@ TailLoads evalTail(const TailModel& tail, double density_kgpm3, const TailFlow& 
   const double V = flow.airspeed_mps;
   const double V_floor = V > kMinTailSpeedMps ? V : kMinTailSpeedMps;
   TailLoads loads;
-  // Section 10: alpha_T = (theta_B - gamma) - delta_T + Q l_T/V - eps_w (delta_T > 0 reduces it).
-  // eps_w is taken from the flow as given (the caller applies TailModel::downwash_factor).
+  // docs/theory.md 7: alpha_T = (theta_B - gamma) - delta_T + Q l_T/V - eps_w (delta_T > 0 reduces
+  // it). eps_w is taken from the flow as given (the caller applies TailModel::downwash_factor).
   loads.alpha_rad = (flow.theta_body_rad - flow.flight_path_rad) - flow.tail_angle_rad +
                     flow.pitch_rate_radps * tail.arm_m / V_floor - flow.wing_downwash_rad;
   // Eq. (3): C_L,T = [AR_T/(2+AR_T)] 2 pi alpha_T; C_D,T = C_D0,T + C_L,T^2/(pi e AR_T).

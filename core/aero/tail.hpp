@@ -1,5 +1,5 @@
 // Horizontal tail: thin-airfoil lift with the finite-wing correction and a parabolic drag polar,
-// paper Eq. (3), with the incidence generalised to free flight (aero-mst.md section 10).
+// paper Eq. (3), with the incidence generalised to free flight (docs/theory.md section 7).
 #pragma once
 
 #include "core/model/vehicle_model.hpp"
@@ -25,7 +25,7 @@ struct TailLoads {
   double drag_N = 0.0;     ///< along the flight path, rearward +
 };
 
-/// Evaluate the tail (paper Eq. 3, aero-mst.md 10). Requires tail.present.
+/// Evaluate the tail (paper Eq. 3, docs/theory.md 7). Requires tail.present.
 TailLoads evalTail(const TailModel& tail, double density_kgpm3, const TailFlow& flow);
 
 }  // namespace orni::aero

@@ -24,7 +24,7 @@
 
 namespace orni {
 
-/// Options of leadingMultipliers (style.md habit 5).
+/// Options of leadingMultipliers (docs/design.md 7.5).
 struct ArnoldiOptions {
   int count = 12;           ///< leading multipliers wanted (a conjugate pair is kept whole), >= 1
   double tol = 1e-6;        ///< Ritz residual of each wanted pair (scaled states), (0, 1e-2]

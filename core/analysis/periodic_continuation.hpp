@@ -1,4 +1,4 @@
-// Pseudo-arclength continuation of periodic orbits (issue 16, part B) over one parameter of a
+// Pseudo-arclength continuation of periodic orbits (docs/theory.md 10.5) over one parameter of a
 // period map (period_map.hpp), with the Floquet multipliers of every point and the events where
 // the branch folds or a multiplier leaves the unit circle.
 //
@@ -50,7 +50,7 @@
 
 namespace orni {
 
-/// Options of continuePeriodicOrbits (style.md habit 5).
+/// Options of continuePeriodicOrbits (docs/design.md 7.5).
 struct ContinuationOptions {
   int parameter = 0;            ///< index of the continuation parameter lambda in p (not free)
   double lambda_min = 0.0;      ///< the branch is followed while lambda stays in [min, max]

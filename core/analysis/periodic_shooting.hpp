@@ -34,7 +34,7 @@
 
 namespace orni {
 
-/// Options of one periodic-orbit solve (style.md habit 5).
+/// Options of one periodic-orbit solve (docs/design.md 7.5).
 struct ShootingOptions {
   std::vector<int> free_parameters;  ///< indices of p solved for (distinct, < P)
   std::vector<int> conditions;       ///< indices of the conditions driven to zero (as many)

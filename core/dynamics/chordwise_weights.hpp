@@ -1,13 +1,13 @@
 // Chordwise weights of a strip's section nodes for the aerodynamic coupling of the flexible wing
-// (structure.md 4.1, 4.3): the strip load distributed over the nodes L, Q, T, E of its mid-station
-// as a flat plate's loading, and the section motion the MST kernel sees taken with the same
-// weights, so that the load operators are the exact transposes of the kinematic ones.
+// (docs/theory.md 6.1, 6.3): the strip load distributed over the nodes L, Q, T, E of its
+// mid-station as a flat plate's loading, and the section motion the MST kernel sees taken with the
+// same weights, so that the load operators are the exact transposes of the kinematic ones.
 //
 // Why a distribution and not a point load at Q_j: the magpie's modal basis keeps local skin modes
 // (a 0.04 mm skin between 0.4 mm rods: 17 of its 24 modes move Q_j off the L-T chord line by more
 // than 30 % of the section's largest displacement, tests/unit/dynamics/
 // test_chordwise_coupling.cpp), and on this wing Q_j (like T_j) is a bare skin node, not a member
-// node. structure.md 4.3: a point load on a skin node is harmless only in a truncated global
+// node. docs/theory.md 6.3: a point load on a skin node is harmless only in a truncated global
 // basis; otherwise distribute the load with chordwise weights and use the same weights for the
 // kinematics. The old coupling (force at L with the moment about L as a force pair on L and T,
 // i.e. 2/3 of the quarter-chord lift on the leading-edge node and 1/3 as a point load on the bare
@@ -21,7 +21,7 @@
 // The weights: the nodal displacement between the four nodes is linear in the chordwise
 // coordinate (hat functions), and a chordwise pressure p(x) has the consistent nodal loads
 // f_i = integral N_i p dx (virtual work on that interpolation). The MST kernel's normal force has
-// two parts with known flat-plate distributions (aero-mst.md 5, 6.3): the circulatory force at
+// two parts with known flat-plate distributions (docs/theory.md 5.4, 5.5): the circulatory force at
 // c/4, Birnbaum's  p ~ sqrt((c - x)/x), and the mid-chord force (apparent mass, separated
 // cross-flow), p ~ sqrt(x (c - x)) (the apparent mass of the flat plate). Their lumped weights are
 // `force` (a_i, sum 1, centroid exactly c/4: hat functions reproduce linear fields) and
@@ -33,9 +33,9 @@
 // sum b_i = 0 and sum b_i x_i = -1 (x aft of L), so f_i is statically equivalent to F at P plus
 // the nose-up moment M (any couple of the kernel is spread as a_i - e_i per unit moment).
 // Kinematics with the same weights: v_P = sum a_i v_i, section twist rate = sum b_i n.v_i, and
-// the chord direction e_c from the same b (structure.md 4.3: kinematic and load operators
-// transposes). Two departures from the note, on purpose:
-// * structure.md 4.2 takes e_c from L and T. With the twist rate from b, e_c from L-T would give
+// the chord direction e_c from the same b (docs/theory.md 6.3: kinematic and load operators
+// transposes). Two choices, on purpose:
+// * Not e_c from L and T (docs/theory.md 6.2). With the twist rate from b, e_c from L-T would give
 //   the kernel a section angle and a pitch rate of two different chord lines; e_c ~ sum b_i s_i
 //   (unit for the undeformed section) has exactly the rate sum b_i n.u_i'. For a section that
 //   stays straight both agree, and the kernel's 3/4-chord point R = P - (c/2) e_c is then T.

@@ -79,7 +79,7 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   q_ = Eigen::Map<const Eigen::VectorXd>(y, mode_count_);
   qd_ = Eigen::Map<const Eigen::VectorXd>(y + mode_count_, mode_count_);
 
-  // Strip kinematics from rigid motion plus modes (structure.md 4.2), all strips at once.
+  // Strip kinematics from rigid motion plus modes (docs/theory.md 6.2), all strips at once.
   WingFrameMotion m;
   m.v_O_W = R_BW_.transpose() * body_.v_P1_B;
   m.omega_W = omega_W_;
@@ -89,7 +89,7 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   kin_.compute(q_, qd_, m, b);
   aero::evalMstTdBatch(model_.aero_context, b, y + aeroOffset(), aero_derivatives);
 
-  // Generalised aerodynamic forces (structure.md 4.3) and, on the left (4.4), the apparent air
+  // Generalised aerodynamic forces (docs/theory.md 6.3) and, on the left (6.4), the apparent air
   // mass along each strip's mid-chord normal and the apparent rotary inertia about e_s.
   kin_.modalForce(b, &Q_);
   // Left-hand side M_qq + A(f) as a packed lower triangle: the f-independent part plus one
@@ -97,11 +97,11 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   packed_ = mass_base_packed_;
   packed_.noalias() += flex_.stacked.apparent_per_f * b.separation_f.matrix();
 
-  // Modal equation (structure.md 3.4) with w = phi' e_x, alpha = phi'' e_x.
+  // Modal equation (docs/theory.md 4.3) with w = phi' e_x, alpha = phi'' e_x.
   modalFrameInertia(flex_, q_, qd_, flap.phi_dot_radps, flap.phi_ddot_radps2, &frame_inertia_);
   rhs_vec_ = Q_ - flex_.damping.cwiseProduct(qd_) - flex_.stiffness.cwiseProduct(q_) -
              frame_inertia_;
-  if (flex_.nonlinear()) {  // the skin's membrane stretching (structure.md 3.8)
+  if (flex_.nonlinear()) {  // the skin's membrane stretching (docs/theory.md 4.7)
     membrane_force_.setZero();
     membrane_power_W_ = flex_.membrane().addForce(q_, qd_, flex_.membrane_damping_s,
                                                   &membrane_ws_, &membrane_force_);
@@ -179,7 +179,7 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   const aero::StripBatch& b = data_.batch;  // area share of separated flow (histories only)
   aero.separated_fraction =
       ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() / (b.chord_m * b.width_m).sum();
-  // Inertial loads of the wing by nodal sums over the FE mesh (structure.md 3.5, level L3):
+  // Inertial loads of the wing by nodal sums over the FE mesh (docs/theory.md 4.4, level L3):
   // a_p = alpha x s + w x (w x s) + 2 w x Phi q' + Phi q''.
   const structure::ModalWing& mw = *flex_.modal;
   Vec3 F = Vec3::Zero(), M = Vec3::Zero(), J_alpha = Vec3::Zero();
@@ -201,7 +201,7 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   M -= J_alpha;  // rigid rotary inertia of the nodes (w x J w vanishes about the hinge axis here)
   // Hinge power into one wing: motor moment about x times phi' = aero power + rate of kinetic
   // energy + rate of strain energy (elastic and, with w_x^2 K_G, geometric: the nodal sums above
-  // hold the spin softening but not the stiffening, structure.md 3.7) + damping dissipation.
+  // hold the spin softening but not the stiffening, docs/theory.md 4.6) + damping dissipation.
   const structure::ModalMembraneStiffness::Rates membrane =
       flex_.membrane().rates(q_, qd_, flex_.membrane_damping_s, &membrane_ws_);
   rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;

@@ -1,4 +1,4 @@
-// Right-hand side of the tethered simulation with the flexible wing (structure.md 3-5): state
+// Right-hand side of the tethered simulation with the flexible wing (docs/theory.md 4, 6, 9): state
 // [q (M), q' (M), MST-TD states (2 per strip), 5 quadratures]. Workspace sized once; the RHS does
 // not allocate.
 #pragma once

@@ -21,7 +21,7 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   const std::size_t ns = mw.mesh.strip_nodes.size();
   if (ns != strip_chords_m.size())
     throw std::invalid_argument("flexible wing: mesh strips do not match the aerodynamic strips");
-  const Vec3 n_W = -Vec3::UnitZ();  // upper-surface normal of the flat wing (structure.md 1.1)
+  const Vec3 n_W = -Vec3::UnitZ();  // upper-surface normal of the flat wing (docs/theory.md 2.1)
   strips.resize(ns);
   apparent_mass_kg.resize(static_cast<Eigen::Index>(ns));
   apparent_rotary_kgm2.resize(static_cast<Eigen::Index>(ns));
@@ -35,7 +35,7 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
     s.phi_T = mw.phi_W[static_cast<std::size_t>(sn.three_quarter_chord)];
     const double c = strip_chords_m[j];
     // Flat-plate loading over L, Q, T, E and the same weights for the section's motion
-    // (chordwise_weights.hpp: the choice and the weights; structure.md 4.3).
+    // (chordwise_weights.hpp: the choice and the weights; docs/theory.md 6.3).
     const int node[4] = {sn.leading_edge, sn.quarter_chord, sn.three_quarter_chord,
                          sn.trailing_edge};
     const Vec3 e_c0 = (s.x_L_W_m - mw.mesh.nodes_W_m[static_cast<std::size_t>(node[3])])
@@ -72,7 +72,7 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
   damping = mw.dampingDiagonal();
   const structure::InertiaInvariants& inv = mw.invariants;
   M_qq = inv.generalized_mass;
-  // structure.md 3.3: C_1 = P_32 - P_23 (1-based), K_w = sum w_k w_l P_kl - |w|^2 sum_k P_kk,
+  // docs/theory.md 3.6: C_1 = P_32 - P_23 (1-based), K_w = sum w_k w_l P_kl - |w|^2 sum_k P_kk,
   // h_w = sum w_k w_l S_kl - |w|^2 sum_k S_kk; here w = w_x e_x (the hinge axis). K_w + K_G:
   // structure/inertial_stiffness.hpp.
   C1 = inv.P(2, 1) - inv.P(1, 2);

@@ -1,13 +1,13 @@
 // The flexible wing on the prescribed hinge: floating frame W attached to the P2 node, linear modal
-// deformation q (fixed-interface modes, structure.md 2.4), strip kinematics from rigid motion plus
-// modes and strip loads projected back on the modes (structure.md 3.1-3.4, 4.1-4.4).
+// deformation q (fixed-interface modes, docs/theory.md 3.2), strip kinematics from rigid motion
+// plus modes and strip loads projected back on the modes (docs/theory.md 3.6, 4.1-4.3, 6.1-6.4).
 //
-// Level L2 of structure.md 3.6: every term linear in q and q-dot of the modal equation
+// Level L2 of docs/theory.md 4.5: every term linear in q and q-dot of the modal equation
 //   (M_qq + A(f)) q'' + [D + 2 C(w)] q' + [K + K_w(w) + K_G(w) + C(alpha)] q
 //     = Q_aero - H^T alpha - h_w(w)
-// (structure.md 3.4, tethered: the fuselage does not move, so a_O = 0 and w = phi' e_x), with
-// the apparent air mass A = sum_j b_j m_a,j psi_mid,j psi_mid,j^T on the left-hand side (4.4) and
-// the geometric stiffening K_G of the wing's own inertial loads (3.7; wing.fe.inertial_stiffness
+// (docs/theory.md 4.3, tethered: the fuselage does not move, so a_O = 0 and w = phi' e_x), with
+// the apparent air mass A = sum_j b_j m_a,j psi_mid,j psi_mid,j^T on the left-hand side (6.4) and
+// the geometric stiffening K_G of the wing's own inertial loads (4.6; wing.fe.inertial_stiffness
 // selects softening and stiffening).
 #pragma once
 
@@ -25,21 +25,21 @@
 
 namespace orni {
 
-/// Per-strip modal data (W components). Sample nodes of the mid-station (structure.md 4.1):
+/// Per-strip modal data (W components). Sample nodes of the mid-station (docs/theory.md 6.1):
 /// L = leading edge, Q = quarter chord, T = three-quarter chord, E = trailing edge. The strip load
 /// is distributed over L, Q, T, E with flat-plate chordwise weights and the section motion the
 /// kernel sees is taken with the same weights (chordwise_weights.hpp: why, and the weights).
 struct FlexibleStrip {
   Vec3 x_L_W_m, x_T_W_m;            ///< undeformed sample nodes L and T
   Eigen::Matrix3Xd phi_L, phi_T;    ///< translational mode shapes at L and T (3 x M)
-  /// The kernel's section (structure.md 4.2-4.3): reference point P = sum a_i x_i (the quarter
+  /// The kernel's section (docs/theory.md 6.2, 6.3): reference point P = sum a_i x_i (the quarter
   /// chord; the strip force acts here, the moment is about it) and rear point R = P - lever_R e_c
   /// (its three-quarter chord) = sum (a_i - lever_R b_i) x_i, so that e_c = (s_P - s_R)/|.| has
   /// the rate of the section twist sum b_i n.u_i'. The rigid wing: P = L, R = T (zero modes).
   Vec3 x_P_W_m, x_R_W_m;
   Eigen::Matrix3Xd phi_P, phi_R;    ///< their mode shapes (3 x M)
   double lever_R_m = 0.0;           ///< |x_P - x_R|
-  double ref_aft_of_le_m = 0.0;     ///< the kernel's x_P (aero-mst.md 2.3): c/4 flexible, 0 rigid
+  double ref_aft_of_le_m = 0.0;     ///< the kernel's x_P (docs/theory.md 5.1): c/4 flexible, 0 rigid
   Eigen::RowVectorXd psi_twist;     ///< elastic twist per unit q, nose-up (1 x M):
                                     ///< sum_i b_i n_W^T Phi_i over L, Q, T, E
   Eigen::VectorXd psi_mid;          ///< normal displacement of the kernel's mid-chord per unit q
@@ -61,7 +61,7 @@ struct StackedStrips {
   auto apparentShapes() const { return shapes.bottomRows(2 * ns); }      ///< [psi_twist; psi_mid]
   auto psi_twist() const { return shapes.middleRows(6 * ns, ns); }  ///< elastic twist (ns x M)
   auto psi_mid() const { return shapes.middleRows(7 * ns, ns); }    ///< mid-chord normal (ns x M)
-  /// Apparent air mass on the modes (structure.md 4.4) with separation fractions f_j:
+  /// Apparent air mass on the modes (docs/theory.md 6.4) with separation fractions f_j:
   ///   A(f) = sum_j 0.5 (1 + f_j) m_a,j psi_mid psi_mid^T + f_j k_j psi_t^T psi_t
   /// (k_j = rho pi c^4/128 dy, the apparent rotary inertia of M17) = apparent_const +
   /// unpack(apparent_per_f f), the second as packed lower triangles (M(M+1)/2 x ns).
@@ -94,7 +94,7 @@ struct FlexibleWingModel {
   Eigen::MatrixXd M_qq;             ///< generalised mass Phi^T M Phi
   Eigen::MatrixXd C1;               ///< gyroscopic matrix about x_W: P_zy - P_yz (skew)
   /// K_w + K_G per w_x^2 (rotation about x_W): softening P_xx - sum_k P_kk plus the geometric
-  /// stiffness of the unit w_x^2 load, as wing.fe.inertial_stiffness selects (structure.md 3.7)
+  /// stiffness of the unit w_x^2 load, as wing.fe.inertial_stiffness selects (docs/theory.md 4.6)
   Eigen::MatrixXd spin_stiffness_x;
   Eigen::MatrixXd geometric_stiffness_x;  ///< its K_G part alone (zero without stiffening)
   structure::ModalInertialStiffness inertial_stiffness;  ///< every w_k w_l and acceleration load
@@ -105,7 +105,7 @@ struct FlexibleWingModel {
   Eigen::Index tip_strip = 0;
   StackedStrips stacked;
 
-  /// The condensed membrane of the geometrically nonlinear wing (structure.md 3.8), empty for the
+  /// The condensed membrane of the geometrically nonlinear wing (docs/theory.md 4.7), empty for the
   /// linear wing: its restoring force f_NL(q) joins K q in the modal equation.
   const structure::ModalMembraneStiffness& membrane() const { return modal->membrane; }
   bool nonlinear() const { return !modal->membrane.empty(); }
@@ -126,10 +126,10 @@ struct FlexibleWingModel {
                     const std::vector<double>& strip_widths_m);
 };
 
-/// Generalised inertial force of the moving frame on the modes (structure.md 3.4, invariant form,
+/// Generalised inertial force of the moving frame on the modes (docs/theory.md 4.3, invariant form,
 /// level L2) for w = phi' e_x, alpha = phi'' e_x (the hinge axis; tethered fuselage):
 ///   2 C(w) q' + [K_w(w) + K_G(w) + C(alpha)] q + H^T alpha + h_w(w)
-/// (K_G of alpha_x vanishes: it bends the flat wing without membrane stress, structure.md 3.7).
+/// (K_G of alpha_x vanishes: it bends the flat wing without membrane stress, docs/theory.md 4.6).
 /// `out` must have mode_count entries; no allocation.
 void modalFrameInertia(const FlexibleWingModel& flex, const Eigen::VectorXd& q,
                        const Eigen::VectorXd& qd, double phi_dot_radps, double phi_ddot_radps2,

@@ -155,8 +155,8 @@ void initialAeroStates(const FlightCoreModel& model, const BodyMotion& body,
 
 namespace {
 
-// M11 skin friction per strip (aero-mst.md M11): it depends on the flight speed U only, so it is
-// cached per speed.
+// M11 skin friction per strip (docs/theory.md 5.2 (M11)): it depends on the flight speed U only, so
+// it is cached per speed.
 void updateFrictionCache(const FlightCoreModel& model, FlightCoreData& data, double flight_speed) {
   if (flight_speed == data.friction_speed_mps) return;
   data.friction_speed_mps = flight_speed;
@@ -204,7 +204,7 @@ struct StripLoadSums {
   double separated_area = 0.0, area = 0.0;
 };
 
-// Vectorised MST-TD over all strips (aero-mst.md; the same equations as scalarStripLoads).
+// Vectorised MST-TD over all strips (docs/theory.md 5.9; the same equations as scalarStripLoads).
 StripLoadSums batchStripLoads(const FlightCoreModel& model, FlightCoreData& data,
                               const FrameAtT& fr, const AffineStripMotion& sm,
                               const double* aero_states, double* aero_state_derivatives) {
@@ -232,7 +232,7 @@ StripLoadSums batchStripLoads(const FlightCoreModel& model, FlightCoreData& data
   return sums;
 }
 
-// Strip by strip: DeLaurier 1993 (aero-mst.md 2.2, planar inputs) or the scalar MST-TD kernel.
+// Strip by strip: DeLaurier 1993 (docs/theory.md 5.1, planar inputs) or the scalar MST-TD kernel.
 StripLoadSums scalarStripLoads(const FlightCoreModel& model, FlightCoreData& data,
                                const BodyMotion& body, const ControlInput& control,
                                const FrameAtT& fr, const AffineStripMotion& sm,
@@ -242,7 +242,7 @@ StripLoadSums scalarStripLoads(const FlightCoreModel& model, FlightCoreData& dat
   const bool delaurier = veh.aero.model == AeroModelKind::kDeLaurier1993;
   const int nstate = model.aero_states_per_strip;
   const double flight_speed = body.v_P1_B.norm();
-  // DeLaurier's planar inputs (aero-mst.md 2.2): flapping-axis incidence theta_a relative to the
+  // DeLaurier's planar inputs (docs/theory.md 5.1): flapping-axis incidence theta_a relative to the
   // flight velocity, plunge direction d = e_hinge x e_span (down at zero flap).
   const double theta_a = std::atan2(body.v_P1_B.z(), body.v_P1_B.x());
   const Vec3 d_plunge_B = fr.R_BW * Vec3::UnitZ();
@@ -295,7 +295,7 @@ StripLoadSums scalarStripLoads(const FlightCoreModel& model, FlightCoreData& dat
 }
 
 // Rigid-wing inertial loads on the fuselage: -m a_cm and -(rho_cm x m a_cm + J_cm alpha +
-// omega x J_cm omega) (Newton-Euler; structure.md 3.5 with no modes), and the rate of work the
+// omega x J_cm omega) (Newton-Euler; docs/theory.md 4.4 with no modes), and the rate of work the
 // hinge does on the wing's kinetic energy (relative to the fuselage).
 struct InertialLoads {
   Vec3 F = Vec3::Zero(), M_P1 = Vec3::Zero();
@@ -333,7 +333,7 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
   updateFrictionCache(model, data, flight_speed);
   const AffineStripMotion sm = affineStripMotion(model, body, fr, flap);
 
-  // The strips' aerodynamic loads (aero-mst.md), one wing, summed.
+  // The strips' aerodynamic loads (docs/theory.md 5), one wing, summed.
   const bool batch = veh.aero.model != AeroModelKind::kDeLaurier1993 &&
                      aero::batchKernelApplies(veh.aero);
   const StripLoadSums sums =

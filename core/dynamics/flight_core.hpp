@@ -1,7 +1,7 @@
 // The periodic-flight core: wing strips, rigid-wing inertia and tail assembled into the loads that
-// the wings and tail apply to the fuselage at P1 (structure.md 3.5, aero-mst.md 6.3, paper Eq. 2).
+// the wings and tail apply to the fuselage at P1 (docs/theory.md 4.4, docs/theory.md 5.5, paper Eq. 2).
 //
-// Model vs data (style.md habit 1): FlightCoreModel is built once from a VehicleModel and never
+// Model vs data (docs/design.md 7.1): FlightCoreModel is built once from a VehicleModel and never
 // changed; FlightCoreData is the per-thread workspace, sized once. evaluateLoads() does not
 // allocate.
 #pragma once
@@ -109,7 +109,7 @@ void evaluateLoads(const FlightCoreModel& model, FlightCoreData& data, const Bod
                    const ControlInput& control, double t_s, const double* aero_states,
                    double* aero_state_derivatives, LoadSample* out);
 
-/// Quasi-steady initial aero states at time t (aero-mst.md 9.3: no start-up transient).
+/// Quasi-steady initial aero states at time t (docs/theory.md 5.7: no start-up transient).
 void initialAeroStates(const FlightCoreModel& model, const BodyMotion& body,
                        const ControlInput& control, double t_s, double* aero_states);
 
@@ -118,7 +118,7 @@ void initialAeroStates(const FlightCoreModel& model, const BodyMotion& body,
 std::array<double, kQuadratureChannels> quadratureScales(const FlightCoreModel& model,
                                                          double speed_mps);
 
-/// Tail loads about P1 (paper Eq. 3 with the incidence of aero-mst.md 10) into the tail fields of
+/// Tail loads about P1 (paper Eq. 3 with the incidence of docs/theory.md 7) into the tail fields of
 /// `out`, the fuselage parasite drag into FH_body_N, then the totals FV, FH, M from the wing, tail
 /// and body fields. Shared by the rigid and the flexible wing and by free flight.
 void addTailAndTotals(const FlightCoreModel& model, const BodyMotion& body,

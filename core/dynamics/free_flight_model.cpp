@@ -64,7 +64,7 @@ FreeFlightModel::FreeFlightModel(const FlightCoreModel& core_model,
     modal_mass = inv.generalized_mass;
     modal_stiffness = flex->stiffness;
     modal_damping = flex->damping;
-    // structure.md 3.3: C_1 = P_32 - P_23, C_2 = P_13 - P_31, C_3 = P_21 - P_12 (1-based).
+    // docs/theory.md 3.6: C_1 = P_32 - P_23, C_2 = P_13 - P_31, C_3 = P_21 - P_12 (1-based).
     C[0] = inv.P(2, 1) - inv.P(1, 2);
     C[1] = inv.P(0, 2) - inv.P(2, 0);
     C[2] = inv.P(1, 0) - inv.P(0, 1);
@@ -92,7 +92,7 @@ FreeFlightModel::FreeFlightModel(const FlightCoreModel& core_model,
   const Vec3& r2 = p_P1P2_B_m;
   const Vec3& c0 = wing_first_moment_W_kgm;
   const double m_w = wing_mass_kg;
-  // Fuselage only (structure.md 3.2): the vehicle minus both wings at zero flap angle.
+  // Fuselage only (docs/theory.md 4.2): the vehicle minus both wings at zero flap angle.
   const double wing_pitch_inertia_P1 = wing_inertia_P2_W_kgm2(1, 1) +
                                        m_w * (r2.x() * r2.x() + r2.z() * r2.z()) +
                                        2.0 * (r2.x() * c0.x() + r2.z() * c0.z());

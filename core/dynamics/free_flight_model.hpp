@@ -1,7 +1,7 @@
 // FreeFlightModel: the part of the free-flight equations (free_flight_system.hpp) that a run
-// does not change: the strips, one wing's inertia invariants about P2 (W components, structure.md
-// 3.3), their stacked modal products, the modal stiffness and damping, and the fuselage's own
-// mass, pitch inertia and centre of gravity (the vehicle minus both wings, structure.md 3.2).
+// does not change: the strips, one wing's inertia invariants about P2 (W components, docs/theory.md
+// 3.6), their stacked modal products, the modal stiffness and damping, and the fuselage's own
+// mass, pitch inertia and centre of gravity (the vehicle minus both wings, docs/theory.md 4.2).
 // Built once per vehicle and wing, then immutable: one model may serve many runs and threads,
 // each run keeping its own FreeFlightSystem (workspace, control, last results).
 #pragma once
@@ -33,7 +33,7 @@ struct FreeFlightModel {
   const StackedStrips& stacked() const { return flex ? flex->stacked : rigid_stacked; }
   Eigen::VectorXd apparent_mass_kg;   ///< rho pi c^2 / 4 times the width, per strip
 
-  // One wing's inertia invariants about P2, W components (structure.md 3.3).
+  // One wing's inertia invariants about P2, W components (docs/theory.md 3.6).
   double wing_mass_kg = 0.0;
   Vec3 wing_first_moment_W_kgm = Vec3::Zero();
   Mat3 wing_inertia_P2_W_kgm2 = Mat3::Zero();
@@ -44,12 +44,12 @@ struct FreeFlightModel {
   Eigen::VectorXd S_trace;              ///< sum_k S_kk
   Eigen::VectorXd modal_stiffness, modal_damping;  ///< diagonals
   // Stacked invariants: one product per evaluation instead of one per matrix. Pstack holds the
-  // stiffness of the inertial loads per w_k w_l, softening and stiffening (structure.md 3.3,
-  // 3.7), Gstack the geometric stiffness of the acceleration loads that stress the wing.
+  // stiffness of the inertial loads per w_k w_l, softening and stiffening (docs/theory.md 3.6,
+  // 4.6), Gstack the geometric stiffness of the acceleration loads that stress the wing.
   Eigen::MatrixXd Pstack, Cstack, Smat, Gstack;
   std::vector<structure::InertialLoad> linear_loads;  ///< acceleration loads with a K_G
 
-  // The fuselage alone (structure.md 3.2), B components.
+  // The fuselage alone (docs/theory.md 4.2), B components.
   double fuselage_mass_kg = 0.0;
   double fuselage_pitch_inertia_kgm2 = 0.0;
   Vec3 p_P1P2_B_m = Vec3::Zero();      ///< hinge point P2 from P1

@@ -159,9 +159,9 @@ FreeFlightSystem::Frame FreeFlightSystem::frameAt(double t_s, const double* y) {
   return fr;
 }
 
-// Strip kinematics from rigid plus modal motion (structure.md 4.2) at u' = 0, the kernel, the
-// generalised aerodynamic forces (4.3) and the apparent air mass along each strip's mid-chord
-// normal acceleration (4.4), A += b_j nu_j nu_j^T, b_j = 0.5 (1 + f) m_a, with the body partials
+// Strip kinematics from rigid plus modal motion (docs/theory.md 6.2) at u' = 0, the kernel, the
+// generalised aerodynamic forces (6.3) and the apparent air mass along each strip's mid-chord
+// normal acceleration (6.4), A += b_j nu_j nu_j^T, b_j = 0.5 (1 + f) m_a, with the body partials
 // nu = (n.e_x, n.e_z, n.(e_y x rho_mid)) and the modal ones psi_mid; plus the apparent rotary
 // inertia of the kernel's couple -f k theta'' (M17) about e_s, with theta'' partials
 // (0, 0, e_y.e_s, psi_twist).
@@ -220,8 +220,8 @@ void FreeFlightSystem::addWingAerodynamics(const Frame& fr, const double* y,
   w.f[2] += 2.0 * (fr.dQlin.dot(last_.F_aero_W) + eyW.dot(last_.M_aero_P2_W));
 }
 
-// Wing inertia from the invariants (structure.md 3.3-3.5), one wing, W components: gravity minus
-// inertia at u' = 0 about P2, projected on the body's generalised speeds.
+// Wing inertia from the invariants (docs/theory.md 3.6, 4.3, 4.4), one wing, W components: gravity
+// minus inertia at u' = 0 about P2, projected on the body's generalised speeds.
 void FreeFlightSystem::addWingInertiaAndGravity(const Frame& fr) {
   const FreeFlightModel& md = *model_;
   FreeFlightWorkspace& w = ws_;
@@ -284,8 +284,8 @@ void FreeFlightSystem::addWingMassMatrix(const Frame& fr) {
   A.bottomRightCorner(m, m) += 2.0 * md.modal_mass;
 }
 
-// Modal rows (structure.md 3.4): -L^T (a_O - g) - H^T alpha - h_w(w) - 2 C(w) q'
-// - [K_w(w) + K_G(p) + C(alpha)] q - D q' - K q, at u' = 0. The geometric stiffness K_G (3.7) of
+// Modal rows (docs/theory.md 4.3): -L^T (a_O - g) - H^T alpha - h_w(w) - 2 C(w) q'
+// - [K_w(w) + K_G(p) + C(alpha)] q - D q' - K q, at u' = 0. The geometric stiffness K_G (4.6) of
 // the loads at u' = 0 here; its share of the body accelerations after the solve.
 void FreeFlightSystem::addModalRows() {
   const int m = mode_count_;
@@ -323,7 +323,7 @@ void FreeFlightSystem::addModalRows() {
     r -= al[k] * ws.Cq_all.segment(k * m, m);
   }
   r.noalias() -= md.modal_stiffness.cwiseProduct(ws.q);
-  if (md.flex != nullptr && md.flex->nonlinear())  // membrane stretching (structure.md 3.8)
+  if (md.flex != nullptr && md.flex->nonlinear())  // membrane stretching (docs/theory.md 4.7)
     md.flex->membrane().addForce(ws.q, ws.qd, switches_.damping ? md.flex->membrane_damping_s : 0.0,
                                  &ws.membrane_ws, &r, -1.0);
   if (switches_.damping) r.noalias() -= md.modal_damping.cwiseProduct(ws.qd);
@@ -348,7 +348,7 @@ void FreeFlightSystem::addFuselage(const Frame& fr) {
   w.A(2, 1) += -m_f * rf.x();
 }
 
-// Tail (paper Eq. 3 with the incidence of aero-mst.md 10) and fuselage drag, B components.
+// Tail (paper Eq. 3 with the incidence of docs/theory.md 7) and fuselage drag, B components.
 void FreeFlightSystem::addTailAndBodyDrag(const Frame& fr) {
   BodyMotion bm;
   bm.v_P1_B = Vec3(fr.U, 0.0, fr.W);
@@ -529,7 +529,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   const double wing_height = std::sin(theta) * f1.x() - std::cos(theta) * f1.z();
   double strain = 0.0;
   if (m > 0) strain = ws_.q.dot(md.modal_stiffness.cwiseProduct(ws_.q));  // 2 x 1/2 q^T K q
-  if (md.flex != nullptr && md.flex->nonlinear())  // 2 wings x V_NL (structure.md 3.8)
+  if (md.flex != nullptr && md.flex->nonlinear())  // 2 wings x V_NL (docs/theory.md 4.7)
     strain += 2.0 * md.flex->membrane().energy(ws_.q, &ws_.membrane_ws);
   const Vec3& rf = md.fuselage_cg_B_m;
   const double fuselage_height = std::sin(theta) * rf.x() - std::cos(theta) * rf.z();

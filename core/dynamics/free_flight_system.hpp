@@ -1,12 +1,12 @@
 // Right-hand side of free longitudinal flight (paper Eq. 1-2) with the wings as explicit bodies
-// (structure.md 3.2, Kane's method): generalised speeds u = (U, W, Q, q'), rigid (no modes) or
-// flexible (linear modal wing, level L2 of structure.md 3.6) wings on the prescribed hinge, the
-// tail (paper Eq. 3, aero-mst.md 10) and gravity.
+// (docs/theory.md 4.2, Kane's method): generalised speeds u = (U, W, Q, q'), rigid (no modes) or
+// flexible (linear modal wing, level L2 of docs/theory.md 4.5) wings on the prescribed hinge, the
+// tail (paper Eq. 3, docs/theory.md 7) and gravity.
 //
 //   [M_fuselage + 2 (M_wing(t, q) + A_air)] u' = f_fuselage + 2 f_wing + f_tail
 //
-// M_wing is the wing's share of sum_p m_p V_p^T V_p from the inertia invariants (structure.md
-// 3.3-3.4), A_air the apparent air mass of every strip along its mid-chord normal (4.4). The factor
+// M_wing is the wing's share of sum_p m_p V_p^T V_p from the inertia invariants (docs/theory.md
+// 3.6, 4.3), A_air the apparent air mass of every strip along its mid-chord normal (6.4). The factor
 // 2 is the mirrored left wing. For a massless wing without aerodynamics this is paper Eq. (1).
 //
 // State: [x_I, h, theta, U, W, Q, q (M), q' (M), MST-TD states (2 per strip), power integral].

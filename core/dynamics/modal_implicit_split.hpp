@@ -1,14 +1,14 @@
-// Implicit-explicit split of the flexible wing's equations (structure.md 5.2). The stiff part of
+// Implicit-explicit split of the flexible wing's equations (docs/theory.md 9.2). The stiff part of
 // the modal equations is their linear structural part: with A0 = M_qq + A(f = 1), the generalised
-// mass plus the attached-flow apparent air mass of one wing (structure.md 4.4), and K, D the modal
-// stiffness and damping,
+// mass plus the attached-flow apparent air mass of one wing (docs/theory.md 6.4), and K, D the
+// modal stiffness and damping,
 //   L y:  q' = q-dot,   q-dot' = -A0^{-1} (K q + D q-dot),
 // integrated by the ESDIRK half of an additive Runge-Kutta pair; the explicit part is the full
 // right-hand side minus L y (aerodynamics, the separation-dependent apparent mass, frame inertia
-// with the time-varying spin softening and geometric stiffening of structure.md 3.7, body
+// with the time-varying spin softening and geometric stiffening of docs/theory.md 4.6, body
 // coupling).
 //
-// The nonlinear wing (structure.md 3.8) keeps its membrane force in the implicit part, exactly:
+// The nonlinear wing (docs/theory.md 4.7) keeps its membrane force in the implicit part, exactly:
 //   q-dot' = -A0^{-1} (K q + D q-dot + f_NL(q, q-dot)),
 // f_NL with the membrane's strain-rate damping (FlexibleWingModel::membrane_damping_s), and its
 // stage equations are solved by Newton's method. Why: the stretched skin is the stiffest part of
@@ -105,7 +105,7 @@ class ModalImplicitSplit {
 };
 
 /// Absolute tolerances of the mass-normalised modal coordinates (m sqrt(kg); typical size 1e-4)
-/// and their rates at relative tolerance rel_tol, structure.md 5.2: 1e-3 rel_tol for q and
+/// and their rates at relative tolerance rel_tol, docs/theory.md 9.2: 1e-3 rel_tol for q and
 /// 1e-1 rel_tol for q-dot (1e-9 and 1e-7 at rel_tol 1e-6), written to (*atol)[offset ...
 /// offset + 2M). The cycle means of the magpie agree with a rel_tol 1e-7 reference to 5e-5 of
 /// their values at the default rel_tol 1e-4 (tests/unit/dynamics/test_modal_imex.cpp).

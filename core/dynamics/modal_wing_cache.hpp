@@ -1,8 +1,8 @@
-// A cache of modal wings, owned by whoever builds many FlightCoreModels of one wing (issue 15,
-// item 9): an optimisation over the tail (each design the same wing), a sweep or sensitivity study
-// over non-structural keys, a trim that shifts the CG. Keyed by the wing's own structural inputs
-// (structure::WingStructure: the wing and its materials, nothing else of the vehicle), bounded
-// (least recently used dropped first). A dropped wing is rebuilt with the same bits.
+// A cache of modal wings, owned by whoever builds many FlightCoreModels of one wing (the FE build
+// dominates their cost): an optimisation over the tail (each design the same wing), a sweep or
+// sensitivity study over non-structural keys, a trim that shifts the CG. Keyed by the wing's own
+// structural inputs (structure::WingStructure: the wing and its materials, nothing else of the
+// vehicle), bounded (least recently used dropped first). A dropped wing is rebuilt with the same bits.
 #pragma once
 
 #include <cstddef>

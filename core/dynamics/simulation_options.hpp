@@ -1,4 +1,4 @@
-// Options of one periodic-flight simulation (style.md habit 5: plain struct, defaults, IsValid).
+// Options of one periodic-flight simulation (docs/design.md 7.5: plain struct, defaults, IsValid).
 #pragma once
 
 #include <string>
@@ -7,7 +7,7 @@ namespace orni {
 
 enum class FlightMode { kTethered, kFree };
 
-/// How the flexible wing's modal equations are integrated (structure.md 5.2). kImplicit: additive
+/// How the flexible wing's modal equations are integrated (docs/theory.md 9.2). kImplicit: additive
 /// Runge-Kutta (ARKODE ARKStep, ARK4(3)7L[2]SA) with the linear modal stiffness and damping in its
 /// ESDIRK half, everything else explicit: the steps are set by accuracy and the aerodynamic states,
 /// not by the stability of the highest mode (4-5 times fewer steps on the magpie). kExplicit: the
@@ -26,7 +26,7 @@ struct FreeFlightBounds {
   double h_m = 1.0;         ///< > 0; altitude change over the horizon (secular climb/sink)
 };
 
-/// Free-flight run settings (architecture.md 2: bounded-norm criterion, divergence handling).
+/// Free-flight run settings (docs/design.md 2: bounded-norm criterion, divergence handling).
 struct FreeFlightOptions {
   FreeFlightBounds bounds;
   double transient_fraction = 0.2;  ///< share of the cycles skipped before the verdict, [0, 0.9]

@@ -180,7 +180,7 @@ void StripKinematics::contributions(const aero::StripBatch& b, const Eigen::Vect
   // couple about e_s; the power uses the motion relative to the fuselage:
   // v_rel_P = w_rel x s_P + u'_P, w_strip = w_rel + twist' e_s,
   // v_rel_mid . n = (v_rel_P + w_strip x (mid - s_P)) . n (M19 sign: power put into the air).
-  // The kernel's force acts at P and its moment is about P (aero-mst.md 6.3), so the moment
+  // The kernel's force acts at P and its moment is about P (docs/theory.md 5.5), so the moment
   // about P2 is s_P x F + M_P.
 #pragma GCC ivdep  // distinct arrays (GCC ignores restrict on local pointers)
   for (Eigen::Index j = 0; j < n; ++j) {

@@ -1,6 +1,6 @@
-// Strip kinematics of the wing from rigid frame motion plus modes (structure.md 4.2), for all
+// Strip kinematics of the wing from rigid frame motion plus modes (docs/theory.md 6.2), for all
 // strips at once in structure-of-arrays form (the batch layout of the MST-TD kernel), and the
-// projection of the strip loads back on the modes (4.3). Shared by the tethered and the free
+// projection of the strip loads back on the modes (6.3). Shared by the tethered and the free
 // flexible wing; with zero modes it is the rigid wing. No allocation after construction.
 #pragma once
 
@@ -13,7 +13,7 @@
 namespace orni {
 
 /// Motion of the wing frame W at one instant, W components; "0" = the part without the
-/// generalised accelerations the caller solves for (structure.md 3.2: a = V u' + a0).
+/// generalised accelerations the caller solves for (docs/theory.md 4.2: a = V u' + a0).
 struct WingFrameMotion {
   Vec3 v_O_W = Vec3::Zero();       ///< velocity of P2
   Vec3 a_O0_W = Vec3::Zero();      ///< acceleration of P2
@@ -40,7 +40,7 @@ class StripKinematics {
   void setReferencePoints(aero::StripBatch& b) const;
 
   /// After the kernel: generalised aerodynamic force on the modes, Phi_P^T F + psi_twist^T m_P
-  /// (structure.md 4.3; the flat-plate nodal loads of chordwise_weights.hpp). `Q` has mode_count
+  /// (docs/theory.md 6.3; the flat-plate nodal loads of chordwise_weights.hpp). `Q` has mode_count
   /// entries.
   void modalForce(const aero::StripBatch& b, Eigen::VectorXd* Q);
 

@@ -52,7 +52,7 @@ class RigidTetheredSystem {
   void absoluteTolerances(double rel_tol, double lag_abs_tol, double separation_abs_tol,
                           std::vector<double>* atol) const {
     atol->assign(static_cast<std::size_t>(stateCount()), lag_abs_tol);
-    // The last state of each strip is its separation fraction f (aero-mst.md 9.4.2).
+    // The last state of each strip is its separation fraction f (docs/theory.md 5.8).
     const int per = model_.aero_states_per_strip;
     if (per > 0)
       for (int i = per - 1; i < n_aero_; i += per)
@@ -249,7 +249,8 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
                     "%.2e)",
                     summary.steady_state_cycle, summary.last_cycle_change, options.steady_tol);
     } else if (summary.cycles_run < 2) {
-      // No cycle-to-cycle change exists after one cycle (issue 30, item 7: it said "0.00e+00 >").
+      // No cycle-to-cycle change exists after one cycle (the message would
+      // otherwise report a meaningless "0.00e+00 >").
       std::snprintf(buf, sizeof buf,
                     "periodic steady state not reached: %d cycle run; the test compares two "
                     "consecutive cycles (run at least 2)",

@@ -1,10 +1,10 @@
-// Many independent runs on a pool of threads (architecture.md 6): aero-map points, sweep points.
+// Many independent runs on a pool of threads (docs/design.md 6): aero-map points, sweep points.
 //
 // runPoints() hands the indices of `todo` to `threads` workers through an atomic cursor (work
 // stealing: a slow point does not hold up the others). Each index is computed exactly once, by one
 // worker, and the caller stores the result in a slot of its own indexed by that index, so the
-// results do not depend on the thread count or on the order in which points finish (style.md
-// habit 1: the workers share the const model, each run owns its workspace). No file I/O here.
+// results do not depend on the thread count or on the order in which points finish (docs/design.md
+// 7.1: the workers share the const model, each run owns its workspace). No file I/O here.
 #pragma once
 
 #include <cstddef>

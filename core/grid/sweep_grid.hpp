@@ -1,4 +1,4 @@
-// The points of a sweep (architecture.md 5: a study of another kind over a grid of vehicle or
+// The points of a sweep (docs/design.md 5: a study of another kind over a grid of vehicle or
 // analysis values): the full factorial of its axes, the first axis outermost.
 //
 // Axis k has sizes[k] values; point `index` takes value axisIndices(index)[k] of axis k, with the

@@ -1,4 +1,4 @@
-// The guard between a SUNDIALS callback and our right-hand side (style.md habit 7; internal to
+// The guard between a SUNDIALS callback and our right-hand side (docs/design.md 7.7; internal to
 // core/integrate): no exception crosses the C call, a non-finite derivative is a recoverable
 // failure (the integrator retries with a smaller step).
 #pragma once

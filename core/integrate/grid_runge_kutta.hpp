@@ -27,7 +27,7 @@
 
 namespace orni {
 
-/// Step control of integrateAdaptive (chooses the grid; style.md habit 5).
+/// Step control of integrateAdaptive (chooses the grid; docs/design.md 7.5).
 struct GridStepControl {
   double rel_tol = 1e-6;          ///< (0, 1e-2]
   std::vector<double> abs_tol;    ///< one per state, > 0

@@ -1,6 +1,6 @@
 // What every ODE integration of the project is given (core/integrate): the right-hand side as a
 // plain function pointer (no virtual call, no std::function in the hot path), the linear implicit
-// part of an implicit-explicit split, and the tolerances and step limits (structure.md 5.2-5.3).
+// part of an implicit-explicit split, and the tolerances and step limits (docs/theory.md 9.2).
 // The integrators themselves: OdeIntegrator (SUNDIALS ARKODE, ode_integrator.hpp) and
 // GridRungeKutta (a recorded step grid, grid_runge_kutta.hpp).
 #pragma once

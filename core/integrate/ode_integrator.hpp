@@ -1,12 +1,12 @@
 // The ODE integrator of the flight simulations: an RAII wrapper around SUNDIALS ARKODE
-// (structure.md 5.2-5.3) that owns the SUNContext, the state vector and the stepper memory. The
+// (docs/theory.md 9.2) that owns the SUNContext, the state vector and the stepper memory. The
 // IntegrationMethod it is built with (integration_method.hpp) is the only difference between its
 // runs: an explicit Runge-Kutta table (ERKStep) or the implicit-explicit split with a linear
 // implicit part (ARKStep, the stage equations solved exactly in one step by
 // linear_stage_solver.hpp, no Newton iteration, SUNMatrix or SUNLinearSolver). Set-up, advanceTo,
 // the counters and the error path are one code for both; every step stays allocation-free.
 //
-// No exception crosses a C callback (style.md habit 7, callback_guard.hpp): the callback catches,
+// No exception crosses a C callback (docs/design.md 7.7, callback_guard.hpp): the callback catches,
 // stores the exception and returns an error code; advanceTo() re-throws it after the C call
 // returns. A non-finite derivative is a recoverable failure (the step is retried smaller).
 #pragma once

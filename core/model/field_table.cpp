@@ -1,6 +1,6 @@
 // The field table (field_table.hpp). Ranges are in FILE units; each bound is physical, and the
 // comment beside it says why. Every committed vehicle and study, and every test input meant to be
-// valid, lies inside them (issue 14 defect 5: no valid run changes).
+// valid, lies inside them (the ranges only reject values no valid run uses).
 #include "core/model/field_table.hpp"
 
 #include <stdexcept>
@@ -35,7 +35,7 @@ constexpr R kHalfTurnDeg = R::open(-90.0, 90.0);
 /// Snowbird ornithopter, 32 m span) with margin; positions relative to the CG lie within it.
 constexpr double kMaxLength_m = 20.0;
 constexpr R kPosition = R::closed(-kMaxLength_m, kMaxLength_m);
-/// Flapping cycles of a run: at least one, at most 100 000 (hours of computing; issue 14).
+/// Flapping cycles of a run: at least one, at most 100 000 (hours of computing).
 constexpr R kCycles = R::closed(1, 100000);
 /// Integrator relative tolerance: 1e-12 is near round-off for the states' scales (2.2e-16 times
 /// 1e4), looser than 1e-2 the cycle means are no longer converged.
@@ -148,7 +148,7 @@ std::vector<FieldSpec> makeTable() {
 
       // ---- [wing.fe] ----------------------------------------------------------------------------
       // 1 mm: 48 000 mesh nodes on the magpie's 0.022 m^2 wing already (the paper used 1857
-      // elements); finer meshes run for minutes and GBs (issue 14 defect 5: 0.6 mm, 50 s, 950 MB).
+      // elements); finer meshes run for minutes and GBs (measured: 0.6 mm, 50 s, 950 MB).
       number("wing.fe.element_size_m", "m", 1.0, R::closed(0.001, kMaxLength_m),
              "min(0.005, semispan)", "target finite-element edge length h", {},
              "<= wing.semispan_m; a flexible wing's mesh at most 50000 nodes"),
@@ -184,7 +184,7 @@ std::vector<FieldSpec> makeTable() {
       // ---- [aero] -------------------------------------------------------------------------------
       choice("aero.model", "mst-td | delaurier1993", "\"mst-td\"", "strip aerodynamics model"),
       choice("aero.circulation_lag", "scherer | jones", "\"scherer\"",
-             "circulation lag (aero-mst.md 9.3 options A, B)"),
+             "circulation lag (docs/theory.md 5.7 options A, B)"),
       // 0.1: a disc-like planform; 100: beyond any wing (sailplanes reach 50).
       number("aero.aspect_ratio", "-", 1.0, R::closed(0.1, 100.0), "from the planform (b^2/S)",
              "aspect ratio of the wing pair for the aerodynamic constants"),
@@ -267,6 +267,9 @@ std::vector<FieldSpec> makeTable() {
       text("vehicle", "required", "vehicle file relative to the study, or an inline [vehicle]"),
       text("vehicle_source", "none", "with an inline [vehicle]: where it came from"),
       table("override", "none", "vehicle keys replacing the vehicle file's (same names, units)"),
+      boolean("output.figures", "true",
+              "draw the figures (PNG and SVG, gnuplot); false writes only their scripts "
+              "(`ornithopter plot DIR` draws them later; --no-figures does the same)"),
 
       // ---- [simulate] ---------------------------------------------------------------------------
       choice("simulate.mode", "tethered | free", "\"tethered\"",

@@ -1,4 +1,5 @@
-// The field table: one description of every input key (issue 15, issue 14 defect 5).
+// The field table: one description of every input key, with its unit, default and valid range
+// (docs/design.md 7.11).
 //
 // Each entry names a key as it is written in a vehicle or study file (dotted path; "[]" for any
 // element of an array of tables, "*" for any name of a named table), its unit, its type, its valid
@@ -6,7 +7,7 @@
 // same entry is checked wherever the key can be set: the vehicle reader, a study's sections and
 // [override], sweep axes, sensitivity parameters, design and calibration variables, the command
 // line (FieldSpec::cli) and core's model checks (core/model/vehicle_validation.hpp, in SI:
-// range.scaled(si_per_unit)). `ornithopter keys` prints the table; the README's key reference is
+// range.scaled(si_per_unit)). `ornithopter keys` prints the table; the key reference docs/keys.md is
 // generated from it (tests/regression/readme_keys.sh fails when they drift).
 //
 // Keys that set the same quantity (the speed of the operating point, of [simulate], of a trim's

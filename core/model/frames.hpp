@@ -1,4 +1,4 @@
-// Frames and naming (style.md habit 2).
+// Frames and naming (docs/design.md 7.2).
 //
 //   I  inertial: x_I forward (horizontal), z_I down; altitude h = -z_I.
 //   B  body at P1 (the CG and moment reference): x_B forward, y_B right, z_B down; pitch theta.
@@ -28,7 +28,7 @@ inline Mat3 rotX(double a) {
   return r;
 }
 
-/// Rotation about the y axis by angle a (right hand); R_IB = rotY(theta) (structure.md 3.1).
+/// Rotation about the y axis by angle a (right hand); R_IB = rotY(theta) (docs/theory.md 4.1).
 inline Mat3 rotY(double a) {
   const double c = std::cos(a), s = std::sin(a);
   Mat3 r;

@@ -1,4 +1,4 @@
-// Accessors of the vehicle's numbers (issue 15 item 1): every number, integer and pair of the
+// Accessors of the vehicle's numbers: every number, integer and pair of the
 // field table's vehicle group (the design point's [operating_point] through designPointNumbers)
 // is read and written here, in SI, by its key. The design variables
 // (optimize/design_space.hpp), the calibration parameters (trim/calibration.hpp) and the sweep's
@@ -51,7 +51,7 @@ struct VehicleNumber {
 const std::vector<VehicleNumber>& vehicleNumbers();
 
 /// One number of a vehicle file's design point ([operating_point], VehicleDefinition), in SI.
-/// Not a VehicleNumber: the point is not part of the VehicleModel (issue 15 item 7).
+/// Not a VehicleNumber: the point is not part of the VehicleModel (docs/design.md 7.1).
 struct DesignPointNumber {
   std::string_view key;                  ///< the field-table key, "operating_point.freq_hz"
   double OperatingPoint::*member = nullptr;

@@ -1,8 +1,8 @@
 // VehicleModel: the immutable description of an ornithopter (or a wind-tunnel rig) in SI units.
 //
 // Built once from a vehicle file (studies/runner/config) and never changed by an algorithm
-// (style.md habit 1). Every field states its unit; its valid range is its entry in the field table
-// (core/model/field_table.cpp, `ornithopter keys vehicle`), checked by core
+// (docs/design.md 7.1). Every field states its unit; its valid range is its entry in the field
+// table (core/model/field_table.cpp, `ornithopter keys vehicle`), checked by core
 // (core/model/vehicle_validation.hpp) and by the readers, which name file, line and key.
 //
 // Frames (core/model/frames.hpp): B body at P1 (x forward, y right, z down), W right wing at P2
@@ -46,14 +46,15 @@ struct WingSkin {
   std::string material;      ///< key into VehicleModel::materials
   double thickness_m = 0.0;  ///< skin thickness
   /// Isotropic membrane pretension N0 (N/m) of the skin as built (a shrunk film), reacted by the
-  /// frame; adds its geometric stiffness to the wing (structure.md 3.7-3.8). 0 = slack.
+  /// frame; adds its geometric stiffness to the wing (docs/theory.md 4.6, 4.7). 0 = slack.
   double pretension_N_per_m = 0.0;
 };
 
 enum class Planform { kRectangular, kQuarterEllipse };
 enum class StructureLevel { kRigid, kFlexible };
 
-/// The joint that attaches the wing at P3 to the fuselage (structure.md 2.1; issue 13 item 1).
+/// The joint that attaches the wing at P3 to the fuselage (docs/theory.md 2.6; the paper does not
+/// say which rotations it holds).
 /// Translations are always held; the rotations held at P3 in the wing frame W are:
 enum class P3Joint {
   kUniversal,  ///< the rotation about the cross axis n_u (p3_cross_axis_normal): the paper's
@@ -63,14 +64,14 @@ enum class P3Joint {
   kClamped,    ///< all three: the stiffener roots bonded to a root block that flaps with W
 };
 
-/// Stiffness of the inertial loads on the flexible wing's modes (structure.md 3.7).
+/// Stiffness of the inertial loads on the flexible wing's modes (docs/theory.md 4.6).
 enum class InertialStiffness {
   kBoth,           ///< spin softening K_w and geometric (stress) stiffening K_G: the physics
   kSofteningOnly,  ///< K_w only: a linear flexible body with the I9 invariant (earlier versions)
-  kNone,           ///< neither: a linear flexible body without I9 (sensitivity test of 3.7)
+  kNone,           ///< neither: a linear flexible body without I9 (sensitivity test of docs/theory.md 4.6)
 };
 
-/// Finite-element and modal settings of the flexible wing (structure.md 1.6, 2.1, 2.5, 2.6, 3.7).
+/// Finite-element and modal settings of the flexible wing (docs/theory.md 2.5, 2.6, 3.4, 3.5, 4.6).
 struct WingFeSettings {
   double element_size_m = 0.005;  ///< target element edge h, <= semispan
   int max_modes = 12;             ///< fixed-interface modes kept (at most; file key "modes")
@@ -82,9 +83,9 @@ struct WingFeSettings {
   /// translation, as a membrane taped to the fuselage along the hinge line; false = the wing is
   /// attached at P2 and P3 only (the paper).
   bool root_edge_pinned = false;
-  InertialStiffness inertial_stiffness = InertialStiffness::kBoth;  ///< structure.md 3.7
+  InertialStiffness inertial_stiffness = InertialStiffness::kBoth;  ///< docs/theory.md 4.6
   /// Geometric nonlinearity of the skin and members (von Karman strains, the membrane condensed
-  /// into the modal coordinates: core/structure/membrane_rom.hpp, structure.md 3.8); false = the
+  /// into the modal coordinates: core/structure/membrane_rom.hpp, docs/theory.md 4.7); false = the
   /// linear wing. Off by default until its dynamics are validated: statically it matches the full
   /// nonlinear FE solution at mid-span, but flapping, the magpie's wing takes 25 times the steps
   /// of the linear one and shows high-frequency content not yet explained (results/README.md).
@@ -112,9 +113,9 @@ struct WingModel {
 };
 
 enum class AeroModelKind { kMstTd, kDeLaurier1993 };
-enum class CirculationLag { kScherer1, kJones2 };  ///< aero-mst.md 9.3 options A and B
+enum class CirculationLag { kScherer1, kJones2 };  ///< docs/theory.md 5.7 options A and B
 
-/// Strip-aerodynamics parameters (aero-mst.md sections 3-9; DeLaurier sign conventions).
+/// Strip-aerodynamics parameters (docs/theory.md section 5; DeLaurier sign conventions).
 struct AeroParameters {
   AeroModelKind model = AeroModelKind::kMstTd;
   CirculationLag lag = CirculationLag::kScherer1;
@@ -148,7 +149,7 @@ struct BodyModel {
                                  ///< velocity); 0 = none (the paper's Eq. 4 has none)
 };
 
-/// Horizontal tail, paper Eq. (3) with the incidence of aero-mst.md section 10.
+/// Horizontal tail, paper Eq. (3) with the incidence of docs/theory.md section 7.
 struct TailModel {
   bool present = false;
   double area_m2 = 0.0;            ///< S_T
@@ -201,8 +202,8 @@ struct VehicleModel {
 
 /// What a vehicle file holds: the vehicle and its design operating point ([operating_point]: the
 /// default point of a study's run, the trim's first guess, the periodic-orbit map's scale speed).
-/// The point is kept apart from the VehicleModel (issue 15 item 7) so that core, which takes every
-/// run's point as an argument, cannot read a second, stale one.
+/// The point is kept apart from the VehicleModel (docs/design.md 7.1) so that core, which takes
+/// every run's point as an argument, cannot read a second, stale one.
 struct VehicleDefinition {
   VehicleModel model;
   OperatingPoint design_point;

@@ -64,7 +64,7 @@ void checkMaterialName(Checker& c, const VehicleModel& v, const std::string& key
 /// The wing mesh's crossing test (core/structure/wing_mesh.cpp, buildWingMesh): two members may
 /// share end points, end on one another or overlap collinearly, but not cross in their interiors
 /// (away from their ends by more than the mesh's snap tolerance). Checked here so that the error
-/// names the member's key and line (issue 30, item 7: it was "invalid model: buildWingMesh" with
+/// names the member's key and line (the mesher's own error, "invalid model: buildWingMesh", names
 /// neither). Only between members whose points are valid, on a wing whose sizes are.
 void checkMemberCrossings(Checker& c, const WingModel& w, const std::vector<bool>& valid) {
   const FieldSpec& h = field("wing.fe.element_size_m");

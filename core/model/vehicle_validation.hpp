@@ -1,4 +1,5 @@
-// Core's checks of a VehicleModel (issue 15 "validation in the model"; issue 14 defect 5).
+// Core's checks of a VehicleModel (the validation lives in the model, so every front end
+// gets it; docs/design.md 7.6).
 //
 // Every field is checked in SI against the range of its entry in the field table
 // (core/model/field_table.hpp, scaled to SI), and the rules that tie fields together are checked

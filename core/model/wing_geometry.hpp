@@ -1,4 +1,4 @@
-// Planform geometry of the right wing and its aerodynamic strips (aero-mst.md 2.1).
+// Planform geometry of the right wing and its aerodynamic strips (docs/theory.md 2.1).
 #pragma once
 
 #include <vector>
@@ -30,7 +30,7 @@ struct Strip {
 };
 
 /// Equal-width strips over [0, s]; chords are strip-mean chords, so the strip areas sum to the
-/// planform area exactly and no strip centre sits on a zero-chord tip (aero-mst.md 2.1).
+/// planform area exactly and no strip centre sits on a zero-chord tip (docs/theory.md 2.1).
 std::vector<Strip> makeStrips(const WingModel& wing);
 
 }  // namespace orni

@@ -1,4 +1,4 @@
-// 3-D Euler-Bernoulli beam (structure.md 1.2; Przemieniecki 1968).
+// 3-D Euler-Bernoulli beam (docs/theory.md 2.2; Przemieniecki 1968).
 #include "core/structure/beam_element.hpp"
 
 #include <cmath>

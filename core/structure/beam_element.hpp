@@ -1,4 +1,4 @@
-// 3-D Euler-Bernoulli beam element, 12 DOF (structure.md 1.2): stiffness, consistent and lumped
+// 3-D Euler-Bernoulli beam element, 12 DOF (docs/theory.md 2.2): stiffness, consistent and lumped
 // mass, geometric stiffness. Matrices are returned in W components for the DOF order
 // (u, v, w, theta_x, theta_y, theta_z) of node 1, then node 2.
 #pragma once
@@ -7,7 +7,7 @@
 
 namespace orni::structure {
 
-/// Cross-section constants (structure.md 1.2 table). Local axes: x' along the beam, z' from the
+/// Cross-section constants (docs/theory.md 2.2 table). Local axes: x' along the beam, z' from the
 /// orientation vector (the wing normal), y' = z' x x'.
 struct BeamSection {
   double area_m2 = 0.0;         ///< A
@@ -51,7 +51,7 @@ Mat12 beamLumpedMass(const Vec3& x1_W_m, const Vec3& x2_W_m, const Vec3& orienta
                      const BeamProperties& p);
 
 /// Geometric stiffness for the axial force N (tension positive, N), both bending planes;
-/// `wagner_torsion` adds N I_p / (A L) on the torsion DOFs (structure.md 1.2).
+/// `wagner_torsion` adds N I_p / (A L) on the torsion DOFs (docs/theory.md 2.2).
 Mat12 beamGeometricStiffness(const Vec3& x1_W_m, const Vec3& x2_W_m, const Vec3& orientation_W,
                              const BeamProperties& p, double axial_force_n,
                              bool wagner_torsion = false);

@@ -1,4 +1,4 @@
-// CalculiX deck writer (structure.md 6.2). See calculix_deck.hpp for units and element choices.
+// CalculiX deck writer (docs/theory.md 2.7). See calculix_deck.hpp for units and element choices.
 #include "core/structure/calculix_deck.hpp"
 
 #include "core/structure/fe_assembly.hpp"
@@ -307,7 +307,7 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
   std::ostringstream out;
   out << "*HEADING\n"
       << (options.heading.empty() ? "Ornithopter wing " + wing_structure.vehicle_name : options.heading) << "\n";
-  out << "** Written by ornithopter (core/structure/calculix_deck.cpp), structure.md section 6.\n"
+  out << "** Written by ornithopter (core/structure/calculix_deck.cpp), docs/theory.md section 2.7.\n"
       << "** Units: N, mm, t, s (E in MPa, density in t/mm^3); frequencies in Hz.\n"
       << "** Frame W: x forward (leading edge at x = 0), y outboard, z = x cross y.\n"
       << "** Mesh node i is node i + 1; midside" << (split ? " and centroid" : "")
@@ -400,7 +400,7 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
         << "0., 0., 1.\n";
   }
 
-  // Joints (structure.md 2.1): P2 clamped; P3 translations plus the rotations its joint holds
+  // Joints (docs/theory.md 2.6): P2 clamped; P3 translations plus the rotations its joint holds
   // (the universal joint: about the cross axis n_u, z_W: DOF 6, y_W: DOF 5), the same DOFs as
   // wingBoundaryDofs; with a pinned root edge every node on y_W = 0, midside nodes included.
   if (options.root_edge_pinned) {

@@ -1,13 +1,13 @@
-// CalculiX 2.20 input deck of the wing finite-element model (structure.md 6.1-6.2): the same mesh,
+// CalculiX 2.20 input deck of the wing finite-element model (docs/theory.md 2.7): the same mesh,
 // members, materials and joints as assembleWingFe / wingBoundaryDofs, in quadratic CalculiX
 // elements, for an independent check of the fixed-interface frequencies (`ccx -i JOB`) and, with
 // static steps (geometrically nonlinear with NLGEOM, or linear), of static deflections under a
-// skin pressure or nodal forces (structure.md 3.8; the displacement reader is calculix_results.hpp).
+// skin pressure or nodal forces (docs/theory.md 4.7; the displacement reader is calculix_results.hpp).
 //
 // Units N-mm-t-s: coordinates in mm, E in MPa, density in t/mm^3, thickness and diameters in mm;
 // frequencies come out in Hz. Node i of the mesh is CalculiX node i + 1; midside nodes follow.
 //
-// Element choice (structure.md 6.1; measured on the EFW, h = 5 mm, 2 threads, against our DKT/CST
+// Element choice (docs/theory.md 2.7; measured on the EFW, h = 5 mm, 2 threads, against our DKT/CST
 // + Euler-Bernoulli model, first six modes): S6 skin + B32R rods: +0.7 ... +4.1 %, 8 s (default);
 // each triangle split into three S8R quads + B32R: +0.7 ... +3.5 %, 77 s; B32 instead of B32R
 // changes nothing. Linear elements do not work in ccx 2.20 (B31 refuses CIRC, S3 locks, S4 is
@@ -54,7 +54,7 @@ struct CalculixStaticLoad {
   Eigen::VectorXd nodal_load;
 };
 
-/// Static steps (structure.md 3.8): one *STEP per load factor, each ending at factor x load (the
+/// Static steps (docs/theory.md 4.7): one *STEP per load factor, each ending at factor x load (the
 /// load ramps linearly from the previous step's), time period 1 each, so step k ends at total
 /// time k (k = 1, 2, ...). With NLGEOM every step starts from the previous step's deformed state:
 /// ascending factors give a load sweep in one run.
@@ -108,7 +108,7 @@ struct CalculixDeckStats {
 /// material, a member index out of range, a node index out of range, a mode count outside
 /// [1, 10000], a deck without any step, a nodal load of the wrong size or bad increments.
 /// P2 is clamped (DOF 1-6); P3 (when the mesh has one) has DOF 1-3 and the cross-axis rotation
-/// fixed (structure.md 2.1), as wingBoundaryDofs does.
+/// fixed (docs/theory.md 2.6), as wingBoundaryDofs does.
 std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& mesh,
                          const CalculixDeckOptions& options, CalculixDeckStats* stats = nullptr);
 

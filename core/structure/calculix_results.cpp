@@ -1,4 +1,4 @@
-// CalculiX .dat displacement reader (structure.md 6.2). See calculix_results.hpp.
+// CalculiX .dat displacement reader (docs/theory.md 2.7). See calculix_results.hpp.
 #include "core/structure/calculix_results.hpp"
 
 #include <algorithm>

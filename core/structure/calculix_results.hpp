@@ -1,4 +1,4 @@
-// Reading CalculiX 2.20 results back (structure.md 6.2): the displacement tables that *NODE PRINT
+// Reading CalculiX 2.20 results back (docs/theory.md 2.7): the displacement tables that *NODE PRINT
 // writes to JOB.dat, mapped to the nodes of our mesh (mesh node i is CalculiX node i + 1; the
 // deck's midside nodes follow, calculix_deck.hpp). Units as in the deck: mm.
 #pragma once

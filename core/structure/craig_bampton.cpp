@@ -1,4 +1,4 @@
-// Craig-Bampton basis and ADAMS-style orthonormalisation (structure.md 2.2-2.4).
+// Craig-Bampton basis and ADAMS-style orthonormalisation (docs/theory.md 3.1, 3.2).
 #include "core/structure/craig_bampton.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// Craig-Bampton reduction with free boundary DOFs b_f (structure.md 2.2) and the ADAMS-style
-// orthonormalisation (structure.md 2.3). With b_f empty the basis is just the fixed-interface
-// modes (structure.md 2.4 default path).
+// Craig-Bampton reduction with free boundary DOFs b_f (docs/theory.md 3.1) and the ADAMS-style
+// orthonormalisation (docs/theory.md 3.1). With b_f empty the basis is just the fixed-interface
+// modes (docs/theory.md 3.2 default path).
 #pragma once
 
 #include <vector>
@@ -42,7 +42,7 @@ struct OrthonormalisationOptions {
   double mass_rank_relative = 1e-12;  ///< drop M_CB directions with eigenvalue < this * max
 };
 
-/// K_CB N = M_CB N Lambda*, N^T M_CB N = I; Phi* = T N (structure.md 2.3).
+/// K_CB N = M_CB N Lambda*, N^T M_CB N = I; Phi* = T N (docs/theory.md 3.1).
 struct OrthonormalModes {
   Eigen::VectorXd eigenvalues;   ///< lambda* (rad/s)^2, ascending, rigid ones exactly 0
   Eigen::MatrixXd coefficients;  ///< N

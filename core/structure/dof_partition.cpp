@@ -1,4 +1,4 @@
-// DOF partition and index-map extraction (structure.md 1.7).
+// DOF partition and index-map extraction (docs/theory.md 2.6).
 #include "core/structure/dof_partition.hpp"
 
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // Partition of the global DOFs for the fixed-interface problem and Craig-Bampton
-// (structure.md 1.7, 2.2, 2.4): interior i, free boundary b_f, clamped boundary b_c; inactive
+// (docs/theory.md 2.6, 3.1, 3.2): interior i, free boundary b_f, clamped boundary b_c; inactive
 // DOFs belong to none of them. Sub-matrices are extracted through an index map.
 #pragma once
 

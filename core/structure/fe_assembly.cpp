@@ -1,4 +1,4 @@
-// Triplet assembly of the wing FE model (structure.md 1.7).
+// Triplet assembly of the wing FE model (docs/theory.md 2.6).
 #include "core/structure/fe_assembly.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
-// Assembly of the wing finite-element model from (WingStructure, WingMesh) (structure.md 1.7):
-// sparse K and M over 6 DOF per node, the DOF activity mask (structure.md 1.4) and the boundary
-// DOF set of the fixed-interface problem (structure.md 2.1).
+// Assembly of the wing finite-element model from (WingStructure, WingMesh) (docs/theory.md 2.6):
+// sparse K and M over 6 DOF per node, the DOF activity mask (docs/theory.md 2.4) and the boundary
+// DOF set of the fixed-interface problem (docs/theory.md 2.6).
 #pragma once
 
 #include <vector>
@@ -46,17 +46,17 @@ ShellProperties skinShellProperties(const WingStructure& wing_structure);
 WingFeModel assembleWingFe(const WingStructure& wing_structure, const WingMesh& mesh,
                            const FeAssemblyOptions& options = {});
 
-/// Activity mask (structure.md 1.4): theta_z inactive at nodes no beam touches; all six DOF
+/// Activity mask (docs/theory.md 2.4): theta_z inactive at nodes no beam touches; all six DOF
 /// inactive at nodes no element touches.
 std::vector<bool> dofActivityMask(const WingMesh& mesh);
 
-/// Cross axis n_u of the universal joint at P3 (structure.md 2.1).
+/// Cross axis n_u of the universal joint at P3 (docs/theory.md 2.6).
 enum class UniversalJointCrossAxis {
   kZW,  ///< default: rotation about z_W (theta_z at P3) constrained
   kYW,  ///< alternative: rotation about y_W (theta_y at P3) constrained
 };
 
-/// How the wing is held besides the clamped hinge node P2 (structure.md 2.1).
+/// How the wing is held besides the clamped hinge node P2 (docs/theory.md 2.6).
 struct WingSupport {
   P3Joint p3_joint = P3Joint::kUniversal;
   UniversalJointCrossAxis p3_cross_axis = UniversalJointCrossAxis::kZW;  ///< universal joint only
@@ -66,7 +66,7 @@ struct WingSupport {
 };
 
 /// Boundary DOFs of the fixed-interface problem, ascending global ids: P2 all six, P3 u, v, w and
-/// the rotations its joint holds (structure.md 2.1; the universal joint: the one about n_u), and
+/// the rotations its joint holds (docs/theory.md 2.6; the universal joint: the one about n_u), and
 /// with root_edge_pinned u, v, w of every node on y_W = 0. A node index < 0 is skipped (test
 /// meshes).
 std::vector<int> wingBoundaryDofs(const WingMesh& mesh, const WingSupport& support = {});

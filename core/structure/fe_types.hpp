@@ -1,4 +1,4 @@
-// Common types of the wing finite-element model (structure.md 1.7): 6 DOF per node
+// Common types of the wing finite-element model (docs/theory.md 2.6): 6 DOF per node
 // (u, v, w, theta_x, theta_y, theta_z) in W components, global DOF = 6 * node + local.
 #pragma once
 
@@ -22,7 +22,7 @@ enum NodeDof : int { kU = 0, kV = 1, kW = 2, kThetaX = 3, kThetaY = 4, kThetaZ =
 /// Global DOF id of local DOF `dof` of node `node`.
 constexpr int globalDof(int node, int dof) { return kDofsPerNode * node + dof; }
 
-/// Mass matrix option (structure.md 1.3 lumping policy).
+/// Mass matrix option (docs/theory.md 2.3 lumping policy).
 enum class MassLumping {
   kConsistent,  ///< consistent beam and linear-triangle translational mass
   kLumped,      ///< row-sum translations, HRZ rotations (block-diagonal per node)

@@ -1,4 +1,4 @@
-// Geometric stiffness of the inertial loads (structure.md 1.2, 3.7).
+// Geometric stiffness of the inertial loads (docs/theory.md 2.2, 4.6).
 #include "core/structure/geometric_stiffness.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Geometric (stress) stiffness of the wing under its own inertial loads (structure.md 3.7, the
+// Geometric (stress) stiffness of the wing under its own inertial loads (docs/theory.md 4.6, the
 // "cheap fix" after Wallrapp & Schwertassek 1991 / SID): for each parameter p_i of the inertial
 // body-force field in W, the static stresses of the unit field and their modal geometric
 // stiffness K^_G,i = Phi^T K_G(sigma_i) Phi, so that at run time K_G(p) = sum_i p_i K^_G,i.
@@ -10,13 +10,13 @@
 // w_x w_z, w_y w_z). The nodal load of parameter i is F_i = -M a_i with the consistent mass M and
 // the nodal acceleration field a_i of the unit parameter (translations; the rotational slots carry
 // alpha, the angular acceleration of every node's rotary inertia, as in the invariants L, H and
-// S_kl of structure.md 3.3).
+// S_kl of docs/theory.md 3.6).
 //
 // Stresses: beam axial force N = EA/L x'.(u_2 - u_1) (tension positive, constant per element);
 // skin membrane force N = t C B_m u (CST, constant per facet). Geometric stiffness: the beam matrix
-// of structure.md 1.2 in both bending planes plus the Wagner torsion term N I_p / (A L); the skin's
-// membrane-stress plate matrix A grad(N_w)^T [[Nxx, Nxy], [Nxy, Nyy]] grad(N_w) on the facet's
-// normal displacement with linear interpolation (structure.md 3.7, item 2).
+// of docs/theory.md 2.2 in both bending planes plus the Wagner torsion term N I_p / (A L); the
+// skin's membrane-stress plate matrix A grad(N_w)^T [[Nxx, Nxy], [Nxy, Nyy]] grad(N_w) on the
+// facet's normal displacement with linear interpolation (docs/theory.md 4.6).
 #pragma once
 
 #include <array>
@@ -30,7 +30,7 @@
 
 namespace orni::structure {
 
-/// The parameters p_i of the inertial body-force field (structure.md 3.7), in this order.
+/// The parameters p_i of the inertial body-force field (docs/theory.md 4.6), in this order.
 enum InertialLoad : int {
   kLoadAccelX = 0,  ///< (a_O - g_W)_x, m/s^2
   kLoadAccelY,      ///< (a_O - g_W)_y

@@ -1,4 +1,4 @@
-// Inertia invariants (structure.md 3.3).
+// Inertia invariants (docs/theory.md 3.6).
 #include "core/structure/inertia_invariants.hpp"
 
 #include <stdexcept>
@@ -57,7 +57,7 @@ InertiaInvariants invariantsOperatorForm(const SparseMatrix& mass, const Eigen::
   const Eigen::MatrixXd gm = shapes.transpose() * m_phi;
   inv.generalized_mass = 0.5 * (gm + gm.transpose());
 
-  // A_kl = Phi^T M B_kl Phi (structure.md 3.3); P_kl = (A_kl + A_lk^T) / 2 so that
+  // A_kl = Phi^T M B_kl Phi (docs/theory.md 3.6); P_kl = (A_kl + A_lk^T) / 2 so that
   // P_lk = P_kl^T holds also for the consistent beam mass (equal to A_kl for a lumped M).
   std::array<Eigen::MatrixXd, 9> a;
   for (int k = 0; k < 3; ++k)

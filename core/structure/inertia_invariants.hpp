@@ -1,4 +1,4 @@
-// Inertia invariants of the modal wing about P2 in W components (structure.md 3.3): the
+// Inertia invariants of the modal wing about P2 in W components (docs/theory.md 3.6): the
 // consistent-mass operator form and the nodal-sum form (test oracle).
 #pragma once
 
@@ -33,7 +33,7 @@ InertiaInvariants invariantsOperatorForm(const SparseMatrix& mass, const Eigen::
                                          const Vec3& origin_W_m);
 
 /// Nodal-sum form with point masses m_p and optional rotary blocks J_p (3 x 3, W; empty vector =
-/// none): the sums of the structure.md 3.3 table.
+/// none): the sums of the docs/theory.md 3.6 table.
 InertiaInvariants invariantsNodalSums(const Eigen::VectorXd& nodal_mass_kg,
                                       const std::vector<Mat3>& nodal_rotary_W_kgm2,
                                       const Eigen::MatrixXd& shapes,

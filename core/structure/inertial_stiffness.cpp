@@ -1,4 +1,4 @@
-// Spin softening plus geometric stiffening on the modes (structure.md 3.3, 3.7).
+// Spin softening plus geometric stiffening on the modes (docs/theory.md 3.6, 4.6).
 #include "core/structure/inertial_stiffness.hpp"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
-// The modal stiffness of the inertial loads on the moving wing frame (structure.md 3.3, 3.4, 3.7):
-// spin softening K_w(w) from the inertia invariants and geometric stiffening K_G(p) from the unit
-// inertial stress states, combined as the vehicle's wing.fe.inertial_stiffness asks:
+// The modal stiffness of the inertial loads on the moving wing frame (docs/theory.md 3.6, 4.3,
+// 4.6): spin softening K_w(w) from the inertia invariants and geometric stiffening K_G(p) from the
+// unit inertial stress states, combined as the vehicle's wing.fe.inertial_stiffness asks:
 //   K_inertial = sum_kl w_k w_l spin_kl + sum_j p_j linear_j,
 // spin_kl = [P_kl - delta_kl sum_j P_jj] (softening; sum_j P_jj is the translational part of
-// M_qq, structure.md 3.3, so that the softening is exactly that of the nodal masses) + K^_G of
+// M_qq, docs/theory.md 3.6, so that the softening is exactly that of the nodal masses) + K^_G of
 // w_k w_l (stiffening, split evenly between (k, l) and (l, k)); linear_j = K^_G of the
 // acceleration loads (a_O - g_W) and alpha whose K^_G is not zero (for the flat wing: the
 // in-plane ones (a_O - g_W)_x, _y and alpha_z).
@@ -35,7 +35,7 @@ struct ModalInertialStiffness {
 
 /// Combines the invariants (softening) and the modal geometric stiffness (stiffening) per
 /// `model`. `kg` may be empty only when the model has no stiffening. A K^_G counts as zero when
-/// its largest entry is below 1e-12 of the largest entry of all K^_G (structure.md 3.7: only
+/// its largest entry is below 1e-12 of the largest entry of all K^_G (docs/theory.md 4.6: only
 /// in-plane loads stress a flat wing). Throws std::invalid_argument for an empty `kg` with
 /// stiffening on or for sizes that do not match.
 ModalInertialStiffness modalInertialStiffness(const InertiaInvariants& invariants,

@@ -1,4 +1,4 @@
-// Condensed membrane stiffness of the modal wing (membrane_rom.hpp, structure.md 3.8).
+// Condensed membrane stiffness of the modal wing (membrane_rom.hpp, docs/theory.md 4.7).
 #include "core/structure/membrane_rom.hpp"
 
 #include <algorithm>

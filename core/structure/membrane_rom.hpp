@@ -1,5 +1,5 @@
 // The skin's membrane stretching in the modal coordinates: an exact static condensation of the
-// in-plane unknowns of the von Karman wing (von_karman.hpp, structure.md 3.8).
+// in-plane unknowns of the von Karman wing (von_karman.hpp, docs/theory.md 4.7).
 //
 // For a flat wing the linear stiffness does not couple the in-plane DOFs (u, v, theta_z) with the
 // out-of-plane ones, and the modes kept by the dynamics bend the wing. Given the modal deflection

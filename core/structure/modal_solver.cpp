@@ -1,4 +1,4 @@
-// Spectra shift-invert generalised eigen-solution (structure.md 2.7).
+// Spectra shift-invert generalised eigen-solution (docs/theory.md 3.3).
 #include "core/structure/modal_solver.hpp"
 
 #include <algorithm>

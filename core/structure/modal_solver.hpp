@@ -1,4 +1,4 @@
-// Lowest eigenpairs of K phi = omega^2 M phi (structure.md 2.2, 2.7): Spectra
+// Lowest eigenpairs of K phi = omega^2 M phi (docs/theory.md 3.1, 3.3): Spectra
 // SymGEigsShiftSolver in shift-invert mode, or a dense solver for small problems.
 #pragma once
 
@@ -16,13 +16,13 @@ enum class EigenMethod {
 
 enum class ShiftInvertFactorization {
   kSimplicialLdlt,  ///< (K - sigma M) by Eigen::SimplicialLDLT (AMD ordering): default, faster
-  kSparseLu,        ///< Spectra::SymShiftInvert (Eigen::SparseLU), the structure.md 2.7 recipe
+  kSparseLu,        ///< Spectra::SymShiftInvert (Eigen::SparseLU), the docs/theory.md 3.3 recipe
 };
 
 struct EigenSolveOptions {
   EigenMethod method = EigenMethod::kAuto;
   ShiftInvertFactorization factorization = ShiftInvertFactorization::kSimplicialLdlt;
-  double shift = -1.0;        ///< sigma, (rad/s)^2; slightly negative (structure.md 2.7)
+  double shift = -1.0;        ///< sigma, (rad/s)^2; slightly negative (docs/theory.md 3.3)
   int max_iterations = 1000;  ///< Spectra maxit
   double tolerance = 1e-10;   ///< Spectra relative tolerance
   int subspace_size = 0;      ///< ncv; 0 = min(n, max(2 count + 1, 20))

@@ -1,4 +1,4 @@
-// Builds the ModalWing (structure.md 2.4-2.6, 3.3).
+// Builds the ModalWing (docs/theory.md 3.2, 3.4-3.6).
 #include "core/structure/modal_wing.hpp"
 
 #include <algorithm>
@@ -92,7 +92,7 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
   fe_options.mass = options.mass;
   WingFeModel fe = assembleWingFe(wing_structure, mesh, fe_options);
   // A pretensioned skin is a prestressed structure: its modes and every static solution use
-  // K + K_G(N0) (structure.md 3.7-3.8).
+  // K + K_G(N0) (docs/theory.md 4.6, 4.7).
   addSkinPretension(wing_structure, mesh, &fe);
   const DofPartition part = makeDofPartition(
       fe.active, wingBoundaryDofs(mesh, options.support), options.free_boundary_dofs);

@@ -1,5 +1,5 @@
-// ModalWing: the reduced flexible wing the dynamics consumes (structure.md 2.4-2.6, 3.3).
-// Built once by buildModalWing and then only read (style.md habit 1; share it as
+// ModalWing: the reduced flexible wing the dynamics consumes (docs/theory.md 3.2, 3.4-3.6).
+// Built once by buildModalWing and then only read (docs/design.md 7.1; share it as
 // std::shared_ptr<const ModalWing>).
 #pragma once
 
@@ -17,7 +17,7 @@
 
 namespace orni::structure {
 
-/// Modal damping schedule (structure.md 2.6).
+/// Modal damping schedule (docs/theory.md 3.5).
 enum class ModalDampingSchedule {
   kConstant,      ///< damping_ratio for every mode (physics default)
   kAdamsDefault,  ///< ADAMS CRATIO default: 1 % below 100 Hz, 10 % to 1 kHz, 100 % above
@@ -25,17 +25,17 @@ enum class ModalDampingSchedule {
 
 struct ModalWingOptions {
   MassLumping mass = MassLumping::kConsistent;  ///< M used for modes and invariants
-  WingSupport support;  ///< P3 joint and root edge (structure.md 2.1)
+  WingSupport support;  ///< P3 joint and root edge (docs/theory.md 2.6)
   /// Boundary DOFs (global ids 6 node + dof) left free (b_f) and reduced by Craig-Bampton with
-  /// orthonormalisation; empty = the default fixed-interface basis (structure.md 2.4).
+  /// orthonormalisation; empty = the default fixed-interface basis (docs/theory.md 3.2).
   std::vector<int> free_boundary_dofs;
-  ModeSelectionOptions selection;   ///< count / cut-off / effective mass (structure.md 2.5)
-  double damping_ratio = 0.015;     ///< zeta of every elastic mode, [0, 1) (structure.md 2.6)
+  ModeSelectionOptions selection;   ///< count / cut-off / effective mass (docs/theory.md 3.4)
+  double damping_ratio = 0.015;     ///< zeta of every elastic mode, [0, 1) (docs/theory.md 3.5)
   ModalDampingSchedule damping_schedule = ModalDampingSchedule::kConstant;
   EigenSolveOptions eigen;
-  /// Compute the modal geometric stiffness of the unit inertial loads (structure.md 3.7).
+  /// Compute the modal geometric stiffness of the unit inertial loads (docs/theory.md 4.6).
   bool geometric_stiffness = true;
-  /// Condense the skin's membrane stretching into the modes (structure.md 3.8,
+  /// Condense the skin's membrane stretching into the modes (docs/theory.md 4.7,
   /// membrane_rom.hpp): the geometrically nonlinear wing.
   bool nonlinear = false;
   /// Keep the in-plane relaxation shapes of the condensation (tests, deflection output).
@@ -58,9 +58,9 @@ struct ModalWing {
   Eigen::VectorXd nodal_mass_kg;          ///< lumped translational mass per node
   std::vector<Mat3> nodal_rotary_W_kgm2;  ///< lumped rotary block per node
   InertiaInvariants invariants;           ///< operator form with the chosen M, about P2
-  ModalGeometricStiffness geometric_stiffness;  ///< K^_G per unit inertial load (structure.md
-                                                ///< 3.7); empty if not asked for
-  ModalMembraneStiffness membrane;        ///< the condensed membrane (structure.md 3.8); empty
+  ModalGeometricStiffness geometric_stiffness;  ///< K^_G per unit inertial load (docs/theory.md
+                                                ///< 4.6); empty if not asked for
+  ModalMembraneStiffness membrane;        ///< the condensed membrane (docs/theory.md 4.7); empty
                                           ///< for the linear wing
   double wing_mass_kg = 0.0;              ///< members + skin
   double member_mass_kg = 0.0;
@@ -69,7 +69,7 @@ struct ModalWing {
   ModeSelection selection;
 
   int modeCount() const { return static_cast<int>(frequencies_hz.size()); }
-  /// Modal stiffness omega_k^2 and damping 2 zeta_k omega_k (structure.md 2.6).
+  /// Modal stiffness omega_k^2 and damping 2 zeta_k omega_k (docs/theory.md 3.5).
   Eigen::VectorXd stiffnessDiagonal() const;
   Eigen::VectorXd dampingDiagonal() const;
 };

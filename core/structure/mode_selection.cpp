@@ -1,4 +1,4 @@
-// Effective-mass table and mode selection (structure.md 2.5).
+// Effective-mass table and mode selection (docs/theory.md 3.4).
 #include "core/structure/mode_selection.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Mode selection (structure.md 2.5): frequency cut-off and/or count, and the effective-mass
+// Mode selection (docs/theory.md 3.4): frequency cut-off and/or count, and the effective-mass
 // criterion for rigid flapping (rotation about the hinge axis x_W through P2) and heave
 // (translation along z_W).
 #pragma once
@@ -30,7 +30,7 @@ struct ModeSelectionOptions {
   int max_modes = 12;       ///< modes computed and upper bound on the count, >= 1
   double cutoff_hz = 0.0;   ///< > 0: keep only modes with f <= cutoff_hz; 0: no cut-off
   /// In (0, 1): add modes (within max_modes) until both flap and heave cumulative effective mass
-  /// reach this fraction (structure.md 2.5 asks for 0.95); 0: no requirement.
+  /// reach this fraction (docs/theory.md 3.4 asks for 0.95); 0: no requirement.
   double min_effective_mass_fraction = 0.0;
 
   bool IsValid(std::string* why) const;

@@ -1,4 +1,4 @@
-// Rigid-body nodal vectors (structure.md 3.3).
+// Rigid-body nodal vectors (docs/theory.md 3.6).
 #include "core/structure/rigid_body_vectors.hpp"
 
 namespace orni::structure {

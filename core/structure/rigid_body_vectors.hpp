@@ -1,4 +1,4 @@
-// Rigid-body nodal vectors over 6 DOF per node (structure.md 2.5, 3.3).
+// Rigid-body nodal vectors over 6 DOF per node (docs/theory.md 3.4, 3.6).
 #pragma once
 
 #include <vector>

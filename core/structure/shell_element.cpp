@@ -1,4 +1,4 @@
-// CST membrane + DKT plate facet (structure.md 1.3; Batoz, Bathe & Ho 1980).
+// CST membrane + DKT plate facet (docs/theory.md 2.3; Batoz, Bathe & Ho 1980).
 #include "core/structure/shell_element.hpp"
 
 #include <cmath>
@@ -27,8 +27,8 @@ std::array<Vec2, 3> localCoordinates(const std::array<Vec3, 3>& x, const Mat3& t
   return xy;
 }
 
-// Per-side DKT coefficients a_k, b_k, c_k, d_k, e_k; side s = 0, 1, 2 is 4, 5, 6 of the spec,
-// joining vertices (1,2), (2,0), (0,1) (0-based).
+// Per-side DKT coefficients a_k, b_k, c_k, d_k, e_k; side s = 0, 1, 2 is mid-side node 4, 5, 6 of
+// Batoz et al., joining vertices (1,2), (2,0), (0,1) (0-based).
 struct DktSides {
   double a[3], b[3], c[3], d[3], e[3];
 };
@@ -51,7 +51,7 @@ DktSides dktSides(const std::array<Vec2, 3>& xy) {
 }
 
 // H_x and H_y (or one of their derivatives) from the six quadratic shape-function values (or
-// their derivatives) n[0..5] = N1..N6: the table of structure.md 1.3 is linear in the N.
+// their derivatives) n[0..5] = N1..N6: the table of docs/theory.md 2.3 is linear in the N.
 void dktH(const DktSides& s, const double (&n)[6], Vec9& hx, Vec9& hy) {
   for (int i = 0; i < 3; ++i) {
     const int p = (i + 2) % 3;  // side (i, i+1)

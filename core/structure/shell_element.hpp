@@ -1,6 +1,6 @@
-// Flat triangular shell facet = CST membrane + DKT plate (structure.md 1.3). 18 DOF, node order
+// Flat triangular shell facet = CST membrane + DKT plate (docs/theory.md 2.3). 18 DOF, node order
 // as given, per node (u, v, w, theta_x, theta_y, theta_z) in W components. No drilling
-// stiffness (structure.md 1.4).
+// stiffness (docs/theory.md 2.4).
 #pragma once
 
 #include <array>
@@ -44,7 +44,7 @@ Mat18 shellStiffness(const std::array<Vec3, 3>& x_W_m, const ShellProperties& p)
 
 /// Consistent facet mass: linear-triangle translational mass rho t A / 12 [2 1 1; 1 2 1; 1 1 2]
 /// per direction, plus the rotary inertia rho t^3/12 A/3 on every rotational DOF
-/// (structure.md 1.3).
+/// (docs/theory.md 2.3).
 Mat18 shellConsistentMass(const std::array<Vec3, 3>& x_W_m, const ShellProperties& p);
 
 /// Lumped facet mass: rho t A / 3 per node and direction, the same rotary inertia.

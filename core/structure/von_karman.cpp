@@ -1,4 +1,4 @@
-// Von Karman strain terms of the wing and the nonlinear static solve (structure.md 3.8).
+// Von Karman strain terms of the wing and the nonlinear static solve (docs/theory.md 4.7).
 #include "core/structure/von_karman.hpp"
 
 #include <algorithm>

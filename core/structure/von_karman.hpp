@@ -1,11 +1,11 @@
 // Geometric nonlinearity of the wing's finite-element model: von Karman (moderate-rotation)
-// strains of the skin's membrane and the members' axial stretch (structure.md 3.8).
+// strains of the skin's membrane and the members' axial stretch (docs/theory.md 4.7).
 //
 //   skin facet:  eps = B_m d + eta(w),  eta = 1/2 (w_x^2, w_y^2, 2 w_x w_y),
 //   member:      eps = x'.du / L + 1/2 |P du|^2 / L^2   (du = u_2 - u_1, P = I - x' x'^T),
 //
 // with the facet-normal displacement w interpolated linearly over the facet (its gradient is
-// constant per facet, as in the membrane-stress geometric stiffness of structure.md 3.7) and the
+// constant per facet, as in the membrane-stress geometric stiffness of docs/theory.md 4.6) and the
 // member's transverse displacement linearly along the element (chord slope). The linear parts are
 // the assembled K (CST membrane, DKT plate, Euler-Bernoulli beams): this file adds only what is
 // nonlinear in the displacements,
@@ -15,7 +15,7 @@
 // constant membrane stress whose geometric stiffness is part of K (modal_wing.cpp).
 //
 // Why von Karman and not a full large-rotation (co-rotational or total Lagrangian) shell: the
-// wing rotates rigidly with the floating frame W (structure.md 3.1), so the elastic rotations are
+// wing rotates rigidly with the floating frame W (docs/theory.md 4.1), so the elastic rotations are
 // moderate (the stiffened chord's slopes are of order 0.1), where von Karman's strain is the
 // consistent second-order approximation; it separates the flat wing's in-plane and out-of-plane
 // unknowns, which makes the exact static condensation of the membrane in the modal model possible
@@ -128,7 +128,7 @@ NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const
                                       const NonlinearStaticOptions& options = {});
 
 /// The geometric stiffness of a uniform isotropic skin pretension N0 (N/m) over every facet
-/// (structure.md 3.7's membrane-stress plate matrix with N_xx = N_yy = N0, N_xy = 0), 6n x 6n.
+/// (docs/theory.md 4.6's membrane-stress plate matrix with N_xx = N_yy = N0, N_xy = 0), 6n x 6n.
 /// Zero matrix for N0 = 0.
 SparseMatrix skinPretensionStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
                                      double pretension_Npm);

@@ -1,4 +1,4 @@
-// Station-sweep mesher of the flat right wing (structure.md 1.6).
+// Station-sweep mesher of the flat right wing (docs/theory.md 2.5).
 //
 // Stations are lines y_W = const; every member crosses a station in one key point (or lies on it,
 // for chordwise members), so members end up on mesh edges by construction. Between two stations
@@ -6,7 +6,7 @@
 // each triangulated by a zipper. Everything is ordered by coordinates and indices only, so the
 // result is deterministic.
 //
-// Choices beyond structure.md 1.6:
+// Choices beyond docs/theory.md 2.5:
 // * Points (and stations) closer than snap = min(h / 1000, min(s, c0) / 10^4) merge into one, so a
 //   member end written up to ~1e-6 m inside the trailing edge shares the edge node. The merged
 //   node takes the coordinate of the highest-priority candidate (see the priorities below); the
@@ -15,7 +15,7 @@
 //   gaps are split into equal parts no longer than h / sqrt(1 + slope^2), instead of adding the
 //   multiples of h: this keeps spacing <= h without the slivers that multiples of h would leave
 //   next to the strip stations (e.g. 14 and 15 mm for h = 7 mm).
-// * No quads and no smoothing (steps 3 option and 5 are left out).
+// * No quads and no smoothing: triangles only, nodes where the stations put them.
 #include "core/structure/wing_mesh.hpp"
 
 #include <algorithm>
@@ -236,7 +236,7 @@ int nearestStation(const std::vector<StationCandidate>& st, double y) {
   return k;
 }
 
-// Refinement (structure.md 1.6 step 1): every gap between mandatory stations is split into equal
+// Refinement (docs/theory.md 2.5 step 1): every gap between mandatory stations is split into equal
 // parts no longer than h / sqrt(1 + slope^2), slope = |dx/dy| of the flattest member spanning it.
 std::vector<StationCandidate> refineStations(const std::vector<StationCandidate>& mandatory,
                                              const std::vector<Member>& members, double h,
@@ -260,7 +260,7 @@ std::vector<StationCandidate> refineStations(const std::vector<StationCandidate>
   return out;
 }
 
-// Zipper triangulation of one region (structure.md 1.6 step 3): lower chain lower[l0..l1] on the
+// Zipper triangulation of one region (docs/theory.md 2.5 step 3): lower chain lower[l0..l1] on the
 // inner station, upper chain upper[u0..u1] on the outer station, both in ascending x_W. Each step
 // advances the chain whose new diagonal is shorter; triangles come out counter-clockwise.
 void zipper(const std::vector<Eigen::Vector3d>& p, const std::vector<int>& lower, int l0, int l1,

@@ -1,6 +1,6 @@
-// Finite-element mesh of the flat right wing in the W frame (structure.md 1.1, 1.6): shell
+// Finite-element mesh of the flat right wing in the W frame (docs/theory.md 2.1, 2.5): shell
 // triangles for the skin, beam elements along the members (always on element edges), and the
-// aerodynamic sample points of every strip on mesh nodes (structure.md 4.1).
+// aerodynamic sample points of every strip on mesh nodes (docs/theory.md 6.1).
 #pragma once
 
 #include <array>
@@ -18,7 +18,7 @@ struct BeamElement {
   int member = -1;
 };
 
-/// Mesh nodes of one aerodynamic strip, all on its mid-station y (structure.md 4.1).
+/// Mesh nodes of one aerodynamic strip, all on its mid-station y (docs/theory.md 6.1).
 struct StripSampleNodes {
   double y_W_m = 0.0;
   int leading_edge = -1;          ///< L_j, on the leading edge
@@ -38,7 +38,7 @@ struct WingMesh {
   int nodeCount() const { return static_cast<int>(nodes_W_m.size()); }
 };
 
-/// Station-sweep mesher (structure.md 1.6). `element_size_m` is the target edge length h (> 0).
+/// Station-sweep mesher (docs/theory.md 2.5). `element_size_m` is the target edge length h (> 0).
 /// Throws std::invalid_argument on a geometry it cannot mesh (e.g. crossing members).
 WingMesh buildWingMesh(const WingStructure& wing_structure, double element_size_m);
 

@@ -1,4 +1,4 @@
-// What the wing's finite-element model is built from (issue 15, item 9): the wing itself
+// What the wing's finite-element model is built from: the wing itself
 // (planform, members, skin, wing.fe settings) and the materials it names. Nothing else of the
 // vehicle (air, aerodynamics, flapping, body, tail, operating point) reaches core/structure, so
 // nothing else can change a modal wing or the key it is cached under

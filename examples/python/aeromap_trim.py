@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Aero map and trims over a frequency range from Python (README "Use from Python"); run in CI as
+"""Aero map and trims over a frequency range from Python (docs/python.md); run in CI as
 the ctest python.example.
 
   PYTHONPATH=build/python python3 examples/python/aeromap_trim.py --out results/python_example

@@ -2,7 +2,7 @@
 """Python overhead of ornithopter.simulate against the C++ benchmark
 BM_TetheredRfw10Cycles_MstTd_theta0 (tests/bench/bench_tethered.cpp): 10 cycles of the rigid RFW
 in the tunnel at U = 6 m/s, f = 4 Hz, theta = 0, MST-TD, default tolerances. No pytest; prints
-the median and the minimum of N calls (README "Use from Python", speed).
+the median and the minimum of N calls (docs/python.md, docs/speed.md).
 
   PYTHONPATH=build/python python3 python/bench/time_simulate.py [N]
   build/tests/orni_bench --benchmark_filter=BM_TetheredRfw10Cycles_MstTd_theta0

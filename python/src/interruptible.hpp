@@ -1,4 +1,4 @@
-// Long computations called from Python, interruptible by Ctrl-C (issue 17).
+// Long computations called from Python, interruptible by Ctrl-C (like the CLI, docs/design.md 4.4).
 //
 // interruptible(work) runs `work` on a worker thread while the calling thread, with the GIL
 // released, checks Python's signal handlers every 20 ms (PyErr_CheckSignals needs the GIL and

@@ -7,6 +7,8 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <string>
 
@@ -18,7 +20,9 @@
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/config/study_reader.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/output/console.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
 #include "interruptible.hpp"
 #include "tethered_run.hpp"
 #include "toml_python.hpp"
@@ -61,15 +65,21 @@ Study makeStudy(const VehicleObject& vehicle, const std::string& kind, const std
 
 /// The CLI's `run` of a study (every analysis but the tethered simulate goes through it),
 /// interruptible by Ctrl-C (interruptible.hpp).
-int runStudyInto(const Study& study, const std::string& out_dir, int threads) {
-  return orni::python::interruptible(
-      [&] { return orni::studies::runStudyLocked(study, out_dir, threads); });
+int runStudyInto(const Study& study, const std::string& out_dir, int threads, bool figures) {
+  return orni::python::interruptible([&] {
+    orni::studies::setFiguresWanted(figures);  // process-wide: each call says what it wants
+    return orni::studies::runStudyLocked(study, out_dir, threads);
+  });
 }
 
 }  // namespace
 
 PYBIND11_MODULE(_ornithopter, m) {
   m.doc() = "Compiled core of the ornithopter package (use the package `ornithopter`).";
+  // A library call is silent: the runner's result lines, notes and progress are not printed
+  // (the returned summary holds them); figures only when asked (run_study's `figures`).
+  orni::studies::setConsoleQuiet(true);
+  orni::studies::setFiguresWanted(false);
   m.attr("__version__") = orni::kVersion;
   m.attr("git_revision") = orni::kGitRevision;
 
@@ -96,12 +106,46 @@ PYBIND11_MODULE(_ornithopter, m) {
   });
 
   py::class_<VehicleObject>(m, "Vehicle")
+      // Vehicle(path) reads a file, Vehicle(dict) a vehicle document (from_dict).
+      .def(py::init([](const py::object& what) {
+             if (py::isinstance<py::dict>(what))
+               return VehicleObject::fromDict(what.cast<py::dict>(), "");
+             const std::string path =
+                 py::module_::import("os").attr("fspath")(what).cast<std::string>();
+             if (!py::module_::import("os.path").attr("isfile")(path).cast<bool>()) {
+               const py::object e = py::module_::import("builtins")
+                                        .attr("FileNotFoundError")(ENOENT, std::strerror(ENOENT), path);
+               PyErr_SetObject(PyExc_FileNotFoundError, e.ptr());
+               throw py::error_already_set();
+             }
+             return VehicleObject::load(path);
+           }),
+           py::arg("source"))
       .def_static("load", &VehicleObject::load, py::arg("path"))
       .def("__getitem__", &VehicleObject::get)
       .def("__setitem__", &VehicleObject::set)
       .def("__contains__", &VehicleObject::contains)
       .def("keys", &VehicleObject::keys)
       .def("to_toml", &VehicleObject::toToml)
+      .def_static("from_dict", &VehicleObject::fromDict, py::arg("d"), py::arg("source") = "")
+      .def_static("from_toml", &VehicleObject::fromToml, py::arg("text"), py::arg("source") = "")
+      .def("to_dict", &VehicleObject::toDict)
+      .def("items", &VehicleObject::items)
+      .def("__len__", &VehicleObject::size)
+      .def("__repr__", &VehicleObject::repr)
+      .def("__eq__", [](const VehicleObject& a, const py::object& b) -> py::object {
+        if (!py::isinstance<VehicleObject>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+        return py::bool_(a.toToml() == b.cast<const VehicleObject&>().toToml());
+      })
+      .def("__copy__", &VehicleObject::clone)
+      .def("__deepcopy__", [](const VehicleObject& v, const py::dict&) { return v.clone(); },
+           py::arg("memo"))
+      .def(py::pickle(
+          [](const VehicleObject& v) { return py::make_tuple(v.toToml(), v.source()); },
+          [](const py::tuple& t) {
+            if (t.size() != 2) throw std::runtime_error("Vehicle: a pickle state of 2 items expected");
+            return VehicleObject::fromToml(t[0].cast<std::string>(), t[1].cast<std::string>());
+          }))
       .def_property_readonly("name", [](const VehicleObject& v) { return v.model().name; })
       .def_property_readonly("source", &VehicleObject::source);
 
@@ -116,7 +160,20 @@ PYBIND11_MODULE(_ornithopter, m) {
         py::arg("path"));
   m.def("make_study", &makeStudy, py::arg("vehicle"), py::arg("kind"), py::arg("name"),
         py::arg("section"));
-  m.def("run_study", &runStudyInto, py::arg("study"), py::arg("out_dir"), py::arg("threads"));
+  m.def("run_study", &runStudyInto, py::arg("study"), py::arg("out_dir"), py::arg("threads"),
+        py::arg("figures") = false);
+  m.def(
+      "run_stability",
+      [](const VehicleObject& vehicle, const std::string& name, const py::dict& section,
+         const std::string& out_dir, bool figures) {
+        const Study study = orni::studies::stabilityStudy(makeStudy(vehicle, "trim", name, section));
+        return orni::python::interruptible([&] {
+          orni::studies::setFiguresWanted(figures);
+          return orni::studies::runStabilityLocked(study, out_dir);
+        });
+      },
+      py::arg("vehicle"), py::arg("name"), py::arg("section"), py::arg("out_dir"),
+      py::arg("figures") = false);
   m.def("simulate_tethered", &orni::python::simulateTetheredStudy, py::arg("vehicle"),
         py::arg("study"), py::arg("histories"));
   m.def("history_columns", []() {

@@ -25,6 +25,51 @@ VehicleObject VehicleObject::load(const std::string& path) {
   return v;
 }
 
+VehicleObject VehicleObject::fromDict(const py::dict& d, const std::string& source) {
+  toml::table table = toTomlTable(d, "vehicle");
+  studies::ReadContext context;
+  context.file = kPythonSource;
+  VehicleObject v;
+  v.source_ = source;
+  v.adopt(studies::parseVehicleTable(table, context, std::string()));
+  return v;
+}
+
+VehicleObject VehicleObject::fromToml(const std::string& text, const std::string& source) {
+  toml::table table = studies::parseTomlText(text, kPythonSource);
+  studies::ReadContext context;
+  context.file = kPythonSource;
+  VehicleObject v;
+  v.source_ = source;
+  v.adopt(studies::parseVehicleTable(table, context, std::string()));
+  return v;
+}
+
+VehicleObject VehicleObject::clone() const {
+  VehicleObject v;
+  v.definition_ = definition_;
+  v.document_ = document_;
+  v.keys_ = keys_;
+  v.source_ = source_;
+  const std::lock_guard<std::mutex> lock(*core_mutex_);
+  v.core_ = core_;  // immutable: shared until either vehicle changes
+  return v;
+}
+
+py::dict VehicleObject::toDict() const { return toPython(document_).cast<py::dict>(); }
+
+py::list VehicleObject::items() const {
+  py::list out;
+  for (const std::string& k : keys_) out.append(py::make_tuple(k, get(k)));
+  return out;
+}
+
+std::string VehicleObject::repr() const {
+  std::string out = "<ornithopter.Vehicle '" + definition_.model.name + "'";
+  if (!source_.empty()) out += " from '" + source_ + "'";
+  return out + ", " + std::to_string(keys_.size()) + " keys>";
+}
+
 void VehicleObject::adopt(VehicleDefinition definition) {
   definition_ = std::move(definition);
   // The resolved document: writeVehicleToml writes numbers that read back exactly, so the model

@@ -22,6 +22,22 @@ class VehicleObject {
   /// Reads a vehicle file (loadVehicleFile: the CLI's reader). Throws InputError.
   static VehicleObject load(const std::string& path);
 
+  /// A vehicle from a vehicle document: a dict in the file's key names and units
+  /// (Vehicle.to_dict()'s form), checked by the file reader. Throws InputError ("<python>").
+  static VehicleObject fromDict(const pybind11::dict& d, const std::string& source);
+  /// A vehicle from vehicle-file text (pickle's state). Throws InputError.
+  static VehicleObject fromToml(const std::string& text, const std::string& source);
+
+  /// An independent copy (its own cache lock; the immutable core model is shared until a set).
+  VehicleObject clone() const;
+
+  /// The resolved vehicle document as nested dicts and lists (file key names and units).
+  pybind11::dict toDict() const;
+  /// (key, value) for every leaf key, in document order.
+  pybind11::list items() const;
+  std::size_t size() const { return keys_.size(); }
+  std::string repr() const;
+
   pybind11::object get(const std::string& key) const;
   void set(const std::string& key, const pybind11::handle& value);
   std::vector<std::string> keys() const { return keys_; }

@@ -65,7 +65,7 @@ def test_ctrl_c_stops_an_optimisation_and_keeps_its_journal(tmp_path):
     assert interrupted(lambda: ornithopter.optimize(study, out=str(out)), after_s=2.0) < \
         STOP_WITHIN_S
     assert (out / "optimize.journal").exists()
-    # The folder says so (issue 30, item 4): summary.json "interrupted", never "ok".
+    # The folder says so (docs/design.md 4.4): summary.json "interrupted", never "ok".
     assert json.loads((out / "summary.json").read_text())["status"] == "interrupted"
 
 

@@ -20,9 +20,14 @@ def test_run_writes_the_cli_files(tmp_path):
     study = os.path.join(SOURCE_DIR, "studies", "examples", "rfw_theta20.toml")
     a, b = tmp_path / "cli", tmp_path / "py"
     assert cli("run", study, "-o", a) == 0
-    got = ornithopter.run(study, out=str(b))
+    got = ornithopter.run(study, out=str(b), figures=True)
     assert without_timings(got) == without_timings(read_summary(a))
     for name in sorted(os.listdir(a)):
-        if name.endswith(".csv"):
+        if name.endswith(".csv") or name.endswith(".gp"):
             assert (a / name).read_bytes() == (b / name).read_bytes(), name
     assert sorted(os.listdir(a)) == sorted(os.listdir(b))
+    # Without figures (the default): the same files but the drawn figures.
+    c = tmp_path / "py_quiet"
+    ornithopter.run(study, out=str(c))
+    drawn = {n for n in os.listdir(a) if n.endswith(".png") or n.endswith(".svg")}
+    assert drawn and sorted(set(os.listdir(a)) - drawn) == sorted(os.listdir(c))

@@ -1,4 +1,4 @@
-// ornithopter: the command-line front end (architecture.md 3). Only main catches everything and
+// ornithopter: the command-line front end (docs/design.md 3). Only main catches everything and
 // maps it to the exit code: 0 finished (whatever the physics verdict), 1 failed, 2 bad input.
 // The subcommands' options and wiring: studies/runner/cli/ (one file each).
 #include <CLI/CLI.hpp>
@@ -14,6 +14,7 @@
 #include "core/model/invalid_model_error.hpp"
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/toml_access.hpp"
@@ -33,7 +34,7 @@ using namespace orni::studies::cli;
 namespace {
 
 /// Bad input (exit 2): the message on rank 0 only (every rank of a distributed run parses and
-/// loads the same input and meets the same error; issue 30, item 7).
+/// loads the same input and meets the same error, which one message reports).
 int badInput(const std::string& message) {
   if (farmWriter()) std::cerr << "ornithopter: error: " << message << "\n";
   return kExitBadInput;
@@ -59,6 +60,14 @@ int runCommandLine(int argc, char** argv) {
       },
       "Print the version and git revision");
   const std::vector<Subcommand> commands = addSubcommands(app);
+  // --no-figures on every command that runs a study: figure scripts only ([output] figures).
+  bool no_figures = false;
+  for (const Subcommand& c : commands)
+    if (c.app->get_name() != "plot" && c.app->get_name() != "keys" &&
+        c.app->get_name() != "report")
+      c.app->add_flag("--no-figures", no_figures,
+                      "Write the figures' scripts (*.gp) but draw no figure (as [output] figures "
+                      "= false; `ornithopter plot DIR` draws them later)");
 
   // A mistyped subcommand: name the nearest one, as a mistyped key does.
   const std::vector<std::string> subcommands = subcommandNames(app);
@@ -88,6 +97,7 @@ int runCommandLine(int argc, char** argv) {
     // Every subcommand returns here; CLI11 rejects any other name before this point.
     if (parsed == commands.end())
       throw std::logic_error("unhandled subcommand " + app.get_subcommands().front()->get_name());
+    setFiguresWanted(!no_figures);
     return parsed->run();
   } catch (const InputError& e) {
     return badInput(e.what());

@@ -3,7 +3,7 @@
 // the default; explicit:0); explicit:1 is the explicit ARK4(3)6L run, for comparison.
 //   BM_EfwModalWingBuild: mesh (5 mm) + assembly + eigen-solution + reduction (incl. the
 //     geometric-stiffness projections and, nonlinear:1, the condensed membrane of the
-//     geometrically nonlinear wing, structure.md 3.8); modes:0 = the vehicle's 24, modes:12 = the
+//     geometrically nonlinear wing, docs/theory.md 4.7); modes:0 = the vehicle's 24, modes:12 = the
 //     count of earlier versions (the like-for-like comparison with their figures). Target:
 //     <= 0.5 s with the nonlinear identification.
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the vehicle's operating point, MST-TD;

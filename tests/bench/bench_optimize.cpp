@@ -85,7 +85,7 @@ void evaluate(benchmark::State& state, const Case& c) {
   o.trim = defaultTrimOptions(magpieFile().design_point);
   o.trim.initial.freq_hz = c.freq_hz;
   constexpr double kDeg = 0.017453292519943295;
-  if (c.freq_hz < 10.0) {  // the 6 Hz trim of README.md
+  if (c.freq_hz < 10.0) {  // the 6 Hz trim (docs/speed.md, one design evaluation)
     o.trim.initial.theta_rad = 14.0 * kDeg;
     o.trim.initial.speed_mps = 8.0;
     o.trim.initial.tail_angle_rad = 30.0 * kDeg;

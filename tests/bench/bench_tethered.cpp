@@ -1,4 +1,4 @@
-// Speed of the periodic-flight core (issue targets are quoted in README.md and the closing notes).
+// Speed of the periodic-flight core (issue targets: docs/speed.md and the closing notes).
 //   BM_TetheredRfw10Cycles/mst-td : 10 flapping cycles of the rigid-wing tethered RFW case,
 //                                   27 strips, MST-TD, default tolerances (target <= 2 ms).
 #include <benchmark/benchmark.h>

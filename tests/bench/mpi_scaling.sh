@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Scripted measurement of distributed runs (issue 18; README "Running on a cluster (MPI)"): the
+# Scripted measurement of distributed runs (issue 18; docs/speed.md, docs/user-guide.md): the
 # 180-point aero map of paper Fig. 5 (studies/paper/fig5_efw_aeromap.toml) single-process -j 1,
 # and under mpirun with 1 and 2 worker ranks (-n 2 and -n 3: rank 0 is the master), wall times,
 # the speed-up from 1 to 2 workers, the master's own line (messages, bytes, busy time per point),

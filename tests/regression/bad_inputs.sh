@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI contract (architecture.md section 3): every malformed file in tests/data/bad is rejected with
+# CLI contract (docs/design.md section 3): every malformed file in tests/data/bad is rejected with
 # exit status 2 and a message on stderr that names the file.
 #   usage: bash bad_inputs.sh <ornithopter-binary> <repo-root> <scratch-dir>
 # A file with a top-level `kind = ...` key (before the first table header) is a study and runs with

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Cross-code check (structure.md 6): the EFW's first six fixed-interface frequencies from
+# Cross-code check (docs/theory.md 2.7): the EFW's first six fixed-interface frequencies from
 # `ornithopter modes` agree with CalculiX 2.20 run on the deck that `--export-ccx` writes (S6 skin +
 # B32R rods, same mesh, the same P3 joint) within 5 % for the committed vehicle (Table 1's member
 # diameters, member_diameter_scale = 1; measured 1.00-1.04). (Rods much thicker than the mesh, as

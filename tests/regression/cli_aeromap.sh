@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI and output contract of `ornithopter aeromap` (architecture.md 3 and 4; paper Fig. 5): the
+# CLI and output contract of `ornithopter aeromap` (docs/design.md 3, 4; paper Fig. 5): the
 # files, names and units rows, summary keys, byte-identical aeromap.csv for -j 1 and -j 2 and for
 # the resolved study, figures that `plot` redraws, exit 2 for malformed grid specs, and a
 # kill -9 in the middle of a map followed by a resume that gives the same bytes.

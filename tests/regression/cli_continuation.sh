@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI and output contract of studies of kind "continuation" (issue 16, part B): the branch of
+# CLI and output contract of studies of kind "continuation" (docs/theory.md 10.5): the branch of
 # periodic trims of the magpie over the flapping frequency, its CSV and summary keys, the figure,
 # the resolved study as a fixed point, the same bytes with -j 2 and after a kill and a resume, and exit 2 with
 # file, line and key for bad input.

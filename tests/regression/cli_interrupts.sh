@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Interrupts (issue 30, item 4): SIGINT or SIGTERM at any phase of a run ends it with exit 130 or
+# Interrupts (docs/design.md 4.4): SIGINT or SIGTERM at any phase of a run ends it with exit 130 or
 # 143 and status "interrupted" in summary.json (never "ok"), the journal kept, no temporary file,
 # drawing folder or lock left, and the figure program (gnuplot) stopped too.
 #   - while computing (a long tethered simulation): SIGINT -> 130, SIGTERM -> 143;

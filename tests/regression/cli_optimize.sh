@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# CLI and output contract of `ornithopter optimize` and `kind = "optimize"` studies (architecture.md
+# CLI and output contract of `ornithopter optimize` and `kind = "optimize"` studies (docs/design.md
 # 3-5, issue 6): a tiny optimisation (rigid magpie at 12 Hz, Eq. (4) trim only; tail area and arm; 2
 # starts of 6 evaluations) writes the contracted summary keys, history.csv with names and units
 # rows and one row per evaluation, the best design as a vehicle file and the convergence figure;
 # history.csv is byte-identical for -j 1 and -j 2, through `run` and for the resolved study; the
 # best vehicle re-runs through `ornithopter trim` with the reported objective (issue acceptance 3);
 # a kill -9 followed by a resume gives the same bytes; the periodic trim with the Floquet constraint
-# (issue 16) reports the orbit's multipliers; bad input exits 2.
+# (docs/theory.md 10.3) reports the orbit's multipliers; bad input exits 2.
 #   usage: bash cli_optimize.sh <ornithopter-binary> <repo-root> <scratch-dir>
 set -u
 bin=${1:?}; root=${2:?}; scratch=${3:?}
@@ -117,7 +117,7 @@ else
   echo "skip kill-and-resume: the run finished before it could be killed"
 fi
 
-# The periodic trim and the Floquet constraint (issue 16): the flexible magpie, tail area only, 3
+# The periodic trim and the Floquet constraint (docs/theory.md 10.3): the flexible magpie, tail area only, 3
 # evaluations. The baseline design's largest multiplier is the one `trim --method periodic` reports
 # for the same vehicle and frequency (the same code path: the same digits).
 periodic="$scratch/periodic.toml"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # CLI and output contract of the periodic-orbit trim (`ornithopter trim --method periodic`,
-# [trim] method = "periodic") and `ornithopter stability` (architecture.md 3-4, issue 16): the
+# [trim] method = "periodic") and `ornithopter stability` (docs/design.md 3, 4, issue 16): the
 # contracted summary keys (the trim keys plus method, periodic_residual, floquet {multipliers,
 # stable, max_modulus}), the CSV names and units rows, the figures, the resolved study as a fixed
 # point, and exit 2 with file, line and key for bad input.

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Long runs show progress (issue 30, item 6): a run with no points to count (simulate, trim,
+# Long runs show progress (docs/design.md 4.4): a run with no points to count (simulate, trim,
 # stability, calibrate, continuation) writes "KIND: working, N s elapsed" on stderr from its 2nd
 # second on (every 10 s in a log), and a short run nothing more than before. ~6 s in Release. The audited version
 # printed nothing for over 120 s (`stability efw_magpie.toml --freq 0.01`, and trim there).

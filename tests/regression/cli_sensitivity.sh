@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI and output contract of `kind = "sensitivity"` studies (architecture.md 3-6) on a cheap case:
+# CLI and output contract of `kind = "sensitivity"` studies (docs/design.md 3-6) on a cheap case:
 # a frozen rigid-wing magpie, two parameters (5 points), short free flights. The files, names and
 # units rows, the row order (base, then each parameter low and high), statuses and empty cells
 # (never NaN), summary keys, tornado.csv ranked by swing, the figures that `plot` redraws, exit 2

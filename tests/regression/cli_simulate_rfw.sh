@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI and output contract of `ornithopter simulate` (architecture.md 3 and 4) on the paper's RFW
+# CLI and output contract of `ornithopter simulate` (docs/design.md 3, 4) on the paper's RFW
 # wind-tunnel case (issue acceptance 2): contracted files, names and units rows, the physics of
 # paper Fig. 2 read back from summary.json, exit codes.
 #   usage: bash cli_simulate_rfw.sh <ornithopter-binary> <repo-root> <scratch-dir>

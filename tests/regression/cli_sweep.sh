@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI and output contract of `kind = "sweep"` studies (architecture.md 3-6): the files, names and
+# CLI and output contract of `kind = "sweep"` studies (docs/design.md 3-6): the files, names and
 # units rows, row order (first axis outermost), summary keys, byte-identical sweep.csv for -j 1
 # and -j 2 and for the resolved study, the figure that `plot` redraws, a free-flight sweep, exit 2
 # for a bad axis, the trim example over 10..16 Hz (status ok or not_converged per point, never

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# CLI and output contract of `ornithopter trim` and `kind = "trim"` studies (architecture.md 3-5):
+# CLI and output contract of `ornithopter trim` and `kind = "trim"` studies (docs/design.md 3-5):
 # the contracted summary keys, status ok or not_converged with exit 0, the CSV names and units rows,
 # the resolved study as a fixed point, the figure, exit codes for bad input.
 #   usage: bash cli_trim.sh <ornithopter-binary> <repo-root> <scratch-dir>

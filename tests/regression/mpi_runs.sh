@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Distributed runs (issue 18): `mpirun -n 3` (rank 0 the master, two workers) gives the same bytes
+# Distributed runs (docs/design.md 6): `mpirun -n 3` (rank 0 the master, two workers) gives the same bytes
 # as `-j 1` for a small aero map (through `run` and the `aeromap` subcommand), a trim sweep and a
 # 3-start optimisation; a map killed under mpirun (kill -9 of rank 1) resumes without MPI and with
 # it, to the same bytes, without recomputing the journaled points. Skipped (exit 77) when the

@@ -90,6 +90,22 @@ for s in "${fast[@]}"; do cp -r "$base/$s" "$scratch/base/"; done
 "$tool" compare "$scratch/base" "$scratch/new" --rel "$rel" --abs-scale "$abs_scale" --report 12
 check "every value matches the committed baselines" test $? -eq 0
 
+# --- the HTML reports, in a real browser ------------------------------------------------------
+# Every run folder has its index.html and the set of runs DIR/index.html; headless Chromium loads
+# each (the fresh ones and the committed results/paper/ ones) and fails on a console message, an
+# image not shown or a broken link (tests/support/check_reports.sh).
+check "the set of runs has its report index.html" test -f "$scratch/new/index.html"
+for s in "${fast[@]}"; do
+  [[ -f "$scratch/new/$s/index.html" ]] || { echo "FAIL no report $scratch/new/$s/index.html"; fail=1; }
+done
+bash "$root/tests/support/check_reports.sh" "$scratch/browser" "$scratch/new" "$base"
+r=$?
+if [[ $r -eq 77 && "${CI:-}" != "true" ]]; then
+  echo "     (reports not checked in a browser: no Chromium)"
+else
+  check "the reports pass in headless Chromium" test $r -eq 0
+fi
+
 if [[ $fail -ne 0 ]]; then
   echo "(run log: $scratch/run.log; to accept new numbers run results/regenerate.sh and commit)"
 fi

@@ -1,4 +1,4 @@
-# The layers of the code and which folders each may include (README "Layout"); sourced by
+# The layers of the code and which folders each may include (docs/layout.md); sourced by
 # tests/regression/layers.sh. A folder is a core subfolder ("core/aero") or a top-level folder
 # ("trim"). Lower layers first:
 #   core/model  <  core/aero, core/integrate, core/structure, core/analysis  <  core/dynamics

@@ -38,7 +38,7 @@ int jobsOption(const std::optional<std::string>& text);
 
 /// A logic_error unless the field-table entry of `key` names this option of `sub` in its
 /// FieldSpec::cli ("simulate --speed", "run/aeromap/optimize -j"): the table, `ornithopter keys`
-/// and the README say which option sets which key, and the wiring must agree.
+/// and docs/keys.md say which option sets which key, and the wiring must agree.
 void requireCliEntry(const CLI::App& sub, const std::string& names, std::string_view key);
 
 /// `sub`'s option `names` ("--speed", "-j,--jobs") that sets the field-table key `key`, its text

@@ -47,7 +47,7 @@ Subcommand addKeysSubcommand(CLI::App& app) {
   keys->add_option("GROUP", a->group,
                    "vehicle | study | simulate | aeromap | trim | optimize | calibrate | sweep | "
                    "sensitivity | continuation | cli (default: every group)");
-  keys->add_flag("--markdown", a->markdown, "Markdown tables (the README's key reference)");
+  keys->add_flag("--markdown", a->markdown, "Markdown tables (docs/keys.md, the key reference)");
   return {keys, [a] { return runKeys(*a); }, false};
 }
 

@@ -8,6 +8,7 @@
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/html_report.hpp"
 #include "studies/runner/output/run_outputs.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
@@ -41,6 +42,7 @@ int runPlot(const std::string& plot_dir) {
     throw CliError("command line: RUN_DIR " + plot_dir +
                    ": no figure scripts (*.gp) of its " + (kind.empty() ? "" : kind + " ") +
                    "run to draw (this run drew no figures)");
+  writeRunReport(dir);  // its figures are drawn now
   std::cout << "redrew " << n << " figure(s) in " << plot_dir << "\n";
   if (skipped > 0)
     std::cout << "left out " << skipped << " figure script(s) of another kind of run than the "

@@ -9,6 +9,7 @@
 #include "studies/runner/commands/run_study.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
+#include "studies/runner/output/html_report.hpp"
 #include "studies/runner/output/journal_file.hpp"
 
 namespace orni::studies::cli {
@@ -53,6 +54,8 @@ int runStudies(const RunArgs& a) {
     if (i < locks.size()) locks[i]->setRunning(false);
     if (r != kExitOk) rc = r;
   }
+  // Several studies into DIR/<name>: DIR/index.html links their reports.
+  if (farmWriter() && a.out && studies.size() > 1) writeSetReport(fs::path(*a.out), outs);
   return rc;
 }
 

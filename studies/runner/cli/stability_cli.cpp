@@ -27,23 +27,9 @@ struct StabilityArgs {
 
 int runStability(const StabilityArgs& a) {
   Study study = studyFromVehicle(a.vehicle, StudyKind::kTrim);
-  study.name += "_stability";
-  TrimOptions& o = study.trim;
-  usePeriodicMethod(&o);
-  o.periodic.multipliers = 0;    // all of them: the full monodromy matrix
-  o.verify_free_flight = false;  // the verdict is Floquet's; `trim` runs the Eq. (5) check
-  if (a.freq) o.initial.freq_hz = optionValue("--freq", "trim.freq_hz", *a.freq);
-  std::string why;
-  if (!o.IsValid(&why)) throw CliError("command line: stability options: " + why);
-  const std::filesystem::path out = outputFolder(a.out, study, false);
-  const OutputFolderLock lock(out, FolderUse::kRun, "stability");
-  const Heartbeat heartbeat("stability");  // a periodic trim has no points to count
-  try {
-    return runPeriodicTrimStudy(study, out, PeriodicRunKind::kStability);
-  } catch (const InvalidModelError& e) {
-    throw InputError(inputFileOf(study), 0, std::string(),
-                     std::string("invalid model: ") + e.what());
-  }
+  if (a.freq) study.trim.initial.freq_hz = optionValue("--freq", "trim.freq_hz", *a.freq);
+  study = stabilityStudy(std::move(study));
+  return runStabilityLocked(study, outputFolder(a.out, study, false));
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// The subcommands of `ornithopter` (architecture.md 3), one file each in studies/runner/cli/:
-// each adds its CLI11 subcommand with its options (names and help text as in the README's usage)
+// The subcommands of `ornithopter` (docs/design.md 3), one file each in studies/runner/cli/:
+// each adds its CLI11 subcommand with its options (names and help text as in docs/user-guide.md)
 // and returns how to run it once parsed. main (studies/runner/main.cpp) adds them in the order of
 // --help, parses, and runs the parsed one inside its one mapping of exceptions to exit codes.
 #pragma once
@@ -27,6 +27,7 @@ Subcommand addAeromapSubcommand(CLI::App& app);
 Subcommand addTrimSubcommand(CLI::App& app);
 Subcommand addStabilitySubcommand(CLI::App& app);
 Subcommand addOptimizeSubcommand(CLI::App& app);
+Subcommand addReportSubcommand(CLI::App& app);
 Subcommand addKeysSubcommand(CLI::App& app);
 
 /// Every subcommand, in the order of `ornithopter --help`.

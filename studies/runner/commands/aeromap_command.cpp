@@ -1,4 +1,5 @@
 #include "studies/runner/commands/aeromap_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -166,10 +167,10 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   JournalResume resume;
   AeroMapJournal journal(out_dir / kAeromapJournalName, fingerprint, grid.size(), &resume);
   if (resume.existed && !resume.fingerprint_matched)
-    std::cerr << "aeromap: " << journal.path().string()
+    consoleErr() << "aeromap: " << journal.path().string()
               << " discarded: starting afresh\n";
   else if (resume.existed)
-    std::cerr << "aeromap: resuming from " << journal.path().string() << ": " << resume.records
+    consoleErr() << "aeromap: resuming from " << journal.path().string() << ": " << resume.records
               << " of " << grid.size() << " points already done"
               << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
                                               " torn or corrupt line(s) dropped)"
@@ -252,14 +253,14 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   const bool drawable = map.points <= kFigureRows;
   if (run.figures && map.ok > 0 && drawable) drawAeromapFigures(out_dir, study);
   if (run.figures && map.ok == 0)
-    std::cerr << "aeromap: no point has a result: no figures drawn\n";
+    consoleErr() << "aeromap: no point has a result: no figures drawn\n";
   if (run.figures && map.ok > 0 && !drawable)
-    std::cerr << "aeromap: " << map.points << " points: no figures drawn (figures are drawn for "
+    consoleErr() << "aeromap: " << map.points << " points: no figures drawn (figures are drawn for "
               << "maps of at most " << kFigureRows << " points; aeromap.csv has every point)\n";
   // Every output is in place now: a run stopped before this line (in the figures too) resumes
   // from the journal and computes no point again.
   journal.remove();
-  std::cout << study.name << ": aeromap " << briefReport(map, computed, map_s) << "\n  -> "
+  consoleOut() << study.name << ": aeromap " << briefReport(map, computed, map_s) << "\n  -> "
             << out_dir.string() << "\n";
   return 0;
 }

@@ -1,7 +1,7 @@
 // `ornithopter aeromap VEHICLE.toml --speed A:B:N --freq A:B:N --theta A:B:N [--tail A:B:N]` and
 // `kind = "aeromap"` studies: the cycle-mean tethered loads over a grid (paper Fig. 5), built by
 // trim/aero_map.hpp on `threads` threads. Writes aeromap.csv, summary.json, study.resolved.toml
-// and the figures aeromap_{FV,FH,M,power}.png/svg (architecture.md 4). Resumable: finished points
+// and the figures aeromap_{FV,FH,M,power}.png/svg (docs/design.md 4). Resumable: finished points
 // go to DIR/aeromap.journal (output/aeromap_journal.hpp) as they finish; a re-run of the same
 // study into the same folder takes them over and computes only the rest, then removes the journal
 // once every output, figures included, is in place.

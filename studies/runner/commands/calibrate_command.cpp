@@ -1,4 +1,5 @@
 #include "studies/runner/commands/calibrate_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <cmath>
 #include <iostream>
@@ -134,7 +135,7 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
       .set("evaluations", s.evaluations)
       .set("ceres_report", s.ceres_report);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  std::cout << study.name << ": " << s.message << "\n  -> " << out_dir.string() << "\n";
+  consoleOut() << study.name << ": " << s.message << "\n  -> " << out_dir.string() << "\n";
   return 0;
 }
 

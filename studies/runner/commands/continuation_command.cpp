@@ -1,4 +1,5 @@
 #include "studies/runner/commands/continuation_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -327,10 +328,10 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
   }
   while (!done.empty() && !done.back().orbit.event.empty()) done.pop_back();
   if (resume.existed && !resume.fingerprint_matched)
-    std::cerr << "continuation: " << journal.path().string()
+    consoleErr() << "continuation: " << journal.path().string()
               << " discarded: starting afresh\n";
   else if (!done.empty())
-    std::cerr << "continuation: resuming from " << journal.path().string() << " after point "
+    consoleErr() << "continuation: resuming from " << journal.path().string() << " after point "
               << done.back().orbit.index << " (" << done.size() << " records)\n";
 
   std::vector<TrimContinuationPoint> points = done;
@@ -343,7 +344,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
         TrimContinuationPoint exact;
         decodePoint(encodePoint(p), &exact);
         points.push_back(exact);
-        std::cerr << "continuation: " << (p.orbit.event.empty() ? "point " : p.orbit.event + " ")
+        consoleErr() << "continuation: " << (p.orbit.event.empty() ? "point " : p.orbit.event + " ")
                   << p.orbit.index << ": " << continuationParameterName(co.parameter) << " "
                   << parameterFileValue(co.parameter, p)
                   << (p.orbit.stable ? " stable" : " unstable") << ", max |mu| "
@@ -405,7 +406,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
     drawFigure(out_dir, "continuation",
                branchFigure(study, co.parameter, study.trim.periodic.control, toString(s.status)));
   journal.remove();  // every point is in continuation.csv and the figure is drawn
-  std::cout << study.name << ": continuation " << toString(s.status) << ": " << regular
+  consoleOut() << study.name << ": continuation " << toString(s.status) << ": " << regular
             << " points, " << events.size() << " events; " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return failed ? 1 : 0;

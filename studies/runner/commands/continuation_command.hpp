@@ -1,6 +1,6 @@
 // Studies of kind "continuation" (trim/trim_continuation.hpp): the branch of periodic trims over
 // one parameter with the Floquet stability of every point. Writes into the output folder
-// (architecture.md 4):
+// (docs/design.md 4):
 //   continuation.csv       one row per point in branch order: point number, event ("" or fold,
 //                          branch_point, period_doubling, neimark_sacker), the parameter, the trim
 //                          point (frequency, cycle-mean theta and airspeed, tail angle, CG shift),

@@ -1,4 +1,5 @@
 #include "studies/runner/commands/failed_run.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <iostream>
 #include <system_error>
@@ -15,7 +16,7 @@ void removeRunOutputs(const std::filesystem::path& dir, const std::vector<std::s
 
 int reportFailedRun(const Study& study, const std::string& cause,
                     const std::filesystem::path& out_dir) {
-  std::cerr << "ornithopter: " << study.name << ": the simulation failed: " << cause
+  consoleErr() << "ornithopter: " << study.name << ": the simulation failed: " << cause
             << "\n  no results and no figures; status in " << (out_dir / "summary.json").string()
             << "\n";
   return 1;

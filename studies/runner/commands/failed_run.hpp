@@ -1,5 +1,5 @@
 // The end of a run that failed (the integrator stopped: SimulationStatus::kFailed): its
-// summary.json says "failed" with the real cause and no value as a result (architecture.md 3-4);
+// summary.json says "failed" with the real cause and no value as a result (docs/design.md 3, 4);
 // no CSV of results and no figure is drawn from it, and the outputs an earlier run left in the
 // folder under the same names are removed, so that none passes for this run's.
 #pragma once

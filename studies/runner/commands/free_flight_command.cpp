@@ -1,4 +1,5 @@
 #include "studies/runner/commands/free_flight_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -271,7 +272,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
   const int first_analysed = s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0;
   const double t_from = first_analysed / study.point.freq_hz;
   drawFigure(out_dir, "phase", phaseFigure(study, t_from, skipFrom(first_analysed)));
-  std::cout << study.name << ": " << toString(s.status) << ": " << s.message << "\n  -> "
+  consoleOut() << study.name << ": " << toString(s.status) << ": " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;
 }

@@ -1,4 +1,5 @@
 #include "studies/runner/commands/journaled_points.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <iostream>
 #include <stdexcept>
@@ -44,10 +45,10 @@ std::optional<JournaledPoints> runJournaledPoints(const JournaledPointsJob& job)
       &resume);
   PointJournal& journal = *out.journal;
   if (resume.existed && !resume.fingerprint_matched)
-    std::cerr << job.kind << ": " << journal.path().string()
+    consoleErr() << job.kind << ": " << journal.path().string()
               << " discarded: starting afresh\n";
   else if (resume.existed)
-    std::cerr << job.kind << ": resuming from " << journal.path().string() << ": "
+    consoleErr() << job.kind << ": resuming from " << journal.path().string() << ": "
               << resume.records << " of " << job.points << " points already done"
               << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
                                               " torn or corrupt line(s) dropped)"

@@ -1,5 +1,5 @@
 // `ornithopter keys [GROUP] [--markdown]`: the field table (core/model/field_table.hpp) printed,
-// every input key with its unit, type and range, default and meaning. The README's key reference
+// every input key with its unit, type and range, default and meaning. The key reference docs/keys.md
 // is the Markdown form of it (tests/regression/readme_keys.sh compares them).
 #pragma once
 

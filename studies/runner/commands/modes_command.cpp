@@ -1,4 +1,5 @@
 #include "studies/runner/commands/modes_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <algorithm>
 #include <array>
@@ -332,7 +333,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
     const std::string deck = structure::calculixDeck(vehicle, mesh, deck_options);
     try {
       writeFileAtomic(export_ccx_path, deck);
-    } catch (const std::exception& e) {  // an output-path problem (issue 30, item 5)
+    } catch (const std::exception& e) {  // an output-path problem: bad input that names the option
       throw OutputPathError(export_ccx_path.string() + ": option --export-ccx: cannot write the "
                             "CalculiX deck: " + e.what());
     }
@@ -346,7 +347,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
     throw InputError(inputFile(study), 0, "wing", std::string("bad wing model: ") + e.what());
   } catch (const std::runtime_error& e) {
     writeFailedSummary(out_dir, e.what(), seconds(t0));
-    std::cerr << "ornithopter: modes failed: " << e.what() << "\n";
+    consoleErr() << "ornithopter: modes failed: " << e.what() << "\n";
     return 1;
   }
   const double modal_s = seconds(t1);
@@ -414,10 +415,10 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   char mass_text[96];
   std::snprintf(mass_text, sizeof mass_text, "flap/heave effective mass %.1f / %.1f %%",
                 100.0 * flap_total, 100.0 * heave_total);
-  std::cout << study.name << ": " << m << " modes, f = " << brief.str() << (m > 6 ? ", ..." : "")
+  consoleOut() << study.name << ": " << m << " modes, f = " << brief.str() << (m > 6 ? ", ..." : "")
             << " Hz; " << mass_text << "\n  -> " << out_dir.string() << "\n";
   if (!export_ccx_path.empty())
-    std::cout << "  CalculiX deck: " << export_ccx_path.string() << " (run: ccx -i "
+    consoleOut() << "  CalculiX deck: " << export_ccx_path.string() << " (run: ccx -i "
               << (export_ccx_path.parent_path() / export_ccx_path.stem()).string() << ")\n";
   return 0;
 }

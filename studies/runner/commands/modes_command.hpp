@@ -1,8 +1,8 @@
 // `ornithopter modes VEHICLE.toml [-o DIR] [--export-ccx FILE.inp]` and `kind = "modes"` studies:
 // the wing's finite-element mesh and fixed-interface modes from the vehicle's [wing.fe] settings
-// (structure.md 1.6, 2.1, 2.5, 2.6). Writes summary.json, study.resolved.toml, modes.csv,
-// mode_shapes.csv and the figure modes.png/svg (architecture.md 4), and the CalculiX deck
-// (structure.md 6.2) when asked.
+// (docs/theory.md 2.5, 2.6, 3.4, 3.5). Writes summary.json, study.resolved.toml, modes.csv,
+// mode_shapes.csv and the figure modes.png/svg (docs/design.md 4), and the CalculiX deck
+// (docs/theory.md 2.7) when asked.
 #pragma once
 
 #include <filesystem>

@@ -1,4 +1,5 @@
 #include "studies/runner/commands/optimize_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -255,10 +256,10 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   OptimizeJournalResume resume;
   OptimizeJournal journal(out_dir / kOptimizeJournalName, fingerprint, shape, &resume);
   if (resume.existed && !resume.fingerprint_matched)
-    std::cerr << "optimize: " << journal.path().string()
+    consoleErr() << "optimize: " << journal.path().string()
               << " discarded: starting afresh\n";
   else if (resume.existed)
-    std::cerr << "optimize: resuming from " << journal.path().string() << ": " << resume.records
+    consoleErr() << "optimize: resuming from " << journal.path().string() << ": " << resume.records
               << " evaluation(s) journaled"
               << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
                                               " torn or corrupt line(s) dropped)"
@@ -425,17 +426,17 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
       drawFigure(out_dir, "optimize_convergence", convergenceFigure(study, problem, s));
     } catch (const std::exception& e) {
       figure_missing = true;
-      std::cerr << "optimize: the convergence figure was not drawn (the journal is kept: the "
+      consoleErr() << "optimize: the convergence figure was not drawn (the journal is kept: the "
                    "same command redraws it without evaluating again): "
                 << e.what() << "\n";
     }
   } else if (run.figures) {
-    std::cerr << "optimize: every evaluation failed: no figure drawn\n";
+    consoleErr() << "optimize: every evaluation failed: no figure drawn\n";
   }
   // Every output is in place now (a kill before this line resumes from the journal and
   // evaluates nothing again).
   if (!figure_missing) journal.remove();
-  std::cout << study.name << ": optimize " << s.BriefReport() << "\n  " << message << "\n  -> "
+  consoleOut() << study.name << ": optimize " << s.BriefReport() << "\n  " << message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;
 }

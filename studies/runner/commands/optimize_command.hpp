@@ -1,6 +1,6 @@
 // `ornithopter optimize STUDY.toml [-o DIR] [-j N]` and `kind = "optimize"` studies: the NLopt
-// design optimisation of issue 6 (optimize/design_problem.hpp) on `threads` threads (over the
-// starts of a multi-start run). Writes into the output folder:
+// design optimisation of docs/theory.md 12.1 (optimize/design_problem.hpp) on `threads` threads
+// (over the starts of a multi-start run). Writes into the output folder:
 //   history.csv           every evaluation in start order: evaluation, start, start_evaluation,
 //                         stage, the variables, objective, feasible, failed, violation, one g_<name>
 //                         column per constraint, status (feasible | infeasible | failed),
@@ -11,7 +11,7 @@
 //                         penalty NLopt was given.
 //   best_vehicle.toml     the best design as a complete vehicle file, its operating point = its
 //                         trim point (`ornithopter trim best_vehicle.toml --freq F` re-runs it)
-//   summary.json          the optimize keys of architecture.md 4 and more (best and baseline
+//   summary.json          the optimize keys of docs/design.md 4 and more (best and baseline
 //                         results, per-start terminations, evaluation counts)
 //   study.resolved.toml   the study with every default filled in
 //   optimize_convergence.png/svg  objective per evaluation (feasible filled, infeasible open,

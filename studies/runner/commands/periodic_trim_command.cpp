@@ -1,4 +1,5 @@
 #include "studies/runner/commands/periodic_trim_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -364,7 +365,7 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (have_orbit) drawFigure(out_dir, "periodic_orbit", orbitFigure(study, s));
   if (s.floquet_valid) drawFigure(out_dir, "floquet_multipliers", multiplierFigure(study, s));
-  std::cout << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
+  consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;
 }

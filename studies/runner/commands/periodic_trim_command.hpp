@@ -1,6 +1,6 @@
 // Trim studies with [trim] method = "periodic" (`ornithopter trim --method periodic`) and
 // `ornithopter stability`: the periodic orbit of free flight and its Floquet multipliers
-// (trim/periodic_trim.hpp). Writes into the output folder (architecture.md 4):
+// (trim/periodic_trim.hpp). Writes into the output folder (docs/design.md 4):
 //   summary.json          the trim contract keys (freq_hz, theta_mean_deg, speed_mps,
 //                         tail_angle_deg, residual, free_flight) plus method, periodic_residual,
 //                         floquet {multipliers [{modulus, argument_deg, ...}], stable,

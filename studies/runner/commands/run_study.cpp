@@ -3,6 +3,7 @@
 #include <iostream>
 #include <optional>
 #include <stdexcept>
+#include <system_error>
 
 #include "core/model/invalid_model_error.hpp"
 #include "studies/runner/commands/aeromap_command.hpp"
@@ -10,15 +11,19 @@
 #include "studies/runner/commands/continuation_command.hpp"
 #include "studies/runner/commands/modes_command.hpp"
 #include "studies/runner/commands/optimize_command.hpp"
+#include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/commands/sensitivity_command.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/commands/sweep_command.hpp"
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/input_error.hpp"
+#include "trim/trim_options.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
 #include "studies/runner/output/heartbeat.hpp"
+#include "studies/runner/output/html_report.hpp"
+#include "studies/runner/plotting/gnuplot.hpp"
 
 namespace fs = std::filesystem;
 
@@ -36,8 +41,8 @@ bool spreadsPoints(StudyKind kind) {
          kind == StudyKind::kSensitivity || kind == StudyKind::kOptimize;
 }
 
-/// The kinds that have no points to count: a heartbeat line shows they are running (issue 30,
-/// item 6); the others print their own progress (points, evaluations).
+/// The kinds that have no points to count: a heartbeat line shows they are running
+/// (docs/design.md 4.4); the others print their own progress (points, evaluations).
 bool needsHeartbeat(StudyKind kind) {
   return kind == StudyKind::kSimulate || kind == StudyKind::kTrim ||
          kind == StudyKind::kCalibrate || kind == StudyKind::kContinuation;
@@ -87,10 +92,43 @@ int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
 
 int runStudy(const Study& study, const fs::path& out_dir, int jobs) {
   try {
-    return runStudyKind(study, out_dir, jobs);
+    const FiguresScope figures(study.figures);  // [output] figures = false: scripts only
+    const int rc = runStudyKind(study, out_dir, jobs);
+    // The HTML report of the finished run (a failed run has its summary.json too).
+    std::error_code ec;
+    if (farmWriter() && fs::is_regular_file(out_dir / "summary.json", ec))
+      writeRunReport(out_dir);
+    return rc;
   } catch (const InvalidModelError& e) {
     throw InputError(inputFileOf(study), 0, std::string(), std::string("invalid model: ") +
                                                                e.what());
+  }
+}
+
+Study stabilityStudy(Study study) {
+  study.name += "_stability";
+  TrimOptions& o = study.trim;
+  usePeriodicMethod(&o);
+  o.periodic.multipliers = 0;    // all of them: the full monodromy matrix
+  o.verify_free_flight = false;  // the verdict is Floquet's; `trim` runs the Eq. (5) check
+  std::string why;
+  if (!o.IsValid(&why))
+    throw InputError(inputFileOf(study), 0, "trim", "stability options: " + why);
+  return study;
+}
+
+int runStabilityLocked(const Study& study, const fs::path& out_dir) {
+  const OutputFolderLock lock(out_dir, FolderUse::kRun, "stability");
+  const Heartbeat heartbeat("stability");  // a periodic trim has no points to count
+  try {
+    const FiguresScope figures(study.figures);
+    const int rc = runPeriodicTrimStudy(study, out_dir, PeriodicRunKind::kStability);
+    std::error_code ec;
+    if (fs::is_regular_file(out_dir / "summary.json", ec)) writeRunReport(out_dir);
+    return rc;
+  } catch (const InvalidModelError& e) {
+    throw InputError(inputFileOf(study), 0, std::string(),
+                     std::string("invalid model: ") + e.what());
   }
 }
 

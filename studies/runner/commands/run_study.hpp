@@ -18,6 +18,16 @@ std::string inputFileOf(const Study& study);
 /// check of core (InvalidModelError) is rethrown as InputError naming the study's file.
 int runStudy(const Study& study, const std::filesystem::path& out_dir, int jobs);
 
+/// `study` (kind trim: a vehicle and its [trim]) made a stability analysis: the periodic-orbit
+/// trim with every Floquet multiplier (the full monodromy matrix), no free-flight check (the
+/// verdict is Floquet's), its name with "_stability". Throws InputError when the options are
+/// not valid.
+Study stabilityStudy(Study study);
+
+/// Locks `out_dir` and runs the stability analysis of a stabilityStudy into it (summary kind
+/// "stability"), with its HTML report. The exit code as runStudy's.
+int runStabilityLocked(const Study& study, const std::filesystem::path& out_dir);
+
 /// Locks `out_dir` (FolderBusyError at once when another run holds it) and runs `study` into it.
 int runStudyLocked(const Study& study, const std::filesystem::path& out_dir, int jobs);
 

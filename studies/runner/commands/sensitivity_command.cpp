@@ -1,4 +1,5 @@
 #include "studies/runner/commands/sensitivity_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <chrono>
 #include <cmath>
@@ -147,7 +148,7 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
 
   for (const SensitivityParameter& p : s.parameters)
     if (farmWriter() && std::isfinite(p.base) && (p.base < p.low || p.base > p.high))
-      std::cerr << "sensitivity: note: the base vehicle's " << p.key << " = "
+      consoleErr() << "sensitivity: note: the base vehicle's " << p.key << " = "
                 << formatShortest(p.base) << " lies outside its range [" << formatShortest(p.low)
                 << ", " << formatShortest(p.high) << "]: both ends move it the same way\n";
 
@@ -200,9 +201,9 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
       drawFigure(out_dir, "sensitivity_overview", overview);
       ++drawn;
     }
-    if (drawn == 0) std::cerr << "sensitivity: no prediction has a value to plot: no figure\n";
+    if (drawn == 0) consoleErr() << "sensitivity: no prediction has a value to plot: no figure\n";
   }
-  std::cout << study.name << ": sensitivity of " << rankings.size() << " predictions to "
+  consoleOut() << study.name << ": sensitivity of " << rankings.size() << " predictions to "
             << s.parameters.size() << " parameters, " << n << " points (" << done->computed
             << " computed): " << pointCountsText(count) << "\n  -> " << out_dir.string() << "\n";
   return 0;

@@ -8,7 +8,7 @@
 // DIR/sensitivity.journal (output/point_journal.hpp) as they finish; a re-run of the same study
 // into the same folder takes them over and computes only the rest, then removes the journal.
 //
-// Outputs (architecture.md 4):
+// Outputs (docs/design.md 4):
 //   sensitivity.csv     one row per point (base, then each parameter low and high): point,
 //                       parameter (key; empty for the base), side (base|low|high), value (file
 //                       units of the key, given in value_unit), value_unit, status, the result

@@ -1,4 +1,5 @@
 #include "studies/runner/commands/simulate_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -266,7 +267,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
       removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv", "spectra.csv"},
                        {"loads", "zmp", "flight", "cycle", "phase"});
       writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-      std::cout << study.name << ": not_converged: no trim to fly at: " << t.message << "\n";
+      consoleOut() << study.name << ": not_converged: no trim to fly at: " << t.message << "\n";
       return 0;
     }
     study.point = t.point;
@@ -311,7 +312,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
   if (failed) return reportFailedRun(study, s.message, out_dir);
   drawFigure(out_dir, "loads", loadsFigure(study, s, history_rows));
   if (cft) drawFigure(out_dir, "zmp", zmpFigureScript(study, *cft, s.cycles_run));
-  std::cout << study.name << ": " << s.BriefReport() << "\n  -> " << out_dir.string() << "\n";
+  consoleOut() << study.name << ": " << s.BriefReport() << "\n  -> " << out_dir.string() << "\n";
   return 0;
 }
 

@@ -1,6 +1,6 @@
 // `ornithopter simulate` and `kind = "simulate"` studies: run, then write summary.json,
 // study.resolved.toml, histories.csv, cycles.csv, the loads figure and, from the last cycle, the
-// constrained flight test zmp.csv + zmp figure (paper Fig. 9; architecture.md 4).
+// constrained flight test zmp.csv + zmp figure (paper Fig. 9; docs/design.md 4).
 #pragma once
 
 #include <filesystem>

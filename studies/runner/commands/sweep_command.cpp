@@ -1,4 +1,5 @@
 #include "studies/runner/commands/sweep_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -207,14 +208,14 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
   if (run.figures) {
     const std::string figure = sweepFigure(study, grid, columns, rows);
     if (figure.empty())
-      std::cerr << "sweep: no point has a value to plot: no figure drawn\n";
+      consoleErr() << "sweep: no point has a value to plot: no figure drawn\n";
     else
       drawFigure(out_dir, "sweep", figure);
   }
   // Every output is in place now: a run stopped before this line (in the figure too) resumes
   // from the journal and computes no point again.
   done->journal->remove();
-  std::cout << study.name << ": sweep of " << toString(s.run) << ", " << n << " points ("
+  consoleOut() << study.name << ": sweep of " << toString(s.run) << ", " << n << " points ("
             << done->computed << " computed): " << pointCountsText(count) << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

@@ -1,4 +1,4 @@
-// `kind = "sweep"` studies (architecture.md 5): another kind (trim, or simulate tethered or free)
+// `kind = "sweep"` studies (docs/design.md 5): another kind (trim, or simulate tethered or free)
 // run at every point of a grid of vehicle or analysis values, one row per point. Points run on
 // `threads` threads (core/grid/point_pool.hpp), results are stored by point index, so the outputs
 // do not depend on the thread count. Resumable like an aero map: finished points go to
@@ -6,7 +6,7 @@
 // the same folder takes them over and computes only the rest, then removes the journal once
 // every output, figures included, is in place.
 //
-// Outputs (architecture.md 4):
+// Outputs (docs/design.md 4):
 //   sweep.csv           one row per point in point order (first axis outermost): the axis values
 //                       (columns named by their keys, units from the key suffixes), status, the
 //                       run's result columns (commands/sweep_point.hpp: which cells a point of

@@ -1,4 +1,5 @@
 #include "studies/runner/commands/trim_command.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -277,7 +278,7 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
                              .set("derivative_cycles", study.trim.derivative_cycles));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   drawFigure(out_dir, "trim_convergence", convergenceFigure(study, s, study.trim.residual_tol));
-  std::cout << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
+  consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;
 }

@@ -1,6 +1,6 @@
 // `ornithopter trim` and `kind = "trim"` studies: solve paper Eq. (4) with Ceres (trim/), then
 // write summary.json, study.resolved.toml, trim_iterations.csv (every periodic run),
-// trim_progress.csv (every solver iteration) and the convergence figure (architecture.md 4).
+// trim_progress.csv (every solver iteration) and the convergence figure (docs/design.md 4).
 #pragma once
 
 #include <filesystem>
@@ -16,7 +16,7 @@ namespace orni::studies {
 /// (exit 2, mapped by main); other exceptions are failures (exit 1).
 int runTrimStudy(const Study& study, const std::filesystem::path& out_dir);
 
-/// summary.json's `free_flight` object of a trim (the free-mode keys of architecture.md 4).
+/// summary.json's `free_flight` object of a trim (the free-mode keys of docs/design.md 4).
 JsonObject freeFlightObject(const FreeFlightVerification& v);
 
 }  // namespace orni::studies

@@ -45,7 +45,7 @@ void readAeromapSection(StudyDocument doc, Study& study) {
   a.tail_angle_deg = am.has("tail_angle_deg") ? readAeromapAxis(am, "tail_angle_deg")
                                               : defaultTailAngleAxis(study.point);
   // A tail angle other than 0 (what a resolved study writes for a rig) on a vehicle without a
-  // tail would be ignored: bad input (issue 30, item 7).
+  // tail would be ignored: bad input (docs/design.md 3.2).
   if (am.has("tail_angle_deg") && !study.vehicle.tail.present)
     for (const double v : a.tail_angle_deg.values)
       if (v != 0.0)

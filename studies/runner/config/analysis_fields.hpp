@@ -1,4 +1,4 @@
-// The analysis keys of [simulate] and [trim] with their values in a Study (issue 15 item 8): the
+// The analysis keys of [simulate] and [trim] with their values in a Study: the
 // field table's simulate.* and trim.* entries (`ornithopter keys simulate|trim`), each with a
 // getter, so that a sweep finds the settings that differ between its points by comparing values
 // (sweep_study.cpp) instead of text. tests/unit/config/test_analysis_fields.cpp fails when a key

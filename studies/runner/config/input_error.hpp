@@ -1,4 +1,4 @@
-// InputError: the exception for bad input files (style.md habit 6, architecture.md section 3).
+// InputError: the exception for bad input files (docs/design.md 7.6 and 3.2).
 //
 // Thrown by the study and vehicle file loaders for anything wrong with a file: TOML syntax, unknown
 // or missing keys, wrong types, values outside their valid range, broken cross-references. `main`

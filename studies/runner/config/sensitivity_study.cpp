@@ -27,7 +27,7 @@ namespace {
 
 /// Top-level keys a sensitivity study may have.
 const std::vector<std::string> kTopKeys = {"kind",     "name", "vehicle",    "vehicle_source",
-                                           "override", "trim", "sensitivity"};
+                                           "override", "trim", "sensitivity", "output"};
 /// Sections of other kinds: rejected with a message that says what a sensitivity study runs.
 const std::vector<std::string> kOtherSections = {"simulate", "aeromap", "sweep", "optimize",
                                                  "calibrate"};

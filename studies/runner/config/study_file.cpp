@@ -123,7 +123,7 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
   TableReader top(root, std::string(), study_ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate",
                    "aeromap", "trim", "sweep", "calibrate", "optimize", "sensitivity",
-                   "continuation"});
+                   "continuation", "output"});
   const StudyDocument doc{top, root, study_ctx};
   Study study;
   study.study_path = study_file;
@@ -141,6 +141,10 @@ Study readStudyRoot(toml::table& root, const fs::path& study_file) {
     throw top.valueError("name",
                          "a run name of letters, digits, '_', '-' and '.' not starting with '.'",
                          describeNode(*root.get("name")));
+  if (std::optional<TableReader> output = top.optionalTable("output", {"figures"})) {
+    study.figures = output->optionalBool("figures", true);
+    output->finish();
+  }
   readStudyVehicle(doc, study_file, study);
   readKindSections(doc, study);
   top.finish();
@@ -235,6 +239,10 @@ void writeStudySections(const Study& study, StudyKind kind, TomlWriter& out) {
   if (kind == StudyKind::kContinuation) writeContinuationSection(study.continuation(), out);
   if (kind == StudyKind::kCalibrate) writeCalibrateSection(study.calibrate(), out);
   if (kind == StudyKind::kOptimize) writeOptimizeSection(study.optimize(), out);
+  if (!study.figures) {  // written when not the default: it changes no result, only the files
+    out.header({"output"});
+    out.boolean("figures", false, "figure scripts only");
+  }
   writeVehicleToml({study.vehicle, study.design_point}, out, {"vehicle"});
 }
 

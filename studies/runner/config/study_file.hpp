@@ -1,4 +1,4 @@
-// Study files (TOML, architecture.md section 5) -> Study.
+// Study files (TOML, docs/design.md section 5) -> Study.
 //
 // This is the header the rest of the program includes: no toml++ here. Errors are InputError
 // (input_error.hpp) naming file, line and key; main maps them to exit status 2.
@@ -54,7 +54,7 @@
 //            defaults. A trim study needs a vehicle with a [body] (its mass sets the weight).
 //   [sweep]  (required for kind = "sweep", rejected otherwise) a parameter study: another kind run
 //            at every point of a grid of vehicle or analysis values, one table row per point
-//            (architecture.md 5). Keys:
+//            (docs/design.md 5). Keys:
 //              run  (required) the kind run at every point: "trim" or "simulate" (tethered or
 //                   free, as its [simulate] says);
 //              axes (required) an array of 1-16 tables { key = "...", values = ... }, written
@@ -229,6 +229,8 @@ struct Study {
   /// The design point with [simulate] applied for kind simulate (the simulation's point; the
   /// other kinds' runs do not read it, their defaults come from the design point).
   orni::OperatingPoint point;
+  /// [output] figures: draw the run's figures (true) or write only their scripts (false).
+  bool figures = true;
   orni::TrimOptions trim;              ///< [trim] options (kinds trim and continuation, the
                                        ///< base of a trim sweep, sensitivity points; SI)
   /// The settings only one kind has: SimulateSettings (simulate), AeromapSettings (aeromap),

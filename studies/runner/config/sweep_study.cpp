@@ -200,7 +200,7 @@ std::string bodyOf(const InputError& e) {
   const TableReader& r = in.reader;
   // The loader rejecting a table on the axis key's own path (wing.members.LE1.diameter_m: "key
   // 'wing.members': expected an array of tables, got a table") is the key's fault too, not the
-  // value's (issue 30, item 7).
+  // value's: the message names the key (docs/design.md 3.2).
   const std::string& bad = e.key();
   const bool on_path = !bad.empty() && bad.size() < in.axis.key.size() &&
                        in.axis.key.compare(0, bad.size() + 1, bad + ".") == 0;
@@ -371,7 +371,7 @@ Study loadSweepStudy(toml::table& root, const std::string& text, const fs::path&
   // reads the base study below.
   TableReader top(root, std::string(), ctx,
                   {"kind", "name", "vehicle", "vehicle_source", "override", "simulate", "aeromap",
-                   "trim", "sweep"});
+                   "trim", "sweep", "output"});
   TableReader sweep = top.requiredTable("sweep", {"run", "axes"});
   const StudyKind run = sweep.requiredEnum("run", kRuns);
   std::vector<AxisInput> axes = readAxes(sweep, run);

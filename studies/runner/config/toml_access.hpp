@@ -1,4 +1,4 @@
-// Strict, typed access to TOML tables (style.md habit 11) and a small TOML writer.
+// Strict, typed access to TOML tables (docs/design.md 7.11) and a small TOML writer.
 //
 // Private to orni_studies (it includes toml++): the rest of the program includes study_file.hpp.
 //

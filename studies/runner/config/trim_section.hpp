@@ -1,4 +1,4 @@
-// The [trim] section of a study file (architecture.md 5) <-> orni::TrimOptions.
+// The [trim] section of a study file (docs/design.md 5) <-> orni::TrimOptions.
 //
 // Private to orni_studies (includes toml++ through toml_access.hpp). Keys (all optional; file
 // units in the suffixes, converted to SI here; each valid range is the key's entry in the field

@@ -25,9 +25,9 @@ const std::vector<std::pair<std::string, AeroModelKind>> kAeroModels = {
     {"mst-td", AeroModelKind::kMstTd}, {"delaurier1993", AeroModelKind::kDeLaurier1993}};
 const std::vector<std::pair<std::string, CirculationLag>> kLags = {
     {"scherer", CirculationLag::kScherer1}, {"jones", CirculationLag::kJones2}};
-/// Cross axis n_u of the universal joint at P3 (structure.md 2.1): the wing normal z_W or y_W.
+/// Cross axis n_u of the universal joint at P3 (docs/theory.md 2.6): the wing normal z_W or y_W.
 const std::vector<std::pair<std::string, bool>> kCrossAxes = {{"normal", true}, {"span", false}};
-/// The joint at P3 (structure.md 2.1, WingFeSettings::p3_joint).
+/// The joint at P3 (docs/theory.md 2.6, WingFeSettings::p3_joint).
 const std::vector<std::pair<std::string, P3Joint>> kP3Joints = {
     {"universal", P3Joint::kUniversal},
     {"spherical", P3Joint::kSpherical},
@@ -35,7 +35,7 @@ const std::vector<std::pair<std::string, P3Joint>> kP3Joints = {
     {"clamped", P3Joint::kClamped}};
 /// The root chord's support: free (attached at P2 and P3 only) or pinned along y_W = 0.
 const std::vector<std::pair<std::string, bool>> kRootEdges = {{"free", false}, {"pinned", true}};
-/// Stiffness of the inertial loads on the modes (structure.md 3.7).
+/// Stiffness of the inertial loads on the modes (docs/theory.md 4.6).
 const std::vector<std::pair<std::string, InertialStiffness>> kInertialStiffness = {
     {"both", InertialStiffness::kBoth},
     {"softening_only", InertialStiffness::kSofteningOnly},
@@ -143,7 +143,7 @@ void readWing(TableReader& top, VehicleModel& v) {
     wing.members.push_back(std::move(member));
   }
 
-  // [wing.fe]: finite-element and modal settings, every key optional (structure.md 1.6, 2.5, 2.6).
+  // [wing.fe]: finite-element and modal settings, every key optional (docs/theory.md 2.5, 3.4, 3.5).
   if (std::optional<TableReader> fe = w.optionalTable(
           "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis",
                  "p3_joint", "root_edge", "inertial_stiffness", "nonlinear"})) {

@@ -1,7 +1,7 @@
 // Vehicle files (TOML) <-> orni::VehicleDefinition (the VehicleModel and its design point).
 //
 // Units live in the key suffixes (_m, _deg, _gpa, _kgpm3, ...); the model is SI and radians. The
-// conversion happens here and nowhere else (style.md habit 3). The schema is documented in
+// conversion happens here and nowhere else (docs/design.md 7.3). The schema is documented in
 // studies/vehicles/efw_magpie.toml. Every error is an InputError naming file, line and key.
 //
 // Private to orni_studies (includes toml++ through toml_access.hpp); the rest of the program uses

@@ -1,4 +1,4 @@
-// Independent points spread over the ranks of a distributed run (issue 18: `mpirun -n N
+// Independent points spread over the ranks of a distributed run (docs/design.md 6: `mpirun -n N
 // ornithopter run STUDY`): aero-map points, sweep and sensitivity points, optimisation starts.
 //
 // One interface, two worlds. Without a distributed backend (MPI absent, or one rank) nothing here

@@ -1,4 +1,4 @@
-// Atomic file output (architecture.md 4): write to a temporary file in the same folder, flush,
+// Atomic file output (docs/design.md 4): write to a temporary file in the same folder, flush,
 // then rename over the target, so an interrupted run never leaves a truncated file.
 #pragma once
 

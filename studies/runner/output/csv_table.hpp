@@ -1,4 +1,4 @@
-// CSV tables with a names row and a units row (architecture.md 4; OpenFAST habit).
+// CSV tables with a names row and a units row (docs/design.md 4; OpenFAST habit).
 #pragma once
 
 #include <string>

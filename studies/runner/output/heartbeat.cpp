@@ -1,4 +1,5 @@
 #include "studies/runner/output/heartbeat.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <unistd.h>
 
@@ -45,8 +46,10 @@ void Heartbeat::loop() {
   while (!wake_.wait_until(lock, next, [this] { return stop_; })) {
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    std::fprintf(out_, "%s\n", text(label_, elapsed_s).c_str());
-    std::fflush(out_);
+    if (out_ != stderr || !consoleQuiet()) {  // quiet: a library call (console.hpp)
+      std::fprintf(out_, "%s\n", text(label_, elapsed_s).c_str());
+      std::fflush(out_);
+    }
     next += interval;
   }
 }

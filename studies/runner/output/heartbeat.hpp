@@ -1,4 +1,4 @@
-// A "still working" line on stderr for runs that have no points to count (issue 30, item 6):
+// A "still working" line on stderr for runs that have no points to count (docs/design.md 4.4):
 // simulations, trims, stability analyses, calibrations, a continuation (its start trim). Silent
 // for the first 2 s (a short run prints nothing more than before); then "trim: working, 12.0 s
 // elapsed", a full line every 5 s on a terminal and every 10 s in a log (full lines: the run's

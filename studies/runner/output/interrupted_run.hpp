@@ -1,4 +1,4 @@
-// How a run ends when it is interrupted (issue 30, item 4). SIGINT and SIGTERM request the
+// How a run ends when it is interrupted (docs/design.md 4.4). SIGINT and SIGTERM request the
 // cooperative cancellation of core/model/cancellation.hpp (the handler does nothing else: one
 // atomic store each); the run unwinds from its next cancellation point (a flapping cycle, a point,
 // an evaluation; a figure being drawn: plotting/gnuplot.hpp stops gnuplot) like any exception:

@@ -1,4 +1,5 @@
 #include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/output/console.hpp"
 
 #include <unistd.h>
 
@@ -56,6 +57,7 @@ void ProgressLine::pointDone() {
 void ProgressLine::finish() { draw(true); }
 
 void ProgressLine::draw(bool final_line) {
+  if (out_ == stderr && consoleQuiet()) return;  // a library call (console.hpp)
   const double elapsed_s = secondsBetween(start_, std::chrono::steady_clock::now());
   std::string line = text(label_, done_, total_, done_here_, elapsed_s);
   if (tty_) {

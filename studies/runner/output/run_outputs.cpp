@@ -12,8 +12,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// Every run writes these two besides its own.
-const std::vector<std::string> kCommonFiles = {"summary.json", "study.resolved.toml"};
+/// Every run writes these besides its own (index.html: output/html_report.hpp).
+const std::vector<std::string> kCommonFiles = {"summary.json", "study.resolved.toml",
+                                               "index.html"};
 const std::vector<std::string> kFigureExtensions = {".gp", ".png", ".svg"};
 
 bool stemMatches(const std::string& pattern, const std::string& stem) {

@@ -1,4 +1,4 @@
-// A run owns its output folder (issue 30, item 3): the files every kind of run writes there, by
+// A run owns its output folder (docs/design.md 4.4): the files every kind of run writes there, by
 // the "kind" its summary.json names, so that
 //   - a run removes the outputs an earlier run left in its folder before it writes its first file
 //     (tethered then free flight must not leave cycles.csv, zmp.csv and loads.*; an aero map then

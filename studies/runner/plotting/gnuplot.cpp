@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdlib>
 #include <cstring>
@@ -19,6 +20,7 @@
 
 #include "core/model/cancellation.hpp"
 #include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/console.hpp"
 
 #ifndef ORNI_GNUPLOT
 #define ORNI_GNUPLOT "gnuplot"
@@ -224,10 +226,50 @@ void drawInScratch(const fs::path& dir, const std::string& stem) {
   }
 }
 
+std::atomic<bool> g_figures_wanted{true};
+std::atomic<bool> g_missing_gnuplot_noted{false};
+
+/// `program` is an executable file (a path with '/'), or one is found on PATH.
+bool canStart(const std::string& program) {
+  if (program.empty()) return false;
+  if (program.find('/') != std::string::npos) return ::access(program.c_str(), X_OK) == 0;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/local/bin:/usr/bin:/bin";
+  std::size_t begin = 0;
+  while (begin <= dirs.size()) {
+    const std::size_t end = std::min(dirs.find(':', begin), dirs.size());
+    const std::string d = dirs.substr(begin, end - begin);
+    const std::string candidate = (d.empty() ? std::string(".") : d) + "/" + program;
+    if (::access(candidate.c_str(), X_OK) == 0) return true;
+    begin = end + 1;
+  }
+  return false;
+}
+
 }  // namespace
+
+void setFiguresWanted(bool wanted) noexcept { g_figures_wanted.store(wanted); }
+
+bool figuresWanted() noexcept { return g_figures_wanted.load(); }
+
+FiguresScope::FiguresScope(bool wanted) noexcept : previous_(figuresWanted()) {
+  setFiguresWanted(previous_ && wanted);
+}
+
+FiguresScope::~FiguresScope() { setFiguresWanted(previous_); }
+
+bool gnuplotAvailable() { return canStart(gnuplotProgram()); }
 
 void drawFigure(const fs::path& dir, const std::string& stem, const std::string& body) {
   writeFileAtomic(dir / (stem + ".gp"), scriptFor(stem, body));
+  if (!figuresWanted()) return;
+  if (!gnuplotAvailable()) {
+    if (!g_missing_gnuplot_noted.exchange(true))
+      consoleErr() << "ornithopter: note: figures skipped: gnuplot (" << gnuplotProgram()
+                   << ") not found; the figure scripts (*.gp) are kept: install gnuplot "
+                      "(apt-get install gnuplot-nox), then `ornithopter plot DIR` draws them\n";
+    return;
+  }
   drawInScratch(dir, stem);
 }
 

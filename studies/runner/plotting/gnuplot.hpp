@@ -18,9 +18,34 @@
 
 namespace orni::studies {
 
+/// Whether drawFigure draws figures (true, the default) or writes only their scripts (false: a
+/// study's `[output] figures = false`, `--no-figures`, a library call without figures), for
+/// every thread from now on. `ornithopter plot DIR` draws the kept scripts later.
+void setFiguresWanted(bool wanted) noexcept;
+bool figuresWanted() noexcept;
+
+/// Figures wanted while it lives when `wanted` and they were wanted before (a study's
+/// `[output] figures = false` inside a run without --no-figures); the earlier choice afterwards.
+class FiguresScope {
+ public:
+  explicit FiguresScope(bool wanted) noexcept;
+  ~FiguresScope();
+  FiguresScope(const FiguresScope&) = delete;
+  FiguresScope& operator=(const FiguresScope&) = delete;
+
+ private:
+  bool previous_;
+};
+
+/// True when the gnuplot program (ORNI_GNUPLOT, else the one found at build time, else `gnuplot`
+/// on PATH) can be started: an executable file at its path, or on PATH.
+bool gnuplotAvailable();
+
 /// Write DIR/STEM.gp from `body` (plot commands; the script header sets the terminal, output and
-/// CSV conventions: comma separator, two header rows to skip) and draw STEM.png and STEM.svg.
-/// Throws std::runtime_error (with the end of gnuplot's log) when a figure cannot be drawn.
+/// CSV conventions: comma separator, two header rows to skip) and draw STEM.png and STEM.svg when
+/// figures are wanted. Without gnuplot the figure is skipped with one notice per process on the
+/// console (console.hpp), not an error. Throws std::runtime_error (with the end of gnuplot's log)
+/// when a figure cannot be drawn.
 void drawFigure(const std::filesystem::path& dir, const std::string& stem,
                 const std::string& body);
 

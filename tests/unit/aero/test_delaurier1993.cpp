@@ -1,5 +1,5 @@
 // DeLaurier (1993) MST: term-by-term oracle O9, steady limit and induced drag O5, Garrick plunge
-// propulsion O6 and Theodorsen plunge normal force O7 (aero-mst.md section 11).
+// propulsion O6 and Theodorsen plunge normal force O7 (docs/theory.md section 5.10).
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -24,7 +24,7 @@ void expectRel(double actual, double expected, double rel_tol, const char* what)
   EXPECT_NEAR(actual, expected, rel_tol * std::fabs(expected)) << what;
 }
 
-/// The O9 strip (aero-mst.md 11 O9).
+/// The O9 strip (docs/theory.md 5.10, O9).
 struct O9Setup {
   AeroParameters params;
   StripContext context;

@@ -1,5 +1,5 @@
 // Finite-wing constants, Scherer's function and the friction coefficient of DeLaurier's MST:
-// aero-mst.md M3, M11 and the oracles O1 (last column), O2 and O8.
+// docs/theory.md 5.2 (M3), M11 and the oracles O1 (last column), O2 and O8.
 #include <cmath>
 #include <limits>
 

@@ -1,6 +1,6 @@
-// MST-TD (aero-mst.md section 9): state-space equivalence O4, agreement with DeLaurier's MST for
-// small harmonic motion, smooth separation, separated limit, reversed flow, zero speed, load
-// resolution and power.
+// MST-TD (docs/theory.md section 5.7-5.9): state-space equivalence O4, agreement with DeLaurier's
+// MST for small harmonic motion, smooth separation, separated limit, reversed flow, zero speed,
+// load resolution and power.
 #include <cmath>
 #include <limits>
 #include <random>
@@ -28,7 +28,7 @@ constexpr double kThreeDecimalTol = 5e-4;
 /// Mean lift of a zero-incidence plunge: zero by symmetry up to round-off of O(1e-2 N) samples.
 constexpr double kZeroMeanLiftN = 1e-9;
 
-/// Planar DeLaurier kinematics -> 3-D section kinematics (aero-mst.md 2.3). Frame: X forward
+/// Planar DeLaurier kinematics -> 3-D section kinematics (docs/theory.md 5.1). Frame: X forward
 /// (upstream), Y, Z up; wind tunnel, v_air = -U X; reference point P at x_P aft of the LE. The
 /// plunge (positive down) is normal to the flapping axis, which is at theta_a above U.
 SectionKinematics toSection(const PlanarKinematics& p, double x_P) {

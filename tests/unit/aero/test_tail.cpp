@@ -1,4 +1,4 @@
-// Horizontal tail, seed paper Eq. (3) with the incidence of aero-mst.md section 10, and the
+// Horizontal tail, seed paper Eq. (3) with the incidence of docs/theory.md section 7, and the
 // trim-point numbers of O11.
 #include <cmath>
 

@@ -96,6 +96,29 @@ TEST_F(ConfigStudyFile, DefaultsAndNameFromStem) {
   EXPECT_THROW((void)s.simulate(), std::logic_error);
 }
 
+TEST_F(ConfigStudyFile, OutputFiguresSwitch) {
+  EXPECT_TRUE(loadStudyFile(writeStudy("on.toml", "kind = \"trim\"\nvehicle = \"" + efw() + "\"\n"))
+                  .figures);
+  const fs::path f = writeStudy(
+      "off.toml", "kind = \"trim\"\nvehicle = \"" + efw() + "\"\n[output]\nfigures = false\n");
+  const Study s = loadStudyFile(f);
+  EXPECT_FALSE(s.figures);
+  // The resolved study keeps it (not the default), and reads back the same.
+  const std::string text = resolvedStudyToml(s);
+  EXPECT_NE(text.find("[output]\nfigures = false"), std::string::npos) << text;
+  EXPECT_FALSE(loadStudyFile(writeStudy("study.resolved.toml", text)).figures);
+  // Checked like every key: a typo and a wrong type are errors naming the key.
+  for (const char* bad : {"[output]\nfigure = false\n", "[output]\nfigures = \"no\"\n"}) {
+    try {
+      (void)loadStudyFile(writeStudy("bad_output.toml", "kind = \"trim\"\nvehicle = \"" + efw() +
+                                                            "\"\n" + bad));
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("output.figure"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST_F(ConfigStudyFile, OverridesApply) {
   const fs::path f = writeStudy("ovr.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + R"("
 

@@ -284,7 +284,7 @@ theta_deg = 0.0
   EXPECT_EQ(v.wing.fe.cutoff_hz, d.cutoff_hz);
   EXPECT_EQ(v.wing.fe.damping_ratio, d.damping_ratio);
   EXPECT_EQ(v.wing.fe.p3_cross_axis_normal, d.p3_cross_axis_normal);
-  EXPECT_EQ(v.wing.fe.inertial_stiffness, InertialStiffness::kBoth);  // structure.md 3.7
+  EXPECT_EQ(v.wing.fe.inertial_stiffness, InertialStiffness::kBoth);  // docs/theory.md 4.6
 }
 
 TEST(ConfigTomlWriter, NumbersAreShortAndExact) {

@@ -1,6 +1,6 @@
 // The flexible wing's strip loads at the quarter chord, spread over the section nodes L, Q, T, E
 // as a flat plate's loading, and the section motion the kernel sees taken with the same weights
-// (core/dynamics/chordwise_weights.*, flexible_wing.cpp, strip_kinematics.cpp; structure.md 4.3):
+// (core/dynamics/chordwise_weights.*, flexible_wing.cpp, strip_kinematics.cpp; docs/theory.md 6.3):
 // the weights against an independent quadrature; power consistency of the modal force and of the
 // resultant's power with the kinematics the kernel was given; a static flat-plate strip load
 // against nodal loads formed from the FE mode shapes directly (the old coupling misses it); the
@@ -110,7 +110,7 @@ class ChordwiseCouplingTest : public ::testing::Test {
   StripKinematics kin_;
 };
 
-// structure.md 4.3: the load operators are the transposes of the kinematic ones. For random q, q'
+// docs/theory.md 6.3: the load operators are the transposes of the kinematic ones. For random q, q'
 // and strip loads: Q . q' = sum_j (F_j . v_P,j + M_j . w_s,j), where v_P and w_s are the elastic
 // velocity of the point the force acts at and the elastic twist rate, as the kernel was given
 // them (no frame motion); the resultant's power is the same sum; and the apparent-mass force at
@@ -210,9 +210,9 @@ TEST_F(ChordwiseCouplingTest, StaticFlatPlateLoadMatchesTheNodalLoadsOfTheModeSh
 }
 
 // The kernel's convention: the batch's reference point is the quarter chord of the aerodynamic
-// strip (its circulatory force has no lever, aero-mst.md 6.3), the section's P sits at the quarter
-// chord and R at the three-quarter chord of the mesh section; the rigid wing keeps the leading
-// edge.
+// strip (its circulatory force has no lever, docs/theory.md 5.5), the section's P sits at the
+// quarter chord and R at the three-quarter chord of the mesh section; the rigid wing keeps the
+// leading edge.
 TEST_F(ChordwiseCouplingTest, ReferencePointsAtTheQuarterChord) {
   const Eigen::Index ns = flex_.stacked.ns;
   for (Eigen::Index j = 0; j < ns; ++j) {
@@ -241,7 +241,7 @@ TEST_F(ChordwiseCouplingTest, ReferencePointsAtTheQuarterChord) {
 namespace orni {
 namespace {
 
-// Why the load is spread (structure.md 4.3): the magpie's basis holds modes that bend the section
+// Why the load is spread (docs/theory.md 6.3): the magpie's basis holds modes that bend the section
 // chordwise between its sample nodes (skin panel modes), so a point load on a skin node is not
 // "harmless in a truncated global basis". Measure, per mode, the quarter-chord node's normal
 // displacement off the L-T chord line, relative to the largest normal displacement of the

@@ -1,4 +1,4 @@
-// The flexible wing in the tethered mode (structure.md 3-4): it runs, reaches a periodic state,
+// The flexible wing in the tethered mode (docs/theory.md 4, 6): it runs, reaches a periodic state,
 // differs from the rigid wing and reduces to the rigid wing when made very stiff (the modal-wing
 // cache: test_modal_wing_cache.cpp).
 #include <gtest/gtest.h>
@@ -88,7 +88,7 @@ constexpr double kInvariantVsNodalTol = 1e-8;
 
 TEST(DynamicsFlexibleTethered, InvariantFormMatchesNodalSums) {
   VehicleModel v = efw(StructureLevel::kRigid);
-  // The nodal sums are the linear-modal kinematics of structure.md 3.2 (level L3): spin softening
+  // The nodal sums are the linear-modal kinematics of docs/theory.md 4.2 (level L3): spin softening
   // but no geometric stiffening (3.6, 3.7), so compare the softening-only invariant form.
   v.wing.fe.inertial_stiffness = InertialStiffness::kSofteningOnly;
   structure::ModalWingOptions opts;
@@ -133,7 +133,7 @@ TEST(DynamicsFlexibleTethered, InvariantFormMatchesNodalSums) {
   EXPECT_LT((flex.M_qq - M_nodal).norm(), kInvariantVsNodalTol * M_nodal.norm());
 }
 
-// structure.md 3.7: the three inertial-stiffness models differ by exactly w_x^2 K^_G,xx q
+// docs/theory.md 4.6: the three inertial-stiffness models differ by exactly w_x^2 K^_G,xx q
 // (stiffening) and w_x^2 (P_xx - sum_k P_kk) q (softening) in the tethered frame inertia; at the
 // peak flapping rate the stiffening gives back part of what the softening takes from the lowest
 // frequency (on the magpie's first mode the effective Southwell coefficient is 0.77 < 1: its
@@ -160,7 +160,7 @@ TEST(DynamicsFlexibleTethered, InertialStiffnessModelsDifferByTheirMatrices) {
     q[k] = 1e-4 * std::cos(1.3 * k + 0.2) / (1.0 + k);
     qd[k] = 3e-2 * std::sin(0.7 * k + 0.5) / (1.0 + k);
   }
-  const double wx = 43.5, ax = -2100.0;  // peak flapping rate at 12 Hz (structure.md 3.7)
+  const double wx = 43.5, ax = -2100.0;  // peak flapping rate at 12 Hz (docs/theory.md 4.6)
   for (int i = 0; i < 3; ++i) {
     v.wing.fe.inertial_stiffness = models[i];
     const FlexibleWingModel flex(v, mw, chords, widths);
@@ -238,7 +238,7 @@ namespace orni {
 namespace {
 
 // Energy: with the geometrically nonlinear wing (the membrane condensed
-// into the modes, structure.md 3.8), over a periodic cycle the work of the hinges equals the
+// into the modes, docs/theory.md 4.7), over a periodic cycle the work of the hinges equals the
 // aerodynamic work plus the structural damping, to 1e-3 per cycle. The sampled hinge power is
 // the nodal-sum power (aero + rate of kinetic energy + rate of strain energy, the membrane's
 // included, + damping); its cycle mean must equal the quadrature of aero + damping power, which

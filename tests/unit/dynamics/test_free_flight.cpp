@@ -1,4 +1,4 @@
-// Free flight (paper Eq. 1-2, structure.md 3.2): the Kane equations reduce to paper Eq. (1) for
+// Free flight (paper Eq. 1-2, docs/theory.md 4.2): the Kane equations reduce to paper Eq. (1) for
 // massless, non-flapping wings (checked against an independent integration of Eq. 1 with the
 // loads of the tethered core); without air and damping the total energy is conserved; a
 // non-flapping glider settles to its analytic steady glide.
@@ -182,7 +182,7 @@ TEST(DynamicsFreeFlight, RigidWingsConserveEnergyWithoutAirAndDamping) {
 }
 
 TEST(DynamicsFreeFlight, FlexibleWingsConserveEnergyWithoutAirAndDamping) {
-  // Level L2 drops the inertia terms quadratic in q (structure.md 3.6); with q' of 0.05 the
+  // Level L2 drops the inertia terms quadratic in q (docs/theory.md 4.5); with q' of 0.05 the
   // modal energy of both wings is 3.7e-3 J and the neglected terms leave a drift far below it.
   // Spin softening only (Kane's L2 equations, measured 2.9e-7 J) and no inertial stiffness:
   double scale = 0.0;
@@ -190,7 +190,7 @@ TEST(DynamicsFreeFlight, FlexibleWingsConserveEnergyWithoutAirAndDamping) {
     const double drift = energyDrift(StructureLevel::kFlexible, &scale, m);
     EXPECT_LT(drift, 1e-6 * scale) << "drift " << drift << " J of " << scale << " J";
   }
-  // With geometric stiffening (structure.md 3.7, the default) the K_G of the frame acceleration
+  // With geometric stiffening (docs/theory.md 4.6, the default) the K_G of the frame acceleration
   // a_O - g_W, which the wings' own vibration shakes (O(q'') here, the body falls with g), adds a
   // term K_G(q'') q of order q^2 that has no potential in the L2 energy: measured 1.4e-5 J, 0.4 %
   // of the modal energy (2.9e-7 J without the acceleration loads).
@@ -310,7 +310,7 @@ namespace {
 
 // Two implementations of the flexible wing on the flapping hinge: the free-flight Kane system
 // (general invariants, body rows) with a body too heavy to move and no gravity must give the
-// tethered system's cycle-mean aerodynamic loads (structure.md 3.4 with w = phi' e_x).
+// tethered system's cycle-mean aerodynamic loads (docs/theory.md 4.3 with w = phi' e_x).
 TEST(DynamicsFreeFlight, ImmovableBodyReproducesTheTetheredFlexibleWing) {
   VehicleModel v = efw(StructureLevel::kFlexible);
   v.air.gravity_mps2 = 0.0;

@@ -1,6 +1,6 @@
-// The right-hand side of the equations of motion must not allocate after warm-up (style.md 8).
-// This translation unit replaces the global operator new/delete of the test binary with counting
-// versions; the counter is read only around the measured sections.
+// The right-hand side of the equations of motion must not allocate after warm-up (docs/design.md
+// 7.8). This translation unit replaces the global operator new/delete of the test binary with
+// counting versions; the counter is read only around the measured sections.
 #include <gtest/gtest.h>
 
 #include <atomic>

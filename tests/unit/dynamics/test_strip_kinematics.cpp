@@ -1,6 +1,6 @@
 // Strip kinematics, modal force and resultant of the flexible wing (core/dynamics/
 // strip_kinematics.*: stacked shapes, one vectorised pass over the strips) against a second
-// implementation: the formulas of structure.md 4.2-4.4 strip by strip with Vec3 algebra and the
+// implementation: the formulas of docs/theory.md 6.2-6.4 strip by strip with Vec3 algebra and the
 // per-strip mode shapes of FlexibleStrip (not the stacked matrix).
 #include <gtest/gtest.h>
 
@@ -110,7 +110,7 @@ TEST_F(StripKinematicsTest, ModalForceAndResultantMatchTheStripSums) {
     const Vec3 es(kin_.esx()[j], kin_.esy()[j], kin_.esz()[j]);
     const Vec3 n(b.nx[j], b.ny[j], b.nz[j]);
     const Vec3 mid(kin_.midx()[j], kin_.midy()[j], kin_.midz()[j]);
-    // Q = Phi_P^T F + psi_twist^T (M . e_s) (structure.md 4.3).
+    // Q = Phi_P^T F + psi_twist^T (M . e_s) (docs/theory.md 6.3).
     Q_ref += fs.phi_P.transpose() * F + fs.psi_twist.transpose() * Mp.dot(es);
     // Resultant about P2 with the apparent-mass force along n at mid-chord and couple about e_s.
     F_ref += F + ef_[j] * n;
@@ -133,7 +133,7 @@ TEST_F(StripKinematicsTest, ModalForceAndResultantMatchTheStripSums) {
 
 // The tethered right-hand side forms M_qq + A(f) as packedLower(M_qq + apparent_const) +
 // apparent_per_f f; it must be the lower triangle of addApparentModalMass's matrix form, and
-// A(f) must be the strip sum of structure.md 4.4.
+// A(f) must be the strip sum of docs/theory.md 6.4.
 TEST_F(StripKinematicsTest, PackedApparentMassIsTheStripSum) {
   const Eigen::Index ns = flex_.stacked.ns;
   const int M = flex_.mode_count;

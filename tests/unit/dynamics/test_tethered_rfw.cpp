@@ -156,7 +156,7 @@ TEST(DynamicsTetheredRfw, PowerBalanceOverACycle) {
 }
 
 // The 3-D MST-TD pipeline and DeLaurier's planar model agree for small, attached, nearly
-// harmonic motion (aero-mst.md 9.3: MST-TD reduces to DeLaurier there). Residual differences:
+// harmonic motion (docs/theory.md 5.7: MST-TD reduces to DeLaurier there). Residual differences:
 // q_ref = rho V_r^2/2 vs rho U V/2 and the resultant vs linear angle, both O((hdot/U)^2).
 TEST(DynamicsTetheredRfw, MstTdMatchesDeLaurierForSmallAttachedMotion) {
   VehicleModel v = testing::rfwRig();

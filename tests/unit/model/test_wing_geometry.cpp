@@ -35,7 +35,7 @@ TEST(ModelWingGeometry, StripsCoverTheSpanWithFiniteTipChord) {
   ASSERT_EQ(strips.size(), 27u);
   EXPECT_DOUBLE_EQ(strips.front().y_inner_m, 0.0);
   EXPECT_NEAR(strips.back().y_outer_m, 0.27, 1e-15);
-  EXPECT_GT(strips.back().chord_m, 0.0);  // no zero-chord strip at the tip (aero-mst.md 2.1)
+  EXPECT_GT(strips.back().chord_m, 0.0);  // no zero-chord strip at the tip (docs/theory.md 2.1)
   EXPECT_LT(strips.back().chord_m, strips.front().chord_m);
 }
 

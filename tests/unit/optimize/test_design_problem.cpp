@@ -4,7 +4,7 @@
 // trimmed (g = -1) with the hinge power as the objective, a trim without equilibrium is a finite
 // violation (how far from trim), a design that is not a valid vehicle is a failed evaluation
 // (never an exception), and the warm start follows the last converged trim of the start. With the
-// periodic trim: the Floquet constraint and values are the orbit's (issue 16).
+// periodic trim: the Floquet constraint and values are the orbit's (docs/theory.md 10.3).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -225,7 +225,7 @@ TEST(OptimizeDesignProblem, RejectsInconsistentSetups) {
   EXPECT_THROW(DesignProblem(v, s, o), std::invalid_argument);
 }
 
-// The periodic trim as the trim of a design evaluation (issue 16): the flexible magpie at 12 Hz
+// The periodic trim as the trim of a design evaluation (docs/theory.md 10.3): the flexible magpie at 12 Hz
 // with the floquet_max_modulus constraint and no bounded-norm flight. The orbit and multipliers
 // are solvePeriodicTrim's (the same code path, so equal to the last bit), the constraint is
 // max |mu| / limit - 1, and the objective is the hinge power of the tethered periodic run at the

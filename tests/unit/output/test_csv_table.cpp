@@ -1,5 +1,5 @@
 // CSV tables (studies/runner/output/csv_table.hpp), against its header comment and
-// architecture.md 4: a names row, a units row, then the values; numbers in the shortest text that
+// docs/design.md 4: a names row, a units row, then the values; numbers in the shortest text that
 // reads back to the same double (checked bit for bit with strtod, and against hand-written
 // texts); text cells quoted per RFC 4180 when they hold a comma or a double quote, newlines
 // refused; columns of unequal length refused without changing the table; row_stride keeps rows

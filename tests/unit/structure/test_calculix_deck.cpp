@@ -1,4 +1,4 @@
-// CalculiX deck writer (structure.md 6.2): parse the deck text of a small mesh back and check
+// CalculiX deck writer (docs/theory.md 2.7): parse the deck text of a small mesh back and check
 // node and element counts, shared midside nodes, units (mm, MPa, t/mm^3) and the joints.
 #include <gtest/gtest.h>
 
@@ -254,7 +254,7 @@ TEST(StructureCalculixDeck, RejectsBadInput) {
   EXPECT_THROW(calculixDeck(w.vehicle, w.mesh, o), std::invalid_argument);
 }
 
-// Static steps (structure.md 3.8): the load ladder, the dead pressure's consistent forces on the
+// Static steps (docs/theory.md 4.7): the load ladder, the dead pressure's consistent forces on the
 // S6 midside nodes, nodal forces in N and N mm, clamped nodes with their edges' midside nodes,
 // no P2 clamp, the printed node set.
 TEST(StructureCalculixDeck, StaticStepsLoadsAndClampedNodes) {

@@ -1,4 +1,4 @@
-// Beam element against analytic oracles (structure.md 6.4): cantilever bending and torsion
+// Beam element against analytic oracles (docs/theory.md 2.8): cantilever bending and torsion
 // frequencies, static tip deflection, Euler buckling, rotating-cantilever stiffening, rigid modes.
 #include <gtest/gtest.h>
 
@@ -230,7 +230,7 @@ TEST(StructureFeBeam, EulerBucklingLoadFromGeometricStiffness) {
 }
 
 TEST(StructureFeBeam, RotatingCantileverFlapwiseStiffening) {
-  // structure.md 6.4 table: omega L^2 sqrt(rho A / EI) for gamma = Omega L^2 sqrt(rho A / EI).
+  // docs/theory.md 2.8 table: omega L^2 sqrt(rho A / EI) for gamma = Omega L^2 sqrt(rho A / EI).
   struct Case {
     double gamma, mode1, mode2;
   };

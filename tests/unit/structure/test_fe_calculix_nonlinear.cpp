@@ -1,4 +1,4 @@
-// Nonlinear statics against independent truths (structure.md 3.8, 6): our von Karman
+// Nonlinear statics against independent truths (docs/theory.md 2.7, 4.7): our von Karman
 // solve (core/structure/von_karman.hpp) against CalculiX 2.20 with NLGEOM (a full large-rotation
 // shell and beam solution) on the same mesh, S6 skin + B32R rods (calculix_deck.hpp). Needs `ccx`
 // on PATH (Debian calculix-ccx); skipped without it.

@@ -1,4 +1,4 @@
-// Cross-code reference (structure.md 6.3): the "mini-wing" plate with a leading-edge rod, against
+// Cross-code reference (docs/theory.md 2.7): the "mini-wing" plate with a leading-edge rod, against
 // CalculiX 2.20 (S8R skin + B32R rod).
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Craig-Bampton self-checks (structure.md 2.8) on a small mini-wing (dense reference solves).
+// Craig-Bampton self-checks (docs/theory.md 3.1) on a small mini-wing (dense reference solves).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Geometric stiffness of the inertial loads (structure.md 3.7): the unit load fields and their
+// Geometric stiffness of the inertial loads (docs/theory.md 4.6): the unit load fields and their
 // static solutions (equilibrium), the element matrices, the projected K^_G against the assembled
 // one, symmetry, and which loads stress a flat wing.
 #include <gtest/gtest.h>
@@ -144,7 +144,7 @@ TEST(StructureGeometricStiffness, ProjectionEqualsTheAssembledMatrixAndIsSymmetr
 }
 
 TEST(StructureGeometricStiffness, OnlyInPlaneLoadsStressTheFlatWing) {
-  // structure.md 3.7: out-of-plane loads ((a - g)_z, alpha_x, alpha_y, w_x w_z, w_y w_z) bend the
+  // docs/theory.md 4.6: out-of-plane loads ((a - g)_z, alpha_x, alpha_y, w_x w_z, w_y w_z) bend the
   // flat wing without membrane stress, so their K^_G vanishes; the in-plane ones do not.
   const MiniWingFe s = miniWingSetup();
   ModalWingOptions o;

@@ -1,4 +1,4 @@
-// Inertia invariants (structure.md 3.3): operator form vs nodal sums, and the identities between
+// Inertia invariants (docs/theory.md 3.6): operator form vs nodal sums, and the identities between
 // the primitives.
 #include <gtest/gtest.h>
 
@@ -102,7 +102,7 @@ TEST(StructureFeInvariants, PrimitiveIdentities) {
     fe_test::recordError(lumping == MassLumping::kLumped ? "sum_pkk_minus_I_lumped"
                                                          : "sum_pkk_minus_I_consistent",
                          (sum_pkk - eye).cwiseAbs().maxCoeff());
-    // C_k = P_32 - P_23 (cyclic) is skew-symmetric (structure.md 3.3).
+    // C_k = P_32 - P_23 (cyclic) is skew-symmetric (docs/theory.md 3.6).
     for (int k = 0; k < 3; ++k) {
       const int a = (k + 1) % 3, b = (k + 2) % 3;
       const Eigen::MatrixXd c = inv.P(b, a) - inv.P(a, b);

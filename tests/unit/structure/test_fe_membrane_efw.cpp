@@ -110,7 +110,7 @@ TEST(FeMembraneRomEfw, ReducedStaticMatchesTheFullNonlinearSolution) {
   // it cannot grow unnoticed.
   EXPECT_NEAR(rom_tip.lead_up_m / full_tip.lead_up_m, 1.0, 0.45);
   // The point of the exercise: the stretched skin holds the chord far better than the linear
-  // plate (structure.md 3.8: ~15 mm and more at mid-span).
+  // plate (docs/theory.md 4.7: ~15 mm and more at mid-span).
   EXPECT_LT(std::abs(full_mid.trail_up_m - full_mid.lead_up_m),
             0.5 * std::abs(lin_mid.trail_up_m - lin_mid.lead_up_m));
 }

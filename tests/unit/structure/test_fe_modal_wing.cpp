@@ -1,4 +1,4 @@
-// ModalWing: the product of the structure module (structure.md 2.4-2.6, 3.3).
+// ModalWing: the product of the structure module (docs/theory.md 3.2, 3.4-3.6).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,7 +20,7 @@ namespace {
 // Spectra (tol 1e-10 on the Ritz values) and the dense shift-invert solver: measured 2e-12 on
 // the eigenvalues; 1e-9 leaves room for other BLAS/compilers.
 constexpr double kSolverAgreementTol = 1e-9;
-// M-orthonormality of Spectra's vectors (structure.md 2.7 measured 4e-15).
+// M-orthonormality of Spectra's vectors (docs/theory.md 3.3 measured 4e-15).
 constexpr double kOrthonormalTol = 1e-10;
 
 fe_test::MiniWing wing() { return fe_test::miniWing(6, 12, 0.04, 0.09); }

@@ -1,4 +1,4 @@
-// Geometric stiffening against the analytic rotating cantilever (structure.md 3.7, 6.4), through
+// Geometric stiffening against the analytic rotating cantilever (docs/theory.md 2.8, 4.6), through
 // the machinery the flexible wing uses: buildModalWing (fixed-interface modes, invariants, K^_G of
 // the unit inertial loads) and modalInertialStiffness (softening + stiffening per w_k w_l); the
 // frequencies at a frozen spin rate Omega are the eigenvalues of Lambda + Omega^2 spin_xx against
@@ -7,14 +7,14 @@
 // A uniform rod (LE1, 2 mm, 0.27 m) along y_W, clamped at the spin axis (no hub), spinning about
 // x_W: bending along x_W is out of the plane of rotation ("flapwise", stiffened only),
 // omega^2 = omega_0^2 + K_S Omega^2; bending along z_W is in the plane of rotation ("lead-lag",
-// the flexible wing's case, structure.md 3.7), omega^2 = omega_0^2 + (K_S - 1) Omega^2.
+// the flexible wing's case, docs/theory.md 4.6), omega^2 = omega_0^2 + (K_S - 1) Omega^2.
 //
 // Reference values. Southwell coefficient of the first mode for small Omega (first-order
 // perturbation, exact): K_S = int N phi'^2 / int rho A phi^2 with N = rho A Omega^2 (L^2 - y^2)/2
 // and the exact cantilever mode phi (beta L = 1.8751040687) gives 1.1933364 (second mode
 // 6.478225); integrated here by Simpson's rule with 2e4 intervals. It agrees with the tabulated
 // rotating-beam frequencies of Wright et al. (1982, J. Appl. Mech. 49: 197-202), reproduced in
-// structure.md 6.4: (3.6817^2 - 3.5160^2)/1^2 = 1.1926 at gamma = 1, the secant slope falling
+// docs/theory.md 2.8: (3.6817^2 - 3.5160^2)/1^2 = 1.1926 at gamma = 1, the secant slope falling
 // slowly with gamma (1.1887 at gamma 2, 1.1693 at 5). The value 1.1729 sometimes quoted is that
 // secant near gamma = 4.5, not the Southwell coefficient of the uniform hub-less cantilever.
 #include <gtest/gtest.h>
@@ -34,7 +34,7 @@ namespace {
 
 constexpr double kLength = 0.27;
 constexpr double kSouthwellFirstMode = 1.1933364;  // see the header
-// Frequencies against the 5-digit table of structure.md 6.4 with 40 elements and 12 modes:
+// Frequencies against the 5-digit table of docs/theory.md 2.8 with 40 elements and 12 modes:
 // measured worst 3.0e-5 (the O(h^2) error of K_S, 1.3e-4, enters omega^2 through the stiffening
 // share K_S gamma^2 / omega^2 < 1/2 and omega at half that; the table's rounding is 1.4e-5).
 constexpr double kTableTol = 1e-4;
@@ -93,7 +93,7 @@ TEST(StructureRotatingBeam, SouthwellCoefficientsOfTheFirstMode) {
 }
 
 TEST(StructureRotatingBeam, FrequenciesMatchTheRotatingCantileverTable) {
-  // structure.md 6.4 (Wright et al. 1982): flapwise mode 1 and 2 at gamma; lead-lag
+  // docs/theory.md 2.8 (Wright et al. 1982): flapwise mode 1 and 2 at gamma; lead-lag
   // sqrt(flap^2 - gamma^2).
   struct Case {
     double gamma, flap1, flap2;
@@ -115,7 +115,7 @@ TEST(StructureRotatingBeam, FrequenciesMatchTheRotatingCantileverTable) {
 }
 
 TEST(StructureRotatingBeam, StiffeningRemovesTheLeadLagInstability) {
-  // structure.md 6.4: softening without stiffening drives the lag mode unstable for
+  // docs/theory.md 2.8: softening without stiffening drives the lag mode unstable for
   // gamma > 3.516; with K_G it is sqrt(5.5850^2 - 16) = 3.8978 at gamma = 4.
   const double gamma = 4.0;
   const Eigen::VectorXd soft = eigenvaluesAt(rotatingRod(40, InertialStiffness::kSofteningOnly), gamma);

@@ -1,5 +1,5 @@
 // CST + DKT facet: patch tests on a distorted patch, rigid-body modes, and square-plate
-// frequencies against Leissa (cantilever) and the exact simply supported values (structure.md 6.4).
+// frequencies against Leissa (cantilever) and the exact simply supported values (docs/theory.md 2.8).
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // Geometric nonlinearity of the wing model (core/structure/von_karman.hpp, membrane_rom.hpp,
-// structure.md 3.8) against independent truths:
+// docs/theory.md 4.7) against independent truths:
 // - the internal force is the gradient of the energy and the tangent its Hessian (finite
 //   differences);
 // - a clamped circular plate under uniform pressure, immovable edge: the linear solution

@@ -1,4 +1,4 @@
-// Station-sweep wing mesher (structure.md 1.6) on the two vehicle layouts of studies/vehicles:
+// Station-sweep wing mesher (docs/theory.md 2.5) on the two vehicle layouts of studies/vehicles:
 // areas, element quality, members on mesh edges, sample nodes, conformity, determinism.
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// The trim solver machinery against analytic cycle-mean loads with a known equilibrium (style.md
-// habit 9: known optimum, finite-difference check of the Jacobian): residual scaling, the
-// central/one-sided Jacobian, convergence to the root, bounds, least squares, failures, options.
+// The trim solver machinery against analytic cycle-mean loads with a known equilibrium
+// (docs/design.md 7.9: known optimum, finite-difference check of the Jacobian): residual scaling,
+// the central/one-sided Jacobian, convergence to the root, bounds, least squares, failures, options.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,7 +18,7 @@ constexpr double kSpeedStar = 9.0;
 constexpr double kTailStarDeg = 15.0;
 constexpr double kWeight = 1.2;      // N
 constexpr double kLength = 0.08;     // m
-// Tolerances (named, style.md habit 9).
+// Tolerances (named, docs/design.md 7.9).
 constexpr double kRootTolDeg = 1e-6;       // solved root vs the known one, deg
 constexpr double kRootTolSpeed = 1e-6;     // m/s
 constexpr double kCentralJacobianRel = 1e-5;  // central difference, O(h^2) with h = 0.05 deg

@@ -1,4 +1,4 @@
-// [trim] study sections (architecture.md 5): the documented layout, defaults from the vehicle,
+// [trim] study sections (docs/design.md 5): the documented layout, defaults from the vehicle,
 // bounds and tolerances, the resolved study round trip, and the study behind `ornithopter trim`.
 #include <gtest/gtest.h>
 
