@@ -21,7 +21,7 @@ packages=(
   # the Python module ornithopter (python/), its pytest suite and example
   pybind11-dev python3-numpy python3-pytest python3-matplotlib
   # `pip install .` into a venv and the wheel (python3 -m build) of python.pytest
-  python3-venv python3-setuptools python3-build
+  python3-venv python3-setuptools python3-wheel python3-build
   # the HTML reports checked in a real browser (cli.paper_results)
   chromium
   # the readers' libFuzzer target (.ci/run); flock and unshare of the CLI tests

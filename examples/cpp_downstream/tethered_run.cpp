@@ -5,10 +5,7 @@
 #include <cstring>
 #include <exception>
 
-#include "core/dynamics/tethered_simulation.hpp"
-#include "core/model/frames.hpp"
-#include "core/version.hpp"
-#include "studies/runner/config/study_file.hpp"
+#include <ornithopter/ornithopter.hpp>  // the public API in one include (docs/cpp.md)
 
 int main(int argc, char** argv) {
   if (argc != 2) {
@@ -22,17 +19,19 @@ int main(int argc, char** argv) {
     return 1;
   }
   try {
-    // The same reader and checks as `ornithopter simulate VEHICLE.toml`.
-    const orni::studies::Study study = orni::studies::studyFromVehicle(argv[1]);
-    const orni::FlightCoreModel model(study.vehicle);
+    // The same reader and checks as `ornithopter simulate VEHICLE.toml`: the vehicle and its
+    // design point ([operating_point]).
+    const orni::VehicleDefinition vehicle = orni::studies::loadVehicleFile(argv[1]);
+    const orni::FlightCoreModel model(vehicle.model);
+    const orni::OperatingPoint& point = vehicle.design_point;
     orni::SimulationOptions options;
     options.cycles = 3;
     options.record_history = false;
     const orni::SimulationSummary s =
-        orni::simulateTethered(model, study.point, options, /*history=*/nullptr);
+        orni::simulateTethered(model, point, options, /*history=*/nullptr);
     std::printf("ornithopter %s: %s, U = %g m/s, f = %g Hz, theta = %g deg\n", orni::kVersion,
-                orni::toString(s.status), study.point.speed_mps, study.point.freq_hz,
-                study.point.theta_rad * orni::kRadToDeg);
+                orni::toString(s.status), point.speed_mps, point.freq_hz,
+                point.theta_rad * orni::kRadToDeg);
     std::printf("cycles %d: mean FV = %.6g N, FH = %.6g N, M = %.6g N m, power = %.6g W\n",
                 s.cycles_run, s.mean.FV_N, s.mean.FH_N, s.mean.M_Nm, s.mean.power_aero_W);
     return s.status == orni::SimulationStatus::kFailed ? 1 : 0;

@@ -31,6 +31,18 @@ grep -q "^ornithopter $version (git " "$work/version.txt" || { echo "FAIL: --ver
 cmake -S "$src/examples/cpp_downstream" -B "$work/downstream" -DCMAKE_BUILD_TYPE=Release \
   -DCMAKE_PREFIX_PATH="$prefix" >"$work/configure.log" || { cat "$work/configure.log"; exit 1; }
 cmake --build "$work/downstream" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+# No architecture flag reaches the consumer (the package carries Eigen's alignment instead), and
+# every header the example read from the prefix is under include/ornithopter/.
+if grep -rq -- "-march" "$work/downstream/CMakeFiles/tethered_run.dir/flags.make"; then
+  echo "FAIL: the package imposes -march on its consumer:"
+  grep -- "-march" "$work/downstream/CMakeFiles/tethered_run.dir/flags.make"; exit 1
+fi
+deps=$(find "$work/downstream/CMakeFiles/tethered_run.dir" -name '*.o.d' | head -1)
+[[ -n "$deps" ]] || { echo "FAIL: no dependency file of the example's object"; exit 1; }
+outside=$(tr ' \\' '\n\n' <"$deps" | grep "^$prefix/" | { grep -v "^$prefix/include/ornithopter/" || true; } | sort -u)
+if [[ -n "$outside" ]]; then echo "FAIL: headers outside include/ornithopter/:"; echo "$outside"; exit 1; fi
+inside=$(tr ' \\' '\n\n' <"$deps" | grep -c "^$prefix/include/ornithopter/")
+echo "downstream: no -march; ${inside} headers read from $prefix/include/ornithopter/"
 "$work/downstream/tethered_run" "$src/studies/vehicles/rfw_tunnel.toml" | tee "$work/run.txt"
 grep -q "^ornithopter $version: ok" "$work/run.txt" || { echo "FAIL: downstream run not ok"; exit 1; }
 
