@@ -10,7 +10,9 @@ keeps its journal, so the same call again resumes it.
 
 Library calls are silent: nothing is printed on stdout or stderr (the returned summary holds the
 run's message), and no figure is drawn unless ``figures=True`` (gnuplot; the figure scripts are
-written into ``out`` either way, and ``ornithopter plot DIR`` draws them later).
+written into ``out`` either way, and ``ornithopter plot DIR`` draws them later). What the command
+line would print goes to the logger ``logging.getLogger("ornithopter")``: result lines and notes
+at INFO, progress at DEBUG (``logging.basicConfig(level=logging.INFO)`` shows them).
 
 Functions: :func:`load_vehicle`, :func:`load_study`, :func:`simulate`, :func:`modes`,
 :func:`aeromap`, :func:`trim`, :func:`stability`, :func:`continuation`, :func:`sweep`,

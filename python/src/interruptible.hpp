@@ -6,7 +6,8 @@
 // cancellation (core/model/cancellation.hpp), waits for the worker to stop at its next
 // cancellation point (a flapping cycle, a point, an evaluation) and raises the Python exception.
 // A cancelled run leaves what a killed one leaves: its journal, no half-written file; started
-// again it resumes. An exception of `work` is re-thrown in the caller's thread.
+// again it resumes. An exception of `work` is re-thrown in the caller's thread. Meanwhile the
+// run's message lines go to Python's logging (console_logging.hpp).
 #pragma once
 
 #include <pybind11/pybind11.h>
@@ -16,6 +17,7 @@
 #include <thread>
 #include <utility>
 
+#include "console_logging.hpp"
 #include "core/model/cancellation.hpp"
 
 namespace orni::python {
@@ -33,6 +35,7 @@ auto interruptible(Work&& work) -> decltype(work()) {
     while (done.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
       if (interrupted) continue;
       py::gil_scoped_acquire gil;
+      forwardConsoleLines();  // progress reaches Python's logging while the run goes on
       if (PyErr_CheckSignals() != 0) {  // the handler's exception is now set in this thread
         interrupted = true;
         requestCancellation();
@@ -40,6 +43,7 @@ auto interruptible(Work&& work) -> decltype(work()) {
     }
     worker.join();
   }
+  forwardConsoleLines();  // the run's last lines (its result line)
   if (interrupted) {
     clearCancellation();  // the worker has stopped: the next call runs normally
     throw py::error_already_set();

@@ -79,6 +79,7 @@ PYBIND11_MODULE(_ornithopter, m) {
   // A library call is silent: the runner's result lines, notes and progress are not printed
   // (the returned summary holds them); figures only when asked (run_study's `figures`).
   orni::studies::setConsoleQuiet(true);
+  orni::studies::setConsoleCapture(true);  // ... kept for Python's logging (console_logging.hpp)
   orni::studies::setFiguresWanted(false);
   m.attr("__version__") = orni::kVersion;
   m.attr("git_revision") = orni::kGitRevision;

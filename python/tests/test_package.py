@@ -2,6 +2,7 @@
 (pickle, copy, dicts), silent calls without figures, aero maps as grids, the analyses beyond
 simulate/trim (stability, sweep, continuation, sensitivity)."""
 import copy
+import logging
 import os
 import pickle
 import subprocess
@@ -45,7 +46,8 @@ def test_vehicle_pickles_copies_and_round_trips_dicts():
     assert e.value.key == "tail.arm_m"
 
 
-def test_calls_write_nothing_on_fd_1_and_2(capfd):
+def test_calls_write_nothing_on_fd_1_and_2(capfd, caplog):
+    caplog.set_level(logging.INFO, logger="ornithopter")
     v = ornithopter.load_vehicle(EFW)
     ornithopter.simulate(v, cycles=2, histories=False)
     ornithopter.simulate(v, mode="free", cycles=2)  # through the CLI's run: its lines muted
@@ -53,6 +55,10 @@ def test_calls_write_nothing_on_fd_1_and_2(capfd):
     ornithopter.aeromap(v, speeds=[10], freqs=[12], thetas=[5])
     out, err = capfd.readouterr()
     assert out == "" and err == ""
+    # What the CLI would print went to logging instead: the free flight's and the trim's result
+    # lines ("<name>: <status>: ... -> <folder>").
+    logged = [r.getMessage() for r in caplog.records if r.name == "ornithopter"]
+    assert any(m.startswith("efw_magpie: ") for m in logged), logged
 
 
 def test_one_point_aeromap_costs_the_point_plus_at_most_0_1_s(tmp_path):

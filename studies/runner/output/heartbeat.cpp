@@ -46,7 +46,9 @@ void Heartbeat::loop() {
   while (!wake_.wait_until(lock, next, [this] { return stop_; })) {
     const double elapsed_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (out_ != stderr || !consoleQuiet()) {  // quiet: a library call (console.hpp)
+    if (out_ == stderr && consoleQuiet()) {  // a library call (console.hpp): kept, not printed
+      consoleCaptureProgress(text(label_, elapsed_s));
+    } else {
       std::fprintf(out_, "%s\n", text(label_, elapsed_s).c_str());
       std::fflush(out_);
     }

@@ -57,9 +57,12 @@ void ProgressLine::pointDone() {
 void ProgressLine::finish() { draw(true); }
 
 void ProgressLine::draw(bool final_line) {
-  if (out_ == stderr && consoleQuiet()) return;  // a library call (console.hpp)
   const double elapsed_s = secondsBetween(start_, std::chrono::steady_clock::now());
   std::string line = text(label_, done_, total_, done_here_, elapsed_s);
+  if (out_ == stderr && consoleQuiet()) {  // a library call (console.hpp): kept, not printed
+    consoleCaptureProgress(line);
+    return;
+  }
   if (tty_) {
     const std::size_t width = line.size();
     if (width < last_width_) line.append(last_width_ - width, ' ');  // clear a longer line

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "studies/runner/output/console.hpp"
 #include "studies/runner/output/html_report.hpp"
@@ -155,6 +156,29 @@ TEST(Console, QuietDiscardsEverything) {
   setConsoleQuiet(false);
   EXPECT_EQ(&consoleOut(), &std::cout);
   EXPECT_EQ(&consoleErr(), &std::cerr);
+}
+
+TEST(Console, CaptureKeepsCompleteLinesForTheCaller) {
+  setConsoleQuiet(true);
+  setConsoleCapture(true);
+  (void)takeConsoleLines();
+  consoleOut() << "result " << 1 << "\npartial";
+  consoleErr() << "note\n";
+  consoleCaptureProgress("progress 3/10");
+  const std::vector<ConsoleLine> lines = takeConsoleLines();
+  ASSERT_EQ(lines.size(), 3u);
+  EXPECT_EQ(lines[0].text, "result 1");
+  EXPECT_EQ(lines[0].kind, ConsoleLine::Kind::kResult);
+  EXPECT_EQ(lines[1].text, "note");
+  EXPECT_EQ(lines[1].kind, ConsoleLine::Kind::kNote);
+  EXPECT_EQ(lines[2].kind, ConsoleLine::Kind::kProgress);
+  EXPECT_TRUE(takeConsoleLines().empty());
+  consoleOut() << "\n";  // ends "partial"
+  EXPECT_EQ(takeConsoleLines().at(0).text, "partial");
+  setConsoleCapture(false);
+  consoleOut() << "dropped\n";
+  EXPECT_TRUE(takeConsoleLines().empty());
+  setConsoleQuiet(false);
 }
 
 }  // namespace

@@ -1,0 +1,14 @@
+// The runner's message lines (result lines, notes, progress: studies/runner/output/console.hpp),
+// kept while a library call runs quietly, handed to Python's logging: logger "ornithopter",
+// result lines and notes at INFO, progress and heartbeat lines at DEBUG. Python's default
+// logging shows neither (nothing is printed unless the caller configures logging, e.g.
+// logging.basicConfig(level=logging.INFO)).
+#pragma once
+
+namespace orni::python {
+
+/// Logs every kept line and forgets it. Needs the GIL; never throws (a failing handler is
+/// logging's own business).
+void forwardConsoleLines() noexcept;
+
+}  // namespace orni::python
