@@ -14,6 +14,7 @@
 #include "core/model/vehicle_validation.hpp"
 #include "core/model/wing_inertia.hpp"
 #include "trim/periodic_trim.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni::opt {
 
@@ -152,6 +153,7 @@ DesignEvaluation evaluateDesign(const VehicleModel& vehicle, const DesignProblem
       e.message.replace(0, 7, std::string("trimmed (") + buf + ")");
     }
   } catch (const std::exception& ex) {
+    rethrowIfProgrammingError(ex);  // core/model/invariant.hpp
     e.trim_attempted = false;
     e.message = std::string("design not evaluated: ") + ex.what();
   }

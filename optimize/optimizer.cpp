@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "core/model/cancellation.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni::opt {
 
@@ -275,13 +276,18 @@ class StartRun {
         abort_->store(true);
         return stopped("run cancelled");
       } catch (const std::exception& e) {
+        if (isProgrammingError(e)) {  // core/model/invariant.hpp: the run fails, loudly
+          if (!error_) error_ = std::current_exception();
+          abort_->store(true);
+          return stopped("run failed on a programming error (rethrown)");
+        }
         rec.result = Evaluation{};
         rec.result.status = EvaluationStatus::kFailed;
         rec.result.message = e.what();
-      } catch (...) {
-        rec.result = Evaluation{};
-        rec.result.status = EvaluationStatus::kFailed;
-        rec.result.message = "unknown exception";
+      } catch (...) {  // not a std::exception: nothing this code throws, so not an outcome
+        if (!error_) error_ = std::current_exception();
+        abort_->store(true);
+        return stopped("run failed on an unknown exception (rethrown)");
       }
       rec.source = EvaluationSource::kComputed;
     }

@@ -8,6 +8,7 @@
 
 #include "core/grid/point_pool.hpp"
 #include "core/model/field_table.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -112,6 +113,7 @@ AeroMapPoint computeAeroMapPoint(const FlightCoreModel& model, const OperatingPo
     r.last_cycle_change = s.last_cycle_change;
     r.mean = s.mean;
   } catch (const std::exception& e) {
+    rethrowIfProgrammingError(e);  // core/model/invariant.hpp: stops the map
     r.status = SimulationStatus::kFailed;
     r.message = oneLine(std::string("simulation threw: ") + e.what());
   }

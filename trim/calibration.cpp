@@ -5,6 +5,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <exception>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,6 +18,7 @@
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/cancellation.hpp"
 #include "trim/ceres_logging.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -25,6 +27,9 @@ struct CalibrationContext {
   const VehicleModel* base;
   const CalibrationOptions* options;
   std::vector<CalibrationEvaluation>* log;
+  /// A programming error inside an evaluation (core/model/invariant.hpp): the solve aborts and
+  /// calibrate rethrows it (Ceres is not left by an exception).
+  std::shared_ptr<std::exception_ptr> fatal = std::make_shared<std::exception_ptr>();
   bool tethered = false;  ///< Eq. (4) residuals of the tethered means instead of settled flight
   /// The modal wings of the evaluations (calibrated parameters rarely touch the structure).
   std::shared_ptr<ModalWingCache> modal_wings = std::make_shared<ModalWingCache>();
@@ -115,6 +120,7 @@ bool evaluate(const CalibrationContext& c, const double* u, double* r,
     sim.rel_tol = settledFlightRelTol(model);
     e.settled = settledFreeFlight(model, o.target, sim, o.settled);
   } catch (const std::exception& ex) {
+    rethrowIfProgrammingError(ex);  // core/model/invariant.hpp
     e.settled.ok = false;
     e.settled.message = ex.what();
   }
@@ -131,9 +137,11 @@ bool evaluate(const CalibrationContext& c, const double* u, double* r,
 // residuals in deg, 0.1 m/s and deg: |r_i| <= tolerance for all i when |r| <= tolerance).
 class ToleranceCallback : public ceres::IterationCallback {
  public:
-  explicit ToleranceCallback(double tolerance) : tol_(tolerance) {}
+  ToleranceCallback(double tolerance, const std::exception_ptr* fatal)
+      : tol_(tolerance), fatal_(fatal) {}
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (cancellationRequested()) return ceres::SOLVER_ABORT;  // the caller throws Cancelled
+    if (*fatal_) return ceres::SOLVER_ABORT;                  // ... or the programming error
     if (s.step_is_successful || s.iteration == 0)
       if (2.0 * s.cost <= tol_ * tol_) return ceres::SOLVER_TERMINATE_SUCCESSFULLY;
     return ceres::SOLVER_CONTINUE;
@@ -141,14 +149,19 @@ class ToleranceCallback : public ceres::IterationCallback {
 
  private:
   double tol_;
+  const std::exception_ptr* fatal_;
 };
 
 struct Functor {
   const CalibrationContext* c;
   bool operator()(const double* const x, double* r) const {
+    if (*c->fatal) return false;  // an earlier evaluation hit a programming error
     try {
       return evaluate(*c, x, r);
     } catch (const Cancelled&) {  // Ceres is not left by an exception: the caller throws after
+      return false;
+    } catch (...) {  // a programming error: the solve aborts, the caller rethrows it
+      if (!*c->fatal) *c->fatal = std::current_exception();
       return false;
     }
   }
@@ -356,12 +369,13 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
     so.logging_type = ceres::SILENT;
     so.num_threads = 1;
     // Tethered stage: 1e-3 % of W is plenty for a starting point of the free-flight stage.
-    ToleranceCallback stop(tethered ? 1e-3 : options.tolerance);
+    ToleranceCallback stop(tethered ? 1e-3 : options.tolerance, ctx.fatal.get());
     so.callbacks.push_back(&stop);
     quietCeresLogging();  // our summary says why the solve ended
     ceres::Solver::Summary cs;
     ceres::Solve(so, &problem, &cs);
     throwIfCancelled();  // core/model/cancellation.hpp
+    if (*ctx.fatal) std::rethrow_exception(*ctx.fatal);
     s.iterations += static_cast<int>(cs.iterations.size()) - 1;
     s.ceres_report += (s.ceres_report.empty() ? "" : " | ") + cs.BriefReport();
     return cs.message;

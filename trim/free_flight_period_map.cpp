@@ -6,6 +6,7 @@
 
 #include "core/dynamics/flapping.hpp"
 #include "core/dynamics/modal_implicit_split.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -78,8 +79,8 @@ FreeFlightPeriodMap::FreeFlightPeriodMap(const FlightCoreModel& model,
                        FloquetStateKind::kAeroLag, 0});
       units_.emplace_back(separation ? "-" : "rad");
     }
-  if (static_cast<int>(info_.size()) != n_)
-    throw std::logic_error("free-flight period map: state layout mismatch");
+  ORNI_DEMAND(static_cast<int>(info_.size()) == n_,
+              "free-flight period map: one state description per state");
 }
 
 FreeFlightPeriodMap::~FreeFlightPeriodMap() = default;

@@ -14,6 +14,7 @@
 #include "trim/free_flight_period_map.hpp"
 #include "trim/periodic_trim.hpp"
 #include "trim/trim_options.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -354,6 +355,7 @@ SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoi
                        : "the flight released here did not reach it: " + flight);
     }
   } catch (const std::exception& ex) {
+    rethrowIfProgrammingError(ex);  // core/model/invariant.hpp
     r.ok = false;
     r.message = ex.what();
   }

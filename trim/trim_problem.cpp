@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "core/model/frames.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -66,6 +67,7 @@ MeanLoadsFunction tetheredMeanLoads(const FlightCoreModel& model,
       e.mean = s.mean;
       e.message = s.message;
     } catch (const std::exception& ex) {
+      rethrowIfProgrammingError(ex);  // core/model/invariant.hpp
       e.ok = false;
       e.message = ex.what();
     }

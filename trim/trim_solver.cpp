@@ -5,6 +5,7 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
+#include <exception>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -68,7 +69,8 @@ namespace {
 // Eq. (4) residuals and their central-difference Jacobian (trim_problem.hpp) as a Ceres cost.
 class TrimCostFunction final : public ceres::CostFunction {
  public:
-  explicit TrimCostFunction(TrimProblem* problem) : problem_(problem) {
+  TrimCostFunction(TrimProblem* problem, std::exception_ptr* fatal)
+      : problem_(problem), fatal_(fatal) {
     set_num_residuals(kTrimResidualCount);
     mutable_parameter_block_sizes()->push_back(problem->unknownCount());
   }
@@ -76,10 +78,14 @@ class TrimCostFunction final : public ceres::CostFunction {
                 double** jacobians) const override {
     // A failed periodic run makes the point infeasible: Ceres shrinks the trust region. A
     // cancelled one too (Ceres is not left by an exception); solveTrim throws after Solve.
+    if (*fatal_) return false;  // an earlier evaluation hit a programming error
     try {
       if (!problem_->residual(parameters[0], residuals)) return false;
       if (jacobians && jacobians[0]) return problem_->jacobian(parameters[0], jacobians[0]);
     } catch (const Cancelled&) {
+      return false;
+    } catch (...) {  // a programming error (core/model/invariant.hpp): solveTrim rethrows it
+      if (!*fatal_) *fatal_ = std::current_exception();
       return false;
     }
     return true;
@@ -87,6 +93,7 @@ class TrimCostFunction final : public ceres::CostFunction {
 
  private:
   TrimProblem* problem_;
+  std::exception_ptr* fatal_;
 };
 
 // Records every iteration, stops at the equilibrium tolerance (Ceres has no absolute residual
@@ -96,8 +103,9 @@ class TrimCostFunction final : public ceres::CostFunction {
 class TrimCallback final : public ceres::IterationCallback {
  public:
   TrimCallback(TrimProblem* problem, const double* x, const TrimOptions& options,
-               std::vector<TrimIterationRecord>* log)
-      : problem_(problem),
+               std::vector<TrimIterationRecord>* log, const std::exception_ptr* fatal)
+      : fatal_(fatal),
+        problem_(problem),
         x_(x),
         tol_(options.residual_tol),
         stall_iterations_(options.stall_iterations),
@@ -106,6 +114,7 @@ class TrimCallback final : public ceres::IterationCallback {
   bool stalled() const { return stalled_; }
   ceres::CallbackReturnType operator()(const ceres::IterationSummary& s) override {
     if (cancellationRequested()) return ceres::SOLVER_ABORT;  // solveTrim throws Cancelled
+    if (*fatal_) return ceres::SOLVER_ABORT;                  // ... or the programming error
     TrimIterationRecord r;
     r.iteration = s.iteration;
     r.point = problem_->pointAt(x_);
@@ -132,6 +141,7 @@ class TrimCallback final : public ceres::IterationCallback {
   }
 
  private:
+  const std::exception_ptr* fatal_;  ///< set by TrimCostFunction: abort the solve
   TrimProblem* problem_;
   const double* x_;
   double tol_;
@@ -164,7 +174,8 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
   ceres::Problem::Options problem_options;
   problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem ceres_problem(problem_options);
-  ceres_problem.AddResidualBlock(new TrimCostFunction(&problem), nullptr, x.data());
+  std::exception_ptr fatal;  // a programming error inside an evaluation, rethrown after Solve
+  ceres_problem.AddResidualBlock(new TrimCostFunction(&problem, &fatal), nullptr, x.data());
   for (int j = 0; j < n; ++j) {
     const TrimUnknown u = options.unknowns[static_cast<std::size_t>(j)];
     const TrimBounds& b = options.bounds[static_cast<std::size_t>(trimIndex(u))];
@@ -172,7 +183,7 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
     ceres_problem.SetParameterUpperBound(x.data(), j, b.upper / trimUnknownScale(u));
   }
 
-  TrimCallback callback(&problem, x.data(), options, &summary.iteration_log);
+  TrimCallback callback(&problem, x.data(), options, &summary.iteration_log, &fatal);
   ceres::Solver::Options so;
   so.minimizer_type = ceres::TRUST_REGION;
   so.trust_region_strategy_type = ceres::LEVENBERG_MARQUARDT;
@@ -197,6 +208,7 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
   quietCeresLogging();  // our summary says why the solve ended
   ceres::Solve(so, &ceres_problem, &cs);
   throwIfCancelled();  // core/model/cancellation.hpp: the solve above stopped early for it
+  if (fatal) std::rethrow_exception(fatal);
 
   summary.ceres_message = cs.message;
   summary.ceres_report = cs.BriefReport();

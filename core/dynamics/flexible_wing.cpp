@@ -7,6 +7,7 @@
 
 #include "core/aero/mst_strip.hpp"
 #include "core/dynamics/chordwise_weights.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -85,7 +86,7 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
           : Eigen::MatrixXd::Zero(M, M);
   h_x = inv.S(0, 0) - (inv.S(0, 0) + inv.S(1, 1) + inv.S(2, 2));
   H_x = inv.rotational_participation.row(0).transpose();
-  if (M_qq.rows() != M) throw std::logic_error("flexible wing: invariant sizes");
+  ORNI_DEMAND(M_qq.rows() == M, "flexible wing: the modal mass matrix has one row per mode");
   stacked = stackStrips(strips, M, apparent_mass_kg, apparent_rotary_kgm2);
   if (nonlinear() && M > 0 && stiffness[0] > 0.0)
     membrane_damping_s = damping[0] / stiffness[0];  // 2 zeta_1 omega_1 / omega_1^2

@@ -10,6 +10,7 @@
 #include "core/dynamics/free_flight_recorder.hpp"
 #include "core/integrate/ode_integrator.hpp"
 #include "core/model/cancellation.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni {
 
@@ -72,9 +73,9 @@ std::string startFromPeriodicState(const FlightCoreModel& model, const Operating
     return std::string(toString(ts.status)) + ": " + ts.message;
   const int M = sys.modeCount();
   const std::vector<double>& w = ts.final_wing_state;
-  if (ts.final_mode_count != M ||
-      static_cast<int>(w.size()) != 2 * M + (sys.powerOffset() - sys.aeroOffset()))
-    throw std::logic_error("free flight: tethered periodic state has another layout");
+  ORNI_DEMAND(ts.final_mode_count == M &&
+                  static_cast<int>(w.size()) == 2 * M + (sys.powerOffset() - sys.aeroOffset()),
+              "free flight: the tethered periodic state has the free flight's layout");
   std::copy(w.begin(), w.end(), y0 + FreeFlightSystem::kBody);
 
   // Body oscillation over the last cycle (uniform samples, endpoint = the release point).

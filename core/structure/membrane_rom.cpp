@@ -1,5 +1,6 @@
 // Condensed membrane stiffness of the modal wing (membrane_rom.hpp, docs/theory.md 4.7).
 #include "core/structure/membrane_rom.hpp"
+#include "core/model/invariant.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -147,8 +148,8 @@ Eigen::MatrixXd ModalMembraneStiffness::tangent(const Eigen::VectorXd& q) const 
 }
 
 Eigen::VectorXd ModalMembraneStiffness::membraneDisplacement(const Eigen::VectorXd& q) const {
-  if (relaxation.cols() != pairCount())
-    throw std::logic_error("membraneDisplacement: the relaxation shapes were not kept");
+  ORNI_DEMAND(relaxation.cols() == pairCount(),
+              "membraneDisplacement: the relaxation shapes were not kept");
   Eigen::VectorXd products(pairCount());
   pairProducts(*this, q, &products);
   return relaxation * products;

@@ -14,6 +14,7 @@
 #include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "trim/trim_solver.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni::studies {
 
@@ -179,6 +180,7 @@ SweepPointResult runSensitivityPoint(const Study& point, const SensitivitySettin
   try {
     r = runPoint(point, settings, modal_wings);
   } catch (const std::exception& e) {
+    rethrowIfProgrammingError(e);  // core/model/invariant.hpp: stops the run
     r = SweepPointResult();
     r.status = "failed";
     r.message = std::string("the run threw: ") + e.what();

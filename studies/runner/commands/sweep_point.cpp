@@ -12,6 +12,7 @@
 #include "studies/runner/output/atomic_file.hpp"
 #include "trim/periodic_trim.hpp"
 #include "trim/trim_solver.hpp"
+#include "core/model/invariant.hpp"
 
 namespace orni::studies {
 
@@ -229,6 +230,7 @@ SweepPointResult runSweepPoint(const Study& point, StudyKind run, ModalWingCache
     else
       r = tetheredPoint(point, modal_wings);
   } catch (const std::exception& e) {
+    rethrowIfProgrammingError(e);  // core/model/invariant.hpp: stops the run
     r = SweepPointResult();
     r.status = "failed";
     r.message = std::string("the run threw: ") + e.what();
