@@ -3,7 +3,7 @@
 // (along e_L, up +) are the paper's. One definition for the tethered, free-flight and trim paths.
 #pragma once
 
-#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/load_sample.hpp"
 #include "core/model/frames.hpp"
 
 namespace orni {

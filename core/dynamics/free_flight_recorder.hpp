@@ -11,7 +11,7 @@
 
 #include "core/analysis/bounded_norm.hpp"
 #include "core/analysis/limit_cycle.hpp"
-#include "core/dynamics/free_flight.hpp"
+#include "core/dynamics/free_flight_result.hpp"
 #include "core/dynamics/free_flight_system.hpp"
 #include "core/dynamics/simulation_options.hpp"
 

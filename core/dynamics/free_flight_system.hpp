@@ -21,27 +21,12 @@
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/free_flight_model.hpp"
+#include "core/dynamics/free_flight_result.hpp"
 #include "core/dynamics/modal_implicit_split.hpp"
 #include "core/dynamics/small_cholesky.hpp"
 #include "core/dynamics/strip_kinematics.hpp"
 
 namespace orni {
-
-/// Longitudinal body state (B components; h altitude up).
-struct BodyState {
-  double x_I_m = 0, h_m = 0, theta_rad = 0, U_mps = 0, W_mps = 0, Q_radps = 0;
-};
-
-/// Everything the free-flight RHS computes at one instant (for histories and tests).
-struct FreeFlightSample {
-  double Udot_mps2 = 0, Wdot_mps2 = 0, Qdot_radps2 = 0;
-  LoadSample loads;   ///< aerodynamic loads of wings (incl. apparent mass) and tail about P1 in
-                      ///< the flight-path frame; the inertial fields hold the wings' inertial
-                      ///< reaction on the fuselage
-  double kinetic_energy_J = 0;    ///< fuselage + both wings (rigid part + modal)
-  double potential_energy_J = 0;  ///< gravity (m g h of the whole vehicle, wing CG offsets
-                                  ///< included) + strain energy of both wings
-};
 
 /// Per-run scratch of the right-hand side: sized once, reused by every evaluation (no heap
 /// allocation in rhs).

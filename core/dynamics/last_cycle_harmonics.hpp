@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/analysis/harmonics.hpp"
-#include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/load_sample.hpp"
 
 namespace orni {
 

@@ -47,6 +47,15 @@ check "a private header included in its own folder passes" check_layers "$t"
 echo '#include "core/integrate/callback_guard.hpp"' > "$t/core/dynamics/f.cpp"
 check "a private header included from another folder fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
 
+# Inside core/dynamics: a result header including a driver header runs back up.
+rm "$t/core/dynamics/f.cpp"
+echo '#include <vector>' > "$t/core/dynamics/free_flight.hpp"
+echo '#include "core/dynamics/load_sample.hpp"' > "$t/core/dynamics/flight_path_frame.hpp"
+echo '#include <vector>' > "$t/core/dynamics/load_sample.hpp"
+check "a result header on a result header passes" check_layers "$t"
+echo '#include "core/dynamics/free_flight.hpp"' > "$t/core/dynamics/free_flight_recorder.hpp"
+check "a result header including a driver header fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
+
 # The repository.
 report=$(check_layers "$root")
 rc=$?
