@@ -1,5 +1,6 @@
 // Spectra shift-invert generalised eigen-solution (docs/theory.md 3.3).
 #include "core/structure/modal_solver.hpp"
+#include "core/model/invariant.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +69,7 @@ EigenSolution runSpectra(OpType& op, const SparseMatrix& mass, int count,
     out.eigenvalues = es.eigenvalues();
     out.vectors = es.eigenvectors();
   } catch (const std::exception& e) {
+    rethrowIfProgrammingError(e);  // core/model/invariant.hpp: a misuse of Spectra is a bug
     out.message = std::string("Spectra: ") + e.what();
     return out;
   }

@@ -98,6 +98,17 @@ check "the set of runs has its report index.html" test -f "$scratch/new/index.ht
 for s in "${fast[@]}"; do
   [[ -f "$scratch/new/$s/index.html" ]] || { echo "FAIL no report $scratch/new/$s/index.html"; fail=1; }
 done
+# The check can fail: a committed report with one figure removed.
+mkdir -p "$scratch/broken_report"
+cp -r "$base/fig9_constrained_flight_test" "$scratch/broken_report/"
+rm "$scratch/broken_report/fig9_constrained_flight_test/loads.png"
+bash "$root/tests/support/check_reports.sh" "$scratch/browser_selftest" "$scratch/broken_report" \
+  > "$scratch/browser_selftest.log" 2>&1
+r=$?
+if [[ $r -ne 77 ]]; then
+  check "the browser check fails on a report whose figure is missing" test $r -eq 1
+  check "... and names the image" grep -q "FAIL image not shown: loads.png" "$scratch/browser_selftest.log"
+fi
 bash "$root/tests/support/check_reports.sh" "$scratch/browser" "$scratch/new" "$base"
 r=$?
 if [[ $r -eq 77 && "${CI:-}" != "true" ]]; then
