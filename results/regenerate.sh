@@ -44,6 +44,12 @@ start=$(date +%s.%N)
 "$bin" run "${studies[@]}" -o "$out" -j "$jobs"
 end=$(date +%s.%N)
 rm -f "$out"/*/*.journal "$out"/*/*.tmp*
+# The committed folders keep the PNGs only (.gitignore): the SVGs go, and every report
+# (index.html, and results/paper/index.html over all the studies) is written again from what is
+# committed, so that no committed report links an uncommitted file (cli.paper_results checks the
+# committed reports in a browser on a fresh clone).
+find "$out" -name '*.svg' -delete
+"$bin" report "$out" >/dev/null
 
 # The literal wing's investigation flies the same core (tethered runs and trims): regenerated with
 # the studies so that the page never mixes two versions.
