@@ -25,8 +25,7 @@ VehicleObject VehicleObject::load(const std::string& path) {
   return v;
 }
 
-VehicleObject VehicleObject::fromDict(const py::dict& d, const std::string& source) {
-  toml::table table = toTomlTable(d, "vehicle");
+VehicleObject VehicleObject::fromTable(const toml::table& table, const std::string& source) {
   studies::ReadContext context;
   context.file = kPythonSource;
   VehicleObject v;
@@ -35,14 +34,12 @@ VehicleObject VehicleObject::fromDict(const py::dict& d, const std::string& sour
   return v;
 }
 
+VehicleObject VehicleObject::fromDict(const py::dict& d, const std::string& source) {
+  return fromTable(toTomlTable(d, "vehicle"), source);
+}
+
 VehicleObject VehicleObject::fromToml(const std::string& text, const std::string& source) {
-  toml::table table = studies::parseTomlText(text, kPythonSource);
-  studies::ReadContext context;
-  context.file = kPythonSource;
-  VehicleObject v;
-  v.source_ = source;
-  v.adopt(studies::parseVehicleTable(table, context, std::string()));
-  return v;
+  return fromTable(studies::parseTomlText(text, kPythonSource), source);
 }
 
 VehicleObject VehicleObject::clone() const {

@@ -54,6 +54,8 @@ class VehicleObject {
   std::shared_ptr<const FlightCoreModel> coreModel() const;
 
  private:
+  /// A vehicle from a vehicle document, read by the file reader (errors name "<python>").
+  static VehicleObject fromTable(const toml::table& table, const std::string& source);
   void adopt(VehicleDefinition definition);
 
   VehicleDefinition definition_;  ///< the vehicle and its design point ([operating_point])
