@@ -229,11 +229,8 @@ FolderFiles listFolder(const fs::path& dir, const std::string& kind) {
     if (k.kind == kind)
       for (const std::string& pattern : k.figure_stems)
         for (const std::string& s : stems) {
-          const bool prefix = !pattern.empty() && pattern.back() == '*';
-          const bool match = prefix ? s.compare(0, pattern.size() - 1, pattern, 0,
-                                                pattern.size() - 1) == 0
-                                    : s == pattern;
-          if (match && std::find(ordered.begin(), ordered.end(), s) == ordered.end())
+          if (stemMatches(pattern, s) &&
+              std::find(ordered.begin(), ordered.end(), s) == ordered.end())
             ordered.push_back(s);
         }
   for (const std::string& s : stems)

@@ -17,12 +17,6 @@ const std::vector<std::string> kCommonFiles = {"summary.json", "study.resolved.t
                                                "index.html"};
 const std::vector<std::string> kFigureExtensions = {".gp", ".png", ".svg"};
 
-bool stemMatches(const std::string& pattern, const std::string& stem) {
-  if (!pattern.empty() && pattern.back() == '*')
-    return stem.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0;
-  return pattern == stem;
-}
-
 /// `dir` as one spelling (absolute, normal, no trailing separator).
 fs::path folderKey(const fs::path& dir) {
   fs::path p = fs::absolute(dir.empty() ? fs::path(".") : dir).lexically_normal();
@@ -34,6 +28,12 @@ std::mutex g_mutex;
 std::set<fs::path> g_expected;  // folders locked for a run, not yet claimed
 
 }  // namespace
+
+bool stemMatches(const std::string& pattern, const std::string& stem) {
+  if (!pattern.empty() && pattern.back() == '*')
+    return stem.compare(0, pattern.size() - 1, pattern, 0, pattern.size() - 1) == 0;
+  return pattern == stem;
+}
 
 const std::vector<KindOutputs>& runOutputsByKind() {
   static const std::vector<KindOutputs> kinds = {

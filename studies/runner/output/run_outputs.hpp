@@ -25,6 +25,10 @@ struct KindOutputs {
   std::vector<std::string> figure_stems;
 };
 
+/// True when figure stem `stem` is named by `pattern` (a KindOutputs figure stem, '*' at its end
+/// a prefix).
+bool stemMatches(const std::string& pattern, const std::string& stem);
+
 /// Every kind's outputs.
 const std::vector<KindOutputs>& runOutputsByKind();
 
