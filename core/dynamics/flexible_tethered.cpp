@@ -180,38 +180,25 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   aero.separated_fraction =
       ((1.0 - b.separation_f) * b.chord_m * b.width_m).sum() / (b.chord_m * b.width_m).sum();
   // Inertial loads of the wing by nodal sums over the FE mesh (docs/theory.md 4.4, level L3):
-  // a_p = alpha x s + w x (w x s) + 2 w x Phi q' + Phi q''.
-  const structure::ModalWing& mw = *flex_.modal;
-  Vec3 F = Vec3::Zero(), M = Vec3::Zero(), J_alpha = Vec3::Zero();
-  double kinetic_rate = 0.0;
-  for (std::size_t p = 0; p < mw.phi_W.size(); ++p) {
-    const double m = mw.nodal_mass_kg[static_cast<Eigen::Index>(p)];
-    if (m <= 0.0) continue;
-    const Eigen::Matrix3Xd& phi = mw.phi_W[p];
-    const Vec3 s = mw.mesh.nodes_W_m[p] + phi * q_;
-    const Vec3 u_d = phi * qd_;
-    const Vec3 a = alpha_W_.cross(s) + omega_W_.cross(omega_W_.cross(s)) +
-                   2.0 * omega_W_.cross(u_d) + phi * qdd_;
-    const Vec3 v = omega_W_.cross(s) + u_d;
-    F -= m * a;
-    M -= m * s.cross(a);
-    kinetic_rate += m * a.dot(v);
-    J_alpha += mw.nodal_rotary_W_kgm2[p] * alpha_W_;
-  }
-  M -= J_alpha;  // rigid rotary inertia of the nodes (w x J w vanishes about the hinge axis here)
+  // a_p = alpha x s + w x (w x s) + 2 w x Phi q' + Phi q'', the sums taken as bilinear forms of
+  // the lumped mesh (lumped_inertia_sums.hpp; equal to the per-node loop up to round-off).
+  const structure::WingInertialLoads inertial = structure::wingInertialLoads(
+      flex_.modal->lumped_sums, q_, qd_, qdd_, omega_W_, alpha_W_, &inertia_ws_);
+  const Vec3& F = inertial.force_W_N;
+  const Vec3& M = inertial.moment_W_Nm;  // incl. the nodes' rigid rotary inertia J alpha
+  const Vec3& J_alpha = inertial.rotary_moment_W_Nm;  // (w x J w vanishes about the hinge axis)
+  const double kinetic_rate = inertial.kinetic_energy_rate_W;
   // Hinge power into one wing: motor moment about x times phi' = aero power + rate of kinetic
   // energy + rate of strain energy (elastic and, with w_x^2 K_G, geometric: the nodal sums above
   // hold the spin softening but not the stiffening, docs/theory.md 4.6) + damping dissipation.
-  const structure::ModalMembraneStiffness::Rates membrane =
-      flex_.membrane().rates(q_, qd_, flex_.membrane_damping_s, &membrane_ws_);
+  // The membrane's share, dV_NL/dt plus its strain-rate dissipation, is the power evaluate()
+  // already found (ModalMembraneStiffness::addForce; 0 for the linear wing).
   rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
   const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
-                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_) +
-                             membrane.strain_energy_rate_W;  // dV_NL/dt (0 if linear)
-  const double damping_power =
-      qd_.dot(flex_.damping.cwiseProduct(qd_)) + membrane.dissipation_W;
+                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
+  const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
   const double hinge = aero.power_aero_W + kinetic_rate + omega_W_.dot(J_alpha) + strain_rate +
-                       damping_power;
+                       damping_power + membrane_power_W_;
   fuselageLoads(aero, F, M, hinge, out);
   const FlexibleStrip& tip = flex_.strips[static_cast<std::size_t>(flex_.tip_strip)];
   out->tip_deflection_m = -(tip.phi_L * q_).z();  // z_W is down

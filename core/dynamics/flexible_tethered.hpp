@@ -67,6 +67,7 @@ class FlexibleTetheredSystem {
   Eigen::VectorXd q_, qd_, qdd_, Q_, rhs_vec_, frame_inertia_;
   Eigen::VectorXd membrane_force_;  // f_NL(q) of the nonlinear wing (zero for the linear one)
   structure::ModalMembraneStiffness::Workspace membrane_ws_;
+  structure::LumpedInertiaWorkspace inertia_ws_;  // sample()'s inertial loads
   double membrane_power_W_ = 0.0;  // its power on q' (per wing): dissipation + dV_NL/dt
   Eigen::VectorXd mass_base_packed_;  // M_qq + the f-independent apparent mass, packed lower
   SmallCholesky chol_;

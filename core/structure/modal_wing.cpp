@@ -147,6 +147,7 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
   w.nodal_mass_kg = lumped.mass_kg;
   w.nodal_rotary_W_kgm2 = lumped.rotary_W_kgm2;
   w.invariants = invariantsOperatorForm(fe.mass, w.mode_shapes, mesh.nodes_W_m, p2);
+  w.lumped_sums = lumpedInertiaSums(w.nodal_mass_kg, w.nodal_rotary_W_kgm2, w.phi_W, mesh.nodes_W_m);
   if (options.geometric_stiffness)
     w.geometric_stiffness =
         modalGeometricStiffness(wing_structure, mesh, fe, part, w.mode_shapes, fe_options);

@@ -10,6 +10,7 @@
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/inertia_invariants.hpp"
+#include "core/structure/lumped_inertia_sums.hpp"
 #include "core/structure/membrane_rom.hpp"
 #include "core/structure/modal_solver.hpp"
 #include "core/structure/mode_selection.hpp"
@@ -58,6 +59,7 @@ struct ModalWing {
   Eigen::VectorXd nodal_mass_kg;          ///< lumped translational mass per node
   std::vector<Mat3> nodal_rotary_W_kgm2;  ///< lumped rotary block per node
   InertiaInvariants invariants;           ///< operator form with the chosen M, about P2
+  LumpedInertiaSums lumped_sums;          ///< nodal sums of the lumped mesh (histories' loads)
   ModalGeometricStiffness geometric_stiffness;  ///< K^_G per unit inertial load (docs/theory.md
                                                 ///< 4.6); empty if not asked for
   ModalMembraneStiffness membrane;        ///< the condensed membrane (docs/theory.md 4.7); empty

@@ -9,7 +9,10 @@
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the vehicle's operating point, MST-TD;
 //     modes as above; nonlinear:0 the linear wing (the default), 1 the nonlinear. Target:
 //     nonlinear within 2x the linear.
-//   BM_FlexibleTetheredRhs: one right-hand side of that run.
+//   BM_TetheredEfwFlexible10CyclesHistories: the linear run recorded at 100 samples a cycle;
+//     target: at most 20 % over the run without histories.
+//   BM_FlexibleTetheredRhs: one right-hand side of that run; BM_FlexibleTetheredSample: one
+//     history sample.
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -91,6 +94,27 @@ BENCHMARK(BM_TetheredEfwFlexible10Cycles)
     ->Args({1, 12, 0})
     ->Unit(benchmark::kMillisecond);
 
+// The same 10 cycles (linear wing, the vehicle's modes) recorded at 100 samples a cycle into a
+// TimeHistory, as the CLI and the Python module run them: the cost of the histories is the
+// difference to BM_TetheredEfwFlexible10Cycles/explicit:0/modes:0/nonlinear:0 (target <= 20 %).
+void BM_TetheredEfwFlexible10CyclesHistories(benchmark::State& state) {
+  const FlightCoreModel model(efwFlexible());
+  const OperatingPoint point = efwFile().design_point;
+  SimulationOptions opts;
+  opts.cycles = 10;
+  opts.record_history = true;
+  opts.samples_per_cycle = 100;
+  std::size_t samples = 0;
+  for (auto _ : state) {
+    TimeHistory history;
+    const SimulationSummary s = simulateTethered(model, point, opts, &history);
+    benchmark::DoNotOptimize(s.mean.FV_N);
+    samples = history.t_s.size();
+  }
+  state.counters["samples"] = static_cast<double>(samples);
+}
+BENCHMARK(BM_TetheredEfwFlexible10CyclesHistories)->Unit(benchmark::kMillisecond);
+
 // One right-hand side of the flexible tethered wing (strip kinematics, MST-TD kernel, modal
 // loads, apparent mass and its LDL^T solve, resultant, quadratures) on a state of the orbit.
 void BM_FlexibleTetheredRhs(benchmark::State& state) {
@@ -113,5 +137,28 @@ void BM_FlexibleTetheredRhs(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FlexibleTetheredRhs)->ArgName("nonlinear")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// One history sample of that run (FlexibleTetheredSystem::sample: the right-hand side's loads plus
+// the inertial loads by the lumped sums, the separated area and the hinge power).
+void BM_FlexibleTetheredSample(benchmark::State& state) {
+  VehicleModel v = efwFlexible();
+  v.wing.fe.nonlinear = state.range(0) != 0;
+  const FlightCoreModel model(v);
+  const OperatingPoint op = efwFile().design_point;
+  FlexibleTetheredSystem sys(model, *model.flexible,
+                             tetheredBodyMotion(op.speed_mps, op.theta_rad),
+                             ControlInput{op.freq_hz, op.tail_angle_rad});
+  std::vector<double> y(static_cast<std::size_t>(sys.stateCount()));
+  sys.initialState(0.0, y.data());
+  for (int i = 0; i < 2 * model.flexible->mode_count; ++i) y[static_cast<std::size_t>(i)] = 1e-4;
+  double t = 0.0;
+  LoadSample s;
+  for (auto _ : state) {
+    sys.sample(t, y.data(), &s);
+    benchmark::DoNotOptimize(s.FV_N);
+    t += 1e-5;
+  }
+}
+BENCHMARK(BM_FlexibleTetheredSample)->ArgName("nonlinear")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
