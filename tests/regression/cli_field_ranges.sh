@@ -99,4 +99,16 @@ check "... lists every vehicle group's key" grep -qE '^operating_point\.freq_hz 
 check "keys vehicl exits 2" test $? -eq 2
 check "... suggests vehicle" grep -qF "did you mean 'vehicle'?" "$scratch/err.txt"
 
+# ornithopter keys --outputs: the output table (output_schema.hpp), all of it or one run kind's.
+"$bin" keys --outputs trim >"$scratch/outputs.txt" 2>&1
+check "keys --outputs trim exits 0" test $? -eq 0
+check "... lists trim's summary values with unit and meaning" \
+  grep -qE '^theta_mean_deg +deg +[a-z,]*trim[a-z,]* +.*pitch' "$scratch/outputs.txt"
+check "... and only what trim writes" bash -c "! grep -qF '[aeromap.csv]' '$scratch/outputs.txt'"
+"$bin" keys --outputs >"$scratch/outputs_all.txt" 2>&1
+check "keys --outputs lists every CSV the runs write" grep -qF '[aeromap.csv]' "$scratch/outputs_all.txt"
+"$bin" keys --outputs trm >"$scratch/out.txt" 2>"$scratch/err.txt"
+check "keys --outputs trm exits 2" test $? -eq 2
+check "... suggests trim" grep -qF "did you mean 'trim'?" "$scratch/err.txt"
+
 exit $fail

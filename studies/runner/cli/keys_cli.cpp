@@ -1,4 +1,6 @@
-// `ornithopter keys [GROUP] [--markdown]`: the field table as text or Markdown.
+// `ornithopter keys [GROUP] [--markdown]`: the field table as text or Markdown; with --outputs the
+// output table (studies/runner/output/output_schema.hpp).
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -11,6 +13,7 @@
 #include "studies/runner/cli/subcommands.hpp"
 #include "studies/runner/commands/keys_command.hpp"
 #include "studies/runner/config/toml_access.hpp"
+#include "studies/runner/output/output_schema.hpp"
 
 namespace orni::studies::cli {
 
@@ -19,17 +22,38 @@ namespace {
 struct KeysArgs {
   std::string group;
   bool markdown = false;
+  bool outputs = false;
 };
 
+std::string joined(const std::vector<std::string>& items) {
+  std::string list;
+  for (const std::string& g : items) list += (list.empty() ? "" : ", ") + g;
+  return list;
+}
+
+/// `keys --outputs [KIND]`: the output table (output_schema.hpp), all of it or one run kind's.
+int runOutputs(const KeysArgs& a) {
+  std::vector<std::string> kinds;
+  for (std::string_view k : outputKinds()) kinds.emplace_back(k);
+  if (!a.group.empty() && std::find(kinds.begin(), kinds.end(), a.group) == kinds.end()) {
+    const std::string near = closestMatch(a.group, kinds);
+    throw CliError("command line: KIND (with --outputs): expected one of " + joined(kinds) +
+                   ", got '" + a.group + "'" +
+                   (near.empty() ? std::string() : " (did you mean '" + near + "'?)"));
+  }
+  std::cout << outputListing(a.group, a.markdown);
+  return kExitOk;
+}
+
 int runKeys(const KeysArgs& a) {
+  if (a.outputs) return runOutputs(a);
   const std::optional<std::string> text = keysText(a.group, a.markdown);
   if (!text) {
     std::vector<std::string> groups;
     for (std::string_view g : fieldGroups()) groups.emplace_back(g);
     const std::string near = closestMatch(a.group, groups);
-    std::string list;
-    for (const std::string& g : groups) list += (list.empty() ? "" : ", ") + g;
-    throw CliError("command line: GROUP: expected one of " + list + ", got '" + a.group + "'" +
+    throw CliError("command line: GROUP: expected one of " + joined(groups) + ", got '" + a.group +
+                   "'" +
                    (near.empty() ? std::string() : " (did you mean '" + near + "'?)"));
   }
   std::cout << *text;
@@ -46,8 +70,13 @@ Subcommand addKeysSubcommand(CLI::App& app) {
       "range, default and meaning, from the one table every reader checks");
   keys->add_option("GROUP", a->group,
                    "vehicle | study | simulate | aeromap | trim | optimize | calibrate | sweep | "
-                   "sensitivity | continuation | cli (default: every group)");
-  keys->add_flag("--markdown", a->markdown, "Markdown tables (docs/keys.md, the key reference)");
+                   "sensitivity | continuation | cli (default: every group); with --outputs a "
+                   "run kind: simulate | aeromap | trim | ... (default: every kind)");
+  keys->add_flag("--markdown", a->markdown,
+                 "Markdown tables (docs/keys.md, the key reference; with --outputs docs/outputs.md)");
+  keys->add_flag("--outputs", a->outputs,
+                 "List the outputs instead: every summary.json value and CSV column the runs "
+                 "write, with unit and meaning");
   return {keys, [a] { return runKeys(*a); }, false};
 }
 

@@ -15,6 +15,7 @@
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/json_reader.hpp"
+#include "studies/runner/output/output_schema.hpp"
 #include "studies/runner/output/run_outputs.hpp"
 
 namespace orni::studies {
@@ -164,23 +165,39 @@ std::string arrayCell(const JsonValue& v) {
   return out + "</td>";
 }
 
-/// Rows "key | value | unit" for the scalars and arrays of `object` (nested objects flattened
-/// with dotted keys below `prefix`).
-void appendRows(const JsonValue& object, const std::string& prefix, std::string& rows) {
+/// The unit and meaning cells of the summary value at `path` (JSON path, "[]" for an array): from
+/// the output table (output_schema.hpp), or the unit the key's suffix names when the table does not
+/// describe it.
+std::string unitAndMeaningCells(const std::string& path, const std::string& key,
+                                const JsonValue& v) {
+  const OutputSpec* o =
+      findOutput("summary.json", v.type == JsonValue::Type::kArray ? path + "[]" : path);
+  if (o == nullptr) return "<td>" + escapeHtml(unitOf(key)) + "</td><td></td>";
+  const std::string unit = o->unit == "-" ? std::string() : std::string(o->unit);
+  return "<td>" + escapeHtml(unit) + "</td><td class=\"text\">" +
+         escapeHtml(std::string(o->meaning)) + "</td>";
+}
+
+/// Rows "key | value | unit | meaning" for the scalars and arrays of `object` (nested objects
+/// flattened with dotted keys below `prefix`, the JSON path below `json_prefix`).
+void appendRows(const JsonValue& object, const std::string& prefix, const std::string& json_prefix,
+                std::string& rows) {
   for (const auto& [key, v] : object.members) {
     const std::string path = prefix.empty() ? key : prefix + "." + key;
+    const std::string json_path = json_prefix.empty() ? key : json_prefix + "." + key;
     if (v.type == JsonValue::Type::kObject) {
-      appendRows(v, path, rows);
+      appendRows(v, path, json_path, rows);
       continue;
     }
     rows += "<tr><td class=\"key\">" + escapeHtml(path) + "</td>";
     rows += v.type == JsonValue::Type::kArray ? arrayCell(v) : scalarCell(v);
-    rows += "<td>" + escapeHtml(unitOf(key)) + "</td></tr>\n";
+    rows += unitAndMeaningCells(json_path, key, v) + "</tr>\n";
   }
 }
 
 std::string table(const std::string& rows) {
-  return "<table>\n<tr><th>key</th><th>value</th><th>unit</th></tr>\n" + rows + "</table>\n";
+  return "<table>\n<tr><th>key</th><th>value</th><th>unit</th><th>meaning</th></tr>\n" + rows +
+         "</table>\n";
 }
 
 std::string statusClass(const std::string& status) {
@@ -326,7 +343,7 @@ void writeRunReport(const fs::path& run_dir) {
     if (key == "kind" || key == "status" || key == "message") continue;
     if (v.type == JsonValue::Type::kObject) {
       std::string rows;
-      appendRows(v, "", rows);
+      appendRows(v, "", key, rows);
       sections += "<details" + std::string(sections.empty() ? " open" : "") + "><summary>" +
                   escapeHtml(key) + "</summary>\n" + (rows.empty() ? std::string() : table(rows)) +
                   "</details>\n";
@@ -334,7 +351,7 @@ void writeRunReport(const fs::path& run_dir) {
     }
     top_rows += "<tr><td class=\"key\">" + escapeHtml(key) + "</td>";
     top_rows += v.type == JsonValue::Type::kArray ? arrayCell(v) : scalarCell(v);
-    top_rows += "<td>" + escapeHtml(unitOf(key)) + "</td></tr>\n";
+    top_rows += unitAndMeaningCells(key, key, v) + "</tr>\n";
   }
   page += "<h2>Results</h2>\n<p>From <a href=\"summary.json\">summary.json</a>; numbers to 6 "
           "significant digits (the exact value is in each number's tooltip).</p>\n";
