@@ -107,6 +107,18 @@ check "... lists trim's summary values with unit and meaning" \
 check "... and only what trim writes" bash -c "! grep -qF '[aeromap.csv]' '$scratch/outputs.txt'"
 "$bin" keys --outputs >"$scratch/outputs_all.txt" 2>&1
 check "keys --outputs lists every CSV the runs write" grep -qF '[aeromap.csv]' "$scratch/outputs_all.txt"
+# The wing's modes (a kind the paper studies do not run): its outputs are in the table.
+"$bin" modes "$root/studies/vehicles/efw_magpie.toml" -o "$scratch/modes" --no-figures >/dev/null 2>&1
+check "modes exits 0" test $? -eq 0
+"$bin" keys --outputs --check "$scratch/modes" >"$scratch/modes_check.txt" 2>&1
+check "keys --outputs --check: every value and column of modes described" test $? -eq 0
+grep -v ' 0 findings$' "$scratch/modes_check.txt" | head -20
+# ... and the check finds an undescribed value.
+sed 's/"kind": "modes",/"kind": "modes", "no_such_value": 1,/' "$scratch/modes/summary.json" \
+  >"$scratch/modes/summary.json.new" && mv "$scratch/modes/summary.json.new" "$scratch/modes/summary.json"
+"$bin" keys --outputs --check "$scratch/modes" >"$scratch/modes_check.txt" 2>&1
+check "keys --outputs --check exits 1 on an undescribed value" test $? -eq 1
+check "... naming it" grep -qF "summary.json no_such_value: not in the output table" "$scratch/modes_check.txt"
 "$bin" keys --outputs trm >"$scratch/out.txt" 2>"$scratch/err.txt"
 check "keys --outputs trm exits 2" test $? -eq 2
 check "... suggests trim" grep -qF "did you mean 'trim'?" "$scratch/err.txt"

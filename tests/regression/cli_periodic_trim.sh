@@ -79,6 +79,11 @@ check "stability: complete" grep -q '"complete": true' "$scratch/stability/summa
 mu_all=$(json "$scratch/stability/summary.json" max_modulus)
 check "stability max_modulus $mu_all equals the trim's $mu (1e-6)" awk_true "($mu_all - $mu) ^ 2 < 1e-12"
 check "stability draws the multipliers" test -s "$scratch/stability/floquet_multipliers.png"
+# Their outputs are in the output table (studies/runner/output/output_schema_table.cpp).
+"$bin" keys --outputs --check "$out" "$scratch/stability" > "$scratch/outputs_check.txt" 2>&1
+check "keys --outputs --check: every value and column of the periodic trim and stability described" \
+  test $? -eq 0
+grep -v ' 0 findings$' "$scratch/outputs_check.txt" | head -20
 
 # A vehicle far too heavy (10 kg): not_converged with the reason, exit 0, no orbit outputs, no NaN.
 cat > "$scratch/heavy.toml" <<EOF

@@ -23,6 +23,7 @@ struct KeysArgs {
   std::string group;
   bool markdown = false;
   bool outputs = false;
+  std::vector<std::string> check_dirs;
 };
 
 std::string joined(const std::vector<std::string>& items) {
@@ -33,6 +34,23 @@ std::string joined(const std::vector<std::string>& items) {
 
 /// `keys --outputs [KIND]`: the output table (output_schema.hpp), all of it or one run kind's.
 int runOutputs(const KeysArgs& a) {
+  if (!a.check_dirs.empty()) {  // --check DIR...: the run folders against the table
+    int findings = 0;
+    for (const std::string& dir : a.check_dirs) {
+      OutputCheck c;
+      try {
+        c = checkRunFolder(dir);
+      } catch (const std::runtime_error& e) {
+        throw CliError(std::string("--check: ") + e.what());
+      }
+      for (const std::string& f : c.findings) std::cout << dir << ": " << f << "\n";
+      findings += static_cast<int>(c.findings.size());
+      std::cout << dir << ": " << c.kind << " run, " << c.summary_values << " summary values and "
+                << c.csv_columns << " CSV columns, " << c.findings.size()
+                << (c.findings.size() == 1 ? " finding" : " findings") << "\n";
+    }
+    return findings == 0 ? kExitOk : kExitFailed;
+  }
   std::vector<std::string> kinds;
   for (std::string_view k : outputKinds()) kinds.emplace_back(k);
   if (!a.group.empty() && std::find(kinds.begin(), kinds.end(), a.group) == kinds.end()) {
@@ -77,6 +95,11 @@ Subcommand addKeysSubcommand(CLI::App& app) {
   keys->add_flag("--outputs", a->outputs,
                  "List the outputs instead: every summary.json value and CSV column the runs "
                  "write, with unit and meaning");
+  keys->add_option("--check", a->check_dirs,
+                   "With --outputs: check finished run folders against the output table (every "
+                   "summary value and CSV column described, CSV units as listed); exit 1 on a "
+                   "finding")
+      ->expected(1, -1);
   return {keys, [a] { return runKeys(*a); }, false};
 }
 

@@ -1,8 +1,13 @@
 #include "studies/runner/output/output_schema.hpp"
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
 
 #include "core/model/field_table.hpp"
+#include "studies/runner/output/json_reader.hpp"
 
 namespace orni::studies {
 
@@ -30,14 +35,8 @@ bool matchFrom(const std::vector<std::string_view>& pattern, std::size_t pi,
   if (pi == pattern.size()) return si == path.size();
   if (si == path.size()) return false;
   const std::string_view p = pattern[pi];
-  for (const std::string_view ph : {std::string_view("<key>"), std::string_view("<output>")}) {
-    if (p.substr(0, ph.size()) != ph) continue;
-    const std::string_view suffix = p.substr(ph.size());
-    if (ph == "<output>") {
-      const std::string_view seg = path[si];
-      return endsWith(seg, suffix) && seg.size() > suffix.size() &&
-             matchFrom(pattern, pi + 1, path, si + 1);
-    }
+  if (p.substr(0, 5) == "<key>") {
+    const std::string_view suffix = p.substr(5);
     std::string joined;
     for (std::size_t sj = si; sj < path.size(); ++sj) {
       if (sj > si) joined += '.';
@@ -47,6 +46,14 @@ bool matchFrom(const std::vector<std::string_view>& pattern, std::size_t pi,
       if (findField(key) != nullptr && matchFrom(pattern, pi + 1, path, sj + 1)) return true;
     }
     return false;
+  }
+  const std::size_t open = p.find('<'), close = p.find('>');
+  if (open != std::string_view::npos && close != std::string_view::npos && close > open) {
+    // <output>, <variable>, w_<mode>, ...: one name, with the segment's literal prefix and suffix.
+    const std::string_view prefix = p.substr(0, open), suffix = p.substr(close + 1);
+    const std::string_view seg = path[si];
+    return seg.size() > prefix.size() + suffix.size() && seg.substr(0, prefix.size()) == prefix &&
+           endsWith(seg, suffix) && matchFrom(pattern, pi + 1, path, si + 1);
   }
   return p == path[si] && matchFrom(pattern, pi + 1, path, si + 1);
 }
@@ -67,7 +74,103 @@ std::vector<std::string_view> filesInOrder() {
   return files;
 }
 
+/// One CSV line's cells (RFC 4180 quoting).
+std::vector<std::string> csvCells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cells.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else if (c != '\r') {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
+void checkOne(OutputCheck& check, const std::string& file, const std::string& path,
+              const std::string* unit) {
+  const OutputSpec* o = findOutput(file, path);
+  if (o == nullptr) {
+    check.findings.push_back(file + " " + path + ": not in the output table");
+    return;
+  }
+  check.used.insert(o);
+  if (!outputKindListed(o->kinds, check.kind))
+    check.findings.push_back(file + " " + path + ": written by a " + check.kind +
+                             " run, the table lists " + std::string(o->kinds));
+  if (unit != nullptr && o->unit != "per key" && o->unit != "per variable" && *unit != o->unit)
+    check.findings.push_back(file + " " + path + ": units row '" + *unit + "', the table '" +
+                             std::string(o->unit) + "'");
+}
+
+void checkSummary(OutputCheck& check, const JsonValue& v, const std::string& path) {
+  if (v.type == JsonValue::Type::kObject) {
+    for (const auto& [k, m] : v.members) checkSummary(check, m, path.empty() ? k : path + "." + k);
+    return;
+  }
+  if (v.type == JsonValue::Type::kArray) {
+    bool nested = false;
+    for (const JsonValue& e : v.items)
+      if (!e.isScalar()) {
+        nested = true;
+        checkSummary(check, e, path + "[]");
+      }
+    if (nested) return;
+    ++check.summary_values;
+    checkOne(check, "summary.json", path + "[]", nullptr);
+    return;
+  }
+  ++check.summary_values;
+  checkOne(check, "summary.json", path, nullptr);
+}
+
 }  // namespace
+
+OutputCheck checkRunFolder(const std::string& run_dir) {
+  namespace fs = std::filesystem;
+  const fs::path dir(run_dir);
+  std::ifstream in(dir / "summary.json", std::ios::binary);
+  if (!in) throw std::runtime_error(run_dir + ": no summary.json (not a finished run folder)");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const JsonValue summary = parseJson(text.str());
+  const JsonValue* kind = summary.find("kind");
+  if (kind == nullptr || kind->type != JsonValue::Type::kString)
+    throw std::runtime_error(run_dir + "/summary.json: no \"kind\"");
+  OutputCheck check;
+  check.kind = kind->text;
+  checkSummary(check, summary, "");
+  std::vector<fs::path> csvs;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (e.is_regular_file() && e.path().extension() == ".csv") csvs.push_back(e.path());
+  std::sort(csvs.begin(), csvs.end());
+  for (const fs::path& csv : csvs) {
+    std::ifstream f(csv);
+    std::string names_line, units_line;
+    std::getline(f, names_line);
+    std::getline(f, units_line);
+    const std::vector<std::string> names = csvCells(names_line), units = csvCells(units_line);
+    const std::string file = csv.filename().string();
+    for (std::size_t c = 0; c < names.size(); ++c) {
+      ++check.csv_columns;
+      checkOne(check, file, names[c], c < units.size() ? &units[c] : nullptr);
+    }
+  }
+  return check;
+}
 
 const OutputSpec* findOutput(std::string_view file, std::string_view path) {
   const std::vector<std::string_view> concrete = split(path, '.');

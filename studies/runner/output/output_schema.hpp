@@ -5,6 +5,7 @@
 // CSV unit row that disagrees with it, and on an entry no file holds.
 #pragma once
 
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,7 +17,9 @@ struct OutputSpec {
   std::string_view kinds;    ///< run kinds whose folders hold it, comma-separated ("trim,optimize")
   /// A CSV column's name, or a JSON path: '.' between object keys, "[]" for an array's elements.
   /// Placeholders: <key> an input key of the field table (it may span dots, e.g.
-  /// materials.LE1.youngs_modulus_gpa), <output> one name (a sensitivity study's predicted output).
+  /// materials.LE1.youngs_modulus_gpa); any other <...> one name (<output> a sensitivity study's
+  /// predicted output, <variable> an optimisation's design variable, w_<mode> the columns w_1,
+  /// w_2, ...).
   std::string_view path;
   std::string_view unit;     ///< as a CSV's units row writes it; "-" none; "per key" the key's unit
   std::string_view meaning;
@@ -30,6 +33,20 @@ const OutputSpec* findOutput(std::string_view file, std::string_view path);
 
 /// True when `kinds` (an OutputSpec's list) names `kind`.
 bool outputKindListed(std::string_view kinds, std::string_view kind);
+
+/// What checkRunFolder found in one run folder.
+struct OutputCheck {
+  std::string kind;                     ///< summary.json's kind
+  int summary_values = 0, csv_columns = 0;
+  std::vector<std::string> findings;    ///< "FILE PATH: problem", one per undescribed output
+  std::set<const OutputSpec*> used;     ///< the entries that described something
+};
+
+/// Checks a finished run folder against the table: every summary.json value and every column of
+/// every *.csv must have an entry whose kinds include the run's kind, and a CSV's units row must
+/// agree with the entry (except "per key" / "per variable"). Throws std::runtime_error when the
+/// folder has no readable summary.json.
+OutputCheck checkRunFolder(const std::string& run_dir);
 
 /// The run kinds the table names, in order of first appearance.
 std::vector<std::string_view> outputKinds();
