@@ -62,20 +62,11 @@ struct MapCounts {
 /// time from the journal, which holds every point in order: a map of any size in bounded memory.
 MapCounts writeMapTable(const fs::path& path, const AeromapSettings& a, const AeroMapGrid& grid,
                         const AeroMapJournal& journal) {
-  CsvStreamWriter csv(path, {{"speed_mps", "m/s"},
-                             {"freq_hz", "Hz"},
-                             {"theta_deg", "deg"},
-                             {"tail_angle_deg", "deg"},
-                             {"FV_mean_N", "N"},
-                             {"FH_mean_N", "N"},
-                             {"M_mean_Nm", "N m"},
-                             {"power_W", "W"},
-                             {"power_aero_W", "W"},
-                             {"status", "-"},
-                             {"steady_cycle", "-"},
-                             {"cycles_run", "-"},
-                             {"last_cycle_change", "-"},
-                             {"message", "-"}});
+  CsvStreamWriter csv(path, declaredColumns("aeromap.csv",
+                                            {"speed_mps", "freq_hz", "theta_deg", "tail_angle_deg",
+                                             "FV_mean_N", "FH_mean_N", "M_mean_Nm", "power_W",
+                                             "power_aero_W", "status", "steady_cycle", "cycles_run",
+                                             "last_cycle_change", "message"}));
   auto cell = [](bool ok, double v) { return ok ? formatShortest(v) : std::string(); };
   MapCounts counts;
   std::vector<std::string> row(csv.columns());
@@ -223,13 +214,8 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const AeromapSettings& a = study.aeromap();
-  JsonObject summary;
-  summary.set("kind", "aeromap")
-      .set("status", runStatus(map))
-      .set("message", runMessage(map))
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("points", static_cast<long>(map.points))
+  JsonObject summary = summaryHeader("aeromap", runStatus(map), runMessage(map), wall_s);
+  summary.set("points", static_cast<long>(map.points))
       .set("points_ok", static_cast<long>(map.ok))
       .set("points_not_converged", static_cast<long>(map.not_converged))
       .set("points_diverged", static_cast<long>(map.diverged))

@@ -18,7 +18,7 @@ namespace {
 // calibration.csv: one row per settled flight (or tethered Eq. 4 run) of the calibration.
 CsvTable calibrationTable(const orni::CalibrationOptions& o,
                           const std::vector<orni::CalibrationEvaluation>& log) {
-  CsvTable t;
+  CsvTable t("calibration.csv");
   std::vector<std::vector<double>> cols(o.variables.size());
   std::vector<double> stage, ok, theta, speed, climb, drift, r0, r1, r2;
   for (const orni::CalibrationEvaluation& e : log) {
@@ -35,17 +35,17 @@ CsvTable calibrationTable(const orni::CalibrationOptions& o,
   }
   for (std::size_t i = 0; i < o.variables.size(); ++i)
     t.addColumn(orni::keyOf(o.variables[i].parameter), "file units", cols[i]);
-  t.addColumn("stage", "0=tethered Eq. 4; 1=free flight; 2=conditioning", stage);
-  t.addColumn("settled", "1=yes", ok);
-  t.addColumn("theta_mean", "deg", theta);
-  t.addColumn("airspeed", "m/s", speed);
-  t.addColumn("climb_angle", "deg", climb);
-  t.addColumn("theta_drift", "deg", drift);
+  t.addColumn("stage", stage);
+  t.addColumn("settled", ok);
+  t.addColumn("theta_mean", theta);
+  t.addColumn("airspeed", speed);
+  t.addColumn("climb_angle", climb);
+  t.addColumn("theta_drift", drift);
   // The solver's residuals: stage 0 Eq. (4) in percent of the weight (FV - W, FH, M / c_mean);
   // otherwise theta error (deg), speed error (0.1 m/s), climb angle (deg).
-  t.addColumn("residual_1", "stage 0: % of W; else deg", r0);
-  t.addColumn("residual_2", "stage 0: % of W; else 0.1 m/s", r1);
-  t.addColumn("residual_3", "stage 0: % of W c; else deg", r2);
+  t.addColumn("residual_1", r0);
+  t.addColumn("residual_2", r1);
+  t.addColumn("residual_3", r2);
   return t;
 }
 }  // namespace
@@ -106,13 +106,10 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
   writeFileAtomic(out_dir / "calibrated_vehicle.toml",
                   vehicleToToml({calibrated, study.design_point}));
 
-  JsonObject summary;
-  summary.set("kind", "calibrate")
-      .set("status", s.converged ? "ok" : "not_converged")
-      .set("message", s.message)
-      .set("wall_time_s", s.wall_time_s)
-      .set("version", versionString())
-      .set("converged", s.converged)
+  JsonObject summary =
+      summaryHeader("calibrate", s.converged ? "ok" : "not_converged",
+                    s.message, s.wall_time_s);
+  summary.set("converged", s.converged)
       .set("values", values)
       .setObjects("fitted", fitted)
       .set("conditioning", conditioning)

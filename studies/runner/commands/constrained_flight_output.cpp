@@ -81,23 +81,22 @@ std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(
 }
 
 CsvTable zmpTable(const ConstrainedFlightTest& test) {
-  CsvTable t;
-  t.addTextColumn("t", "s", cells(test, [](const ZmpSample& s) { return cell(s.t_s); }));
-  t.addTextColumn("delta_M", "deg",
+  CsvTable t("zmp.csv");
+  t.addTextColumn("t", cells(test, [](const ZmpSample& s) { return cell(s.t_s); }));
+  t.addTextColumn("delta_M",
                   cells(test, [](const ZmpSample& s) { return cell(s.delta_rad * kRadToDeg); }));
-  t.addTextColumn("stroke", "-",
+  t.addTextColumn("stroke",
                   cells(test, [](const ZmpSample& s) { return std::string(toString(s.stroke)); }));
-  t.addTextColumn("CF_V", "-",
+  t.addTextColumn("CF_V",
                   cells(test, [](const ZmpSample& s) { return cell(s.coefficients.CF_V); }));
-  t.addTextColumn("CF_H", "-",
+  t.addTextColumn("CF_H",
                   cells(test, [](const ZmpSample& s) { return cell(s.coefficients.CF_H); }));
-  t.addTextColumn("CM_CG", "-",
+  t.addTextColumn("CM_CG",
                   cells(test, [](const ZmpSample& s) { return cell(s.coefficients.CM_CG); }));
-  t.addTextColumn("epsilon", "-", cells(test, [](const ZmpSample& s) {
+  t.addTextColumn("epsilon", cells(test, [](const ZmpSample& s) {
                     return s.epsilon ? cell(*s.epsilon) : std::string();
                   }));
-  t.addTextColumn("CF_normal", "-",
-                  cells(test, [](const ZmpSample& s) { return cell(s.denominator); }));
+  t.addTextColumn("CF_normal", cells(test, [](const ZmpSample& s) { return cell(s.denominator); }));
   return t;
 }
 

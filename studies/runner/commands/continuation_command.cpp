@@ -172,7 +172,7 @@ std::string parameterUnit(PeriodicControl parameter) {
 }
 
 CsvTable branchTable(PeriodicControl parameter, const std::vector<TrimContinuationPoint>& pts) {
-  CsvTable t;
+  CsvTable t("continuation.csv");
   std::vector<double> index, lam, f, theta, speed, tail, cg, power, mod, stable, mu_re, mu_im,
       resid, iters, arc, thmin, thmax, alt;
   std::vector<std::string> event, label;
@@ -199,26 +199,26 @@ CsvTable branchTable(PeriodicControl parameter, const std::vector<TrimContinuati
     event.push_back(o.event);
     label.push_back(p.leading_label);
   }
-  t.addColumn("point", "- (events share the number of the point after them)", index);
+  t.addColumn("point", index);
   t.addColumn(continuationParameterName(parameter), parameterUnit(parameter), lam);
-  t.addColumn("freq_hz", "Hz", f);
-  t.addColumn("theta_mean_deg", "deg", theta);
-  t.addColumn("speed_mps", "m/s (mean airspeed)", speed);
-  t.addColumn("tail_angle_deg", "deg", tail);
-  t.addColumn("cg_shift_m", "m (forward)", cg);
-  t.addColumn("power_aero_W", "W", power);
-  t.addColumn("max_modulus", "- (max |mu|)", mod);
-  t.addColumn("stable", "1 = every |mu| < 1", stable);
-  t.addColumn("leading_mu_real", "-", mu_re);
-  t.addColumn("leading_mu_imag", "-", mu_im);
-  t.addColumn("periodic_residual", "scaled", resid);
-  t.addColumn("corrector_iterations", "-", iters);
-  t.addColumn("arclength", "scaled", arc);
-  t.addColumn("theta_min_deg", "deg", thmin);
-  t.addColumn("theta_max_deg", "deg", thmax);
-  t.addColumn("altitude_p2p_m", "m", alt);
-  t.addTextColumn("event", "fold | branch_point | period_doubling | neimark_sacker", event);
-  t.addTextColumn("leading_label", "-", label);
+  t.addColumn("freq_hz", f);
+  t.addColumn("theta_mean_deg", theta);
+  t.addColumn("speed_mps", speed);
+  t.addColumn("tail_angle_deg", tail);
+  t.addColumn("cg_shift_m", cg);
+  t.addColumn("power_aero_W", power);
+  t.addColumn("max_modulus", mod);
+  t.addColumn("stable", stable);
+  t.addColumn("leading_mu_real", mu_re);
+  t.addColumn("leading_mu_imag", mu_im);
+  t.addColumn("periodic_residual", resid);
+  t.addColumn("corrector_iterations", iters);
+  t.addColumn("arclength", arc);
+  t.addColumn("theta_min_deg", thmin);
+  t.addColumn("theta_max_deg", thmax);
+  t.addColumn("altitude_p2p_m", alt);
+  t.addTextColumn("event", event);
+  t.addTextColumn("leading_label", label);
   return t;
 }
 
@@ -376,13 +376,8 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
   }
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  JsonObject summary;
-  summary.set("kind", "continuation")
-      .set("status", toString(s.status))
-      .set("message", s.message)
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("parameter", continuationParameterName(co.parameter))
+  JsonObject summary = summaryHeader("continuation", toString(s.status), s.message, wall_s);
+  summary.set("parameter", continuationParameterName(co.parameter))
       .set("parameter_unit", parameterUnit(co.parameter))
       .set("control", toString(study.trim.periodic.control))
       .set("to", co.parameter == PeriodicControl::kTailAngle ? co.to * kRadToDeg : co.to)

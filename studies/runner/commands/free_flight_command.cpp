@@ -28,23 +28,10 @@ class FreeFlightFiles : public FreeFlightObserver {
  public:
   FreeFlightFiles(const std::filesystem::path& out_dir, int history_every)
       : histories_(out_dir / "histories.csv",
-                   {{"t", "s"},
-                    {"delta_M", "deg"},
-                    {"x_I", "m"},
-                    {"h", "m"},
-                    {"theta", "deg"},
-                    {"U", "m/s"},
-                    {"W", "m/s"},
-                    {"Q", "deg/s"},
-                    {"airspeed", "m/s"},
-                    {"alpha_body", "deg"},
-                    {"flight_path", "deg"},
-                    {"FV_aero", "N"},
-                    {"FH_aero", "N"},
-                    {"M_aero", "N m"},
-                    {"tip_deflection", "m"},
-                    {"tip_twist", "deg"},
-                    {"separated_fraction", "-"}},
+                   declaredColumns("histories.csv",
+                                   {"t", "delta_M", "x_I", "h", "theta", "U", "W", "Q", "airspeed",
+                                    "alpha_body", "flight_path", "FV_aero", "FH_aero", "M_aero",
+                                    "tip_deflection", "tip_twist", "separated_fraction"}),
                    static_cast<std::size_t>(history_every)) {}
 
   void onSample(double t_s, double delta_M_rad, const BodyState& b,
@@ -79,14 +66,14 @@ class FreeFlightFiles : public FreeFlightObserver {
 };
 
 CsvTable spectrumTable(const LimitCycleMetrics& m) {
-  CsvTable t;
+  CsvTable t("spectra.csv");
   std::vector<double> d, th;
   for (double a : m.spectrum_delta.amplitude) d.push_back(a * kRadToDeg);
   for (double a : m.spectrum_theta.amplitude) th.push_back(a * kRadToDeg);
-  t.addColumn("freq", "Hz", m.spectrum_delta.freq_hz);
-  t.addColumn("delta_M_amplitude", "deg", d);
-  t.addColumn("theta_amplitude", "deg", th);
-  t.addColumn("h_amplitude", "m", m.spectrum_h.amplitude);
+  t.addColumn("freq", m.spectrum_delta.freq_hz);
+  t.addColumn("delta_M_amplitude", d);
+  t.addColumn("theta_amplitude", th);
+  t.addColumn("h_amplitude", m.spectrum_h.amplitude);
   return t;
 }
 
@@ -194,13 +181,8 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
     files->commit();
   }
 
-  JsonObject summary;
-  summary.set("kind", "simulate")
-      .set("status", toString(s.status))
-      .set("message", s.message)
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("mode", "free")
+  JsonObject summary = summaryHeader("simulate", toString(s.status), s.message, wall_s);
+  summary.set("mode", "free")
       .set("cycles", s.cycles_run)
       .set("end_time_s", s.end_time_s);
   if (failed || s.cycles_run < 1)
@@ -235,8 +217,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
     writeFileAtomic(out_dir / "spectra.csv", spectrumTable(m).toString());
   }
   const FreeFlightBounds& b = study.simulate().options.free.bounds;
-  summary
-      .set("bounds", JsonObject()
+  summary.set("bounds", JsonObject()
                          .set("U_mps", b.U_mps)
                          .set("W_mps", b.W_mps)
                          .set("theta_deg", b.theta_rad * kRadToDeg)

@@ -116,14 +116,14 @@ CsvTable modesTable(const structure::ModalWing& wing) {
   std::vector<double> index(static_cast<std::size_t>(m));
   for (int k = 0; k < m; ++k) index[static_cast<std::size_t>(k)] = k + 1;
   const structure::EffectiveMassTable& e = wing.effective_mass;
-  CsvTable t;
-  t.addColumn("mode", "-", index);
-  t.addColumn("frequency", "Hz", toVector(wing.frequencies_hz));
-  t.addColumn("damping_ratio", "-", toVector(wing.damping_ratios));
-  t.addColumn("flap_effective_mass", "-", toVector(e.flap_fraction));
-  t.addColumn("heave_effective_mass", "-", toVector(e.heave_fraction));
-  t.addColumn("flap_effective_mass_cumulative", "-", toVector(e.flap_cumulative));
-  t.addColumn("heave_effective_mass_cumulative", "-", toVector(e.heave_cumulative));
+  CsvTable t("modes.csv");
+  t.addColumn("mode", index);
+  t.addColumn("frequency", toVector(wing.frequencies_hz));
+  t.addColumn("damping_ratio", toVector(wing.damping_ratios));
+  t.addColumn("flap_effective_mass", toVector(e.flap_fraction));
+  t.addColumn("heave_effective_mass", toVector(e.heave_fraction));
+  t.addColumn("flap_effective_mass_cumulative", toVector(e.flap_cumulative));
+  t.addColumn("heave_effective_mass_cumulative", toVector(e.heave_cumulative));
   return t;
 }
 
@@ -136,10 +136,10 @@ CsvTable modeShapeTable(const structure::ModalWing& wing) {
     x[i] = wing.mesh.nodes_W_m[i].x();
     y[i] = wing.mesh.nodes_W_m[i].y();
   }
-  CsvTable t;
-  t.addColumn("node", "-", id);
-  t.addColumn("x_W", "m", x);
-  t.addColumn("y_W", "m", y);
+  CsvTable t("mode_shapes.csv");
+  t.addColumn("node", id);
+  t.addColumn("x_W", x);
+  t.addColumn("y_W", y);
   for (int k = 0; k < wing.modeCount(); ++k)
     t.addColumn("w_" + std::to_string(k + 1), "m/sqrt(kg)", modeW(wing, k));
   return t;
@@ -274,12 +274,7 @@ std::string modesFigure(const Study& study, const structure::ModalWing& wing, in
 }
 
 void writeFailedSummary(const fs::path& out_dir, const std::string& message, double wall_s) {
-  JsonObject summary;
-  summary.set("kind", "modes")
-      .set("status", "failed")
-      .set("message", message)
-      .set("wall_time_s", wall_s)
-      .set("version", versionString());
+  JsonObject summary = summaryHeader("modes", "failed", message, wall_s);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
 }
 
@@ -365,13 +360,8 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   const int triangles = static_cast<int>(mesh.triangles.size());
   const int beams = static_cast<int>(mesh.beams.size());
 
-  JsonObject summary;
-  summary.set("kind", "modes")
-      .set("status", "ok")
-      .set("message", message)
-      .set("wall_time_s", seconds(t0))
-      .set("version", versionString())
-      .set("frequencies_hz", toVector(wing.frequencies_hz))
+  JsonObject summary = summaryHeader("modes", "ok", message, seconds(t0));
+  summary.set("frequencies_hz", toVector(wing.frequencies_hz))
       .set("damping_ratios", toVector(wing.damping_ratios))
       .set("wing_mass_kg", wing.wing_mass_kg)
       .set("member_mass_kg", wing.member_mass_kg)

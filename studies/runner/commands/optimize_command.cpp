@@ -119,22 +119,22 @@ CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
     best_col.push_back(cell(best));
     message.push_back(oneLine(r.result.message));
   }
-  CsvTable t;
-  t.addColumn("evaluation", "-", evaluation);
-  t.addColumn("start", "-", start);
-  t.addColumn("start_evaluation", "-", index);
-  t.addTextColumn("stage", "-", stage);
+  CsvTable t("history.csv");
+  t.addColumn("evaluation", evaluation);
+  t.addColumn("start", start);
+  t.addColumn("start_evaluation", index);
+  t.addTextColumn("stage", stage);
   for (std::size_t j = 0; j < n; ++j) t.addColumn(vars[j].name, variableUnit(vars[j]), x[j]);
   t.addColumn("objective", orni::opt::objectiveUnit(p.options().objective), objective);
-  t.addColumn("feasible", "-", feasible);
-  t.addColumn("failed", "-", failed);
-  t.addColumn("violation", "-", violation);
+  t.addColumn("feasible", feasible);
+  t.addColumn("failed", failed);
+  t.addColumn("violation", violation);
   for (std::size_t j = 0; j < m; ++j) t.addColumn("g_" + p.constraintNames()[j], "-", g[j]);
-  t.addTextColumn("status", "-", status);
-  t.addTextColumn("repeat_of", "start_evaluation", repeat);
+  t.addTextColumn("status", status);
+  t.addTextColumn("repeat_of", repeat);
   for (std::size_t j = 0; j < k; ++j) t.addTextColumn(info[j].name, info[j].unit, values[j]);
   t.addTextColumn("best_objective", orni::opt::objectiveUnit(p.options().objective), best_col);
-  t.addTextColumn("message", "-", message);
+  t.addTextColumn("message", message);
   return t;
 }
 
@@ -380,13 +380,8 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const int best_index = s.best;
-  JsonObject summary;
-  summary.set("kind", "optimize")
-      .set("status", status)
-      .set("message", oneLine(message))
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("converged", s.converged)
+  JsonObject summary = summaryHeader("optimize", status, oneLine(message), wall_s);
+  summary.set("converged", s.converged)
       .set("objective", best->result.status == EvaluationStatus::kFailed ? kNaN
                                                                          : best->result.objective)
       .set("baseline_objective", baseline_objective)

@@ -94,7 +94,7 @@ JsonObject floquetObject(const PeriodicTrimSummary& s) {
 
 // One period of the orbit from flap phase 0.
 CsvTable orbitTable(const PeriodicTrimSummary& s) {
-  CsvTable t;
+  CsvTable t("periodic_orbit.csv");
   const OrbitHistory& h = s.history;
   const double T = 1.0 / s.solution.freq_hz;
   std::vector<double> time, phase, flap, theta, U, W, Q, V, x, alt, fv, fh, m, p;
@@ -115,25 +115,25 @@ CsvTable orbitTable(const PeriodicTrimSummary& s) {
     m.push_back(h.samples[k].loads.M_Nm);
     p.push_back(h.samples[k].loads.power_aero_W);
   }
-  t.addColumn("t", "s", time);
-  t.addColumn("phase", "-", phase);
-  t.addColumn("delta_M", "deg", flap);
-  t.addColumn("theta", "deg", theta);
-  t.addColumn("U", "m/s", U);
-  t.addColumn("W", "m/s", W);
-  t.addColumn("Q", "deg/s", Q);
-  t.addColumn("airspeed", "m/s", V);
-  t.addColumn("x", "m", x);
-  t.addColumn("h", "m", alt);
-  t.addColumn("FV", "N", fv);
-  t.addColumn("FH", "N", fh);
-  t.addColumn("M", "N m", m);
-  t.addColumn("power_aero", "W", p);
+  t.addColumn("t", time);
+  t.addColumn("phase", phase);
+  t.addColumn("delta_M", flap);
+  t.addColumn("theta", theta);
+  t.addColumn("U", U);
+  t.addColumn("W", W);
+  t.addColumn("Q", Q);
+  t.addColumn("airspeed", V);
+  t.addColumn("x", x);
+  t.addColumn("h", alt);
+  t.addColumn("FV", fv);
+  t.addColumn("FH", fh);
+  t.addColumn("M", m);
+  t.addColumn("power_aero", p);
   return t;
 }
 
 CsvTable iterationTable(const PeriodicTrimSummary& s) {
-  CsvTable t;
+  CsvTable t("periodic_iterations.csv");
   std::vector<double> pass, it, rmax, rnorm, step, damping, fresh, refreshed, maps;
   for (std::size_t i = 0; i < s.newton_log.size(); ++i) {
     const ShootingIteration& r = s.newton_log[i];
@@ -147,20 +147,20 @@ CsvTable iterationTable(const PeriodicTrimSummary& s) {
     refreshed.push_back(r.refreshed ? 1.0 : 0.0);
     maps.push_back(static_cast<double>(r.period_maps));
   }
-  t.addColumn("pass", "1=friction at Eq.4 speed 2=at orbit airspeed", pass);
-  t.addColumn("iteration", "-", it);
-  t.addColumn("residual_max", "scaled", rmax);
-  t.addColumn("residual_norm", "scaled", rnorm);
-  t.addColumn("step_norm", "scaled", step);
-  t.addColumn("damping", "-", damping);
-  t.addColumn("fresh_jacobian", "-", fresh);
-  t.addColumn("grid_refreshed", "-", refreshed);
-  t.addColumn("period_maps", "-", maps);
+  t.addColumn("pass", pass);
+  t.addColumn("iteration", it);
+  t.addColumn("residual_max", rmax);
+  t.addColumn("residual_norm", rnorm);
+  t.addColumn("step_norm", step);
+  t.addColumn("damping", damping);
+  t.addColumn("fresh_jacobian", fresh);
+  t.addColumn("grid_refreshed", refreshed);
+  t.addColumn("period_maps", maps);
   return t;
 }
 
 CsvTable floquetTable(const PeriodicTrimSummary& s) {
-  CsvTable t;
+  CsvTable t("floquet.csv");
   std::vector<double> rank, re, im, mod, arg, er, ei, zeta, period, inside;
   std::vector<std::string> label, dominant;
   int k = 0;
@@ -179,18 +179,18 @@ CsvTable floquetTable(const PeriodicTrimSummary& s) {
       label.push_back(m.label);
       dominant.push_back(dominantText(m));
     }
-  t.addColumn("rank", "-", rank);
-  t.addColumn("mu_real", "-", re);
-  t.addColumn("mu_imag", "-", im);
-  t.addColumn("modulus", "-", mod);
-  t.addColumn("argument", "deg", arg);
-  t.addColumn("exponent_real", "1/s", er);
-  t.addColumn("exponent_imag", "rad/s", ei);
-  t.addColumn("damping_ratio", "-", zeta);
-  t.addColumn("period", "s (0 = not oscillatory)", period);
-  t.addColumn("inside_unit_circle", "-", inside);
-  t.addTextColumn("label", "-", label);
-  t.addTextColumn("dominant_states", "share of |v|^2", dominant);
+  t.addColumn("rank", rank);
+  t.addColumn("mu_real", re);
+  t.addColumn("mu_imag", im);
+  t.addColumn("modulus", mod);
+  t.addColumn("argument", arg);
+  t.addColumn("exponent_real", er);
+  t.addColumn("exponent_imag", ei);
+  t.addColumn("damping_ratio", zeta);
+  t.addColumn("period", period);
+  t.addColumn("inside_unit_circle", inside);
+  t.addTextColumn("label", label);
+  t.addTextColumn("dominant_states", dominant);
   return t;
 }
 
@@ -311,13 +311,10 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
            "the orbit, independent of the shooting's fixed grid")
       .set("cg_shift_m", s.cg_shift_m);
 
-  JsonObject summary;
-  summary.set("kind", kind == PeriodicRunKind::kStability ? "stability" : "trim")
-      .set("status", toString(s.status))
-      .set("message", s.message)
-      .set("wall_time_s", s.wall_time_s)
-      .set("version", versionString())
-      .set("converged", s.converged)
+  JsonObject summary =
+      summaryHeader(kind == PeriodicRunKind::kStability ? "stability" : "trim",
+                    toString(s.status), s.message, s.wall_time_s);
+  summary.set("converged", s.converged)
       .set("method", toString(TrimMethod::kPeriodic))
       .set("freq_hz", s.solution.freq_hz)
       .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
@@ -333,8 +330,7 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
     summary.setNull("periodic_residual")
         .set("residual", JsonObject().setNull("FV_N").setNull("FH_N").setNull("M_Nm"));
   }
-  summary
-      .set("residual_source",
+  summary.set("residual_source",
            "periodic_residual: max |x(T) - x(0)| of the orbit in state scales (and the altitude "
            "gain in 0.1 m); residual: the orbit's cycle means of the fuselage loads (wings' "
            "aerodynamic and inertial loads, tail, fuselage drag) in the flight-path frame minus "

@@ -1,11 +1,20 @@
-// Version text shared by --version and summary.json.
+// Version text shared by --version and summary.json, and the summary's header: the five values
+// every run kind's summary.json begins with (docs/outputs.md).
 #pragma once
 
 #include <string>
+#include <string_view>
+
+#include "studies/runner/output/json_writer.hpp"
 
 namespace orni::studies {
 
 /// "0.1.0 (git abc1234)".
 std::string versionString();
+
+/// A summary.json object holding kind, status, message, wall_time_s and version, in that order;
+/// the run kind's own values follow.
+JsonObject summaryHeader(std::string_view kind, std::string_view status, const std::string& message,
+                         double wall_time_s);
 
 }  // namespace orni::studies

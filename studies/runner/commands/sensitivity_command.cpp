@@ -58,19 +58,19 @@ CsvTable sensitivityTable(const SensitivitySettings& s, const std::vector<SweepP
     status.push_back(rows[i].status);
     message.push_back(rows[i].message);
   }
-  CsvTable t;
-  t.addTextColumn("point", "-", std::move(point));
-  t.addTextColumn("parameter", "-", std::move(parameter));
-  t.addTextColumn("side", "-", std::move(side));
-  t.addTextColumn("value", "value_unit", std::move(value));
-  t.addTextColumn("value_unit", "-", std::move(value_unit));
-  t.addTextColumn("status", "-", std::move(status));
+  CsvTable t("sensitivity.csv");
+  t.addTextColumn("point", std::move(point));
+  t.addTextColumn("parameter", std::move(parameter));
+  t.addTextColumn("side", std::move(side));
+  t.addTextColumn("value", std::move(value));
+  t.addTextColumn("value_unit", std::move(value_unit));
+  t.addTextColumn("status", std::move(status));
   for (std::size_t c = 0; c < columns.size(); ++c) {
     std::vector<std::string> cells;
     for (const SweepPointResult& r : rows) cells.push_back(r.cells[c]);
     t.addTextColumn(columns[c].name, columns[c].unit, std::move(cells));
   }
-  t.addTextColumn("message", "-", std::move(message));
+  t.addTextColumn("message", std::move(message));
   return t;
 }
 
@@ -171,12 +171,9 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
   const PointCounts count = countPoints(rows);
   const double wall_s =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  JsonObject summary;
-  summary.set("kind", "sensitivity")
-      .set("status", count.ok == n ? "ok" : "not_converged")
-      .set("message", pointsMessage(count, n, "sensitivity.csv"))
-      .set("wall_time_s", wall_s)
-      .set("version", versionString());
+  JsonObject summary =
+      summaryHeader("sensitivity", count.ok == n ? "ok" : "not_converged",
+                    pointsMessage(count, n, "sensitivity.csv"), wall_s);
   setPointCounts(summary, count, n);
   summary.set("points_computed", static_cast<long>(done->computed))
       .set("points_resumed", static_cast<long>(done->resumed))

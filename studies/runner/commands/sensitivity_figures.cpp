@@ -71,21 +71,21 @@ CsvTable tornadoTable(const Study& study, const std::vector<PredictionRanking>& 
       share.push_back(cell(e.swing_share));
     }
   }
-  CsvTable t;
-  t.addTextColumn("prediction", "-", std::move(prediction));
-  t.addTextColumn("prediction_unit", "-", std::move(unit));
-  t.addTextColumn("prediction_index", "-", std::move(prediction_index));
-  t.addTextColumn("rank", "-", std::move(rank));
-  t.addTextColumn("parameter", "-", std::move(parameter));
-  t.addTextColumn("parameter_index", "-", std::move(parameter_index));
-  t.addTextColumn("label", "-", std::move(label));
-  t.addTextColumn("base", "prediction_unit", std::move(base));
-  t.addTextColumn("low_value", "prediction_unit", std::move(low));
-  t.addTextColumn("high_value", "prediction_unit", std::move(high));
-  t.addTextColumn("delta_low", "prediction_unit", std::move(delta_low));
-  t.addTextColumn("delta_high", "prediction_unit", std::move(delta_high));
-  t.addTextColumn("swing", "prediction_unit", std::move(swing));
-  t.addTextColumn("swing_share", "-", std::move(share));
+  CsvTable t("tornado.csv");
+  t.addTextColumn("prediction", std::move(prediction));
+  t.addTextColumn("prediction_unit", std::move(unit));
+  t.addTextColumn("prediction_index", std::move(prediction_index));
+  t.addTextColumn("rank", std::move(rank));
+  t.addTextColumn("parameter", std::move(parameter));
+  t.addTextColumn("parameter_index", std::move(parameter_index));
+  t.addTextColumn("label", std::move(label));
+  t.addTextColumn("base", std::move(base));
+  t.addTextColumn("low_value", std::move(low));
+  t.addTextColumn("high_value", std::move(high));
+  t.addTextColumn("delta_low", std::move(delta_low));
+  t.addTextColumn("delta_high", std::move(delta_high));
+  t.addTextColumn("swing", std::move(swing));
+  t.addTextColumn("swing_share", std::move(share));
   return t;
 }
 

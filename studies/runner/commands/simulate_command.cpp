@@ -28,14 +28,11 @@
 namespace orni::studies {
 
 const std::vector<CsvColumn>& historyColumns() {
-  static const std::vector<CsvColumn> columns = {
-      {"t", "s"},           {"delta_M", "deg"},          {"FV", "N"},
-      {"FH", "N"},          {"M", "N m"},                {"power_aero", "W"},
-      {"power_hinge", "W"}, {"FV_wing_aero", "N"},       {"FH_wing_aero", "N"},
-      {"M_wing_aero", "N m"}, {"FV_wing_inertial", "N"}, {"FH_wing_inertial", "N"},
-      {"M_wing_inertial", "N m"}, {"FV_tail", "N"},      {"FH_tail", "N"},
-      {"FH_body", "N"},     {"M_tail", "N m"},           {"separated_fraction", "-"},
-      {"tip_deflection", "m"}, {"tip_twist", "deg"}};
+  static const std::vector<CsvColumn> columns = declaredColumns(
+      "histories.csv", {"t", "delta_M", "FV", "FH", "M", "power_aero", "power_hinge",
+                        "FV_wing_aero", "FH_wing_aero", "M_wing_aero", "FV_wing_inertial",
+                        "FH_wing_inertial", "M_wing_inertial", "FV_tail", "FH_tail", "FH_body",
+                        "M_tail", "separated_fraction", "tip_deflection", "tip_twist"});
   return columns;
 }
 
@@ -103,12 +100,9 @@ class TetheredRunFiles : public TetheredRunObserver {
   TetheredRunFiles(const std::filesystem::path& out_dir, int history_every)
       : histories_(out_dir / "histories.csv", historyColumns(),
                    static_cast<std::size_t>(history_every)),
-        cycles_(out_dir / "cycles.csv", {{"cycle", "-"},
-                                         {"FV_mean", "N"},
-                                         {"FH_mean", "N"},
-                                         {"M_mean", "N m"},
-                                         {"power_aero_mean", "W"},
-                                         {"power_hinge_mean", "W"}}) {}
+        cycles_(out_dir / "cycles.csv",
+                declaredColumns("cycles.csv", {"cycle", "FV_mean", "FH_mean", "M_mean",
+                                               "power_aero_mean", "power_hinge_mean"})) {}
 
   void onSample(double t_s, double delta_M_rad, const LoadSample& l) override {
     double row[kHistoryColumns];
@@ -186,19 +180,13 @@ JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
                            const std::optional<ConstrainedFlightTest>& cft, double wall_s,
                            const JsonObject* trim_point) {
   const bool failed = s.status == SimulationStatus::kFailed;
-  JsonObject summary;
-  summary.set("kind", "simulate");
-  summary.set("status", toString(s.status))
-      .set("message", s.message)
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("mode", "tethered")
+  JsonObject summary = summaryHeader("simulate", toString(s.status), s.message, wall_s);
+  summary.set("mode", "tethered")
       .set("cycles", s.cycles_run);
   if (failed) {
     summary.setNull("mean");
   } else {
-    summary
-        .set("mean", cycleMeansJson(s.mean))
+    summary.set("mean", cycleMeansJson(s.mean))
         .set("steady_state_cycle", s.steady_state_cycle)
         .set("last_cycle_change", s.last_cycle_change);
   }
@@ -208,8 +196,7 @@ JsonObject tetheredSummary(const Study& study, const FlightCoreModel& model,
       .set("tail_angle_deg", study.point.tail_angle_rad * kRadToDeg)
       .set("wing_only", study.simulate().wing_only);
   if (trim_point) summary.set("trim_point", *trim_point);
-  summary
-      .set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
+  summary.set("aero_model", study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td"
                                                                            : "delaurier1993")
       .set("structure", model.flexible ? "flexible" : "rigid")
       .set("strips", static_cast<int>(model.strips.size()))
@@ -252,15 +239,12 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
     const SimulationTrim t = trimForSimulation(study, &modal_wings);
     trim_point = t.json;
     if (!t.converged) {
-      JsonObject summary;
-      summary.set("kind", "simulate")
-          .set("status", "not_converged")
-          .set("message",
-               "no trim at " + formatShortest(study.point.freq_hz) + " Hz to fly at: " + t.message)
-          .set("wall_time_s",
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count())
-          .set("version", versionString())
-          .set("mode", study.simulate().options.mode == FlightMode::kFree ? "free" : "tethered")
+      const std::string message =
+          "no trim at " + formatShortest(study.point.freq_hz) + " Hz to fly at: " + t.message;
+      const double wall_s =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      JsonObject summary = summaryHeader("simulate", "not_converged", message, wall_s);
+      summary.set("mode", study.simulate().options.mode == FlightMode::kFree ? "free" : "tethered")
           .set("trim_point", trim_point);
       writeFileAtomic(out_dir / "study.resolved.toml", resolvedStudyToml(given));
       // Nothing was flown: the outputs of an earlier run must not pass for this one's.

@@ -40,7 +40,7 @@ SweepGrid gridOf(const SweepSettings& s) {
 CsvTable sweepTable(const SweepSettings& s, const SweepGrid& grid,
                     const std::vector<SweepColumn>& columns,
                     const std::vector<SweepPointResult>& rows) {
-  CsvTable t;
+  CsvTable t("sweep.csv");
   std::vector<std::vector<double>> axis_values(s.axes.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
     const std::vector<std::size_t> at = grid.axisIndices(i);
@@ -54,13 +54,13 @@ CsvTable sweepTable(const SweepSettings& s, const SweepGrid& grid,
     status.push_back(r.status);
     message.push_back(r.message);
   }
-  t.addTextColumn("status", "-", status);
+  t.addTextColumn("status", status);
   for (std::size_t c = 0; c < columns.size(); ++c) {
     std::vector<std::string> cells;
     for (const SweepPointResult& r : rows) cells.push_back(r.cells[c]);
     t.addTextColumn(columns[c].name, columns[c].unit, std::move(cells));
   }
-  t.addTextColumn("message", "-", message);
+  t.addTextColumn("message", message);
   return t;
 }
 
@@ -187,13 +187,10 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   JsonObject axes;
   for (const SweepAxis& a : s.axes) axes.set(a.key, a.values.values);
-  JsonObject summary;
-  summary.set("kind", "sweep")
-      .set("status", count.ok == n ? "ok" : "not_converged")
-      .set("message", pointsMessage(count, n, "sweep.csv"))
-      .set("wall_time_s", wall_s)
-      .set("version", versionString())
-      .set("run", std::string(toString(s.run)));
+  JsonObject summary =
+      summaryHeader("sweep", count.ok == n ? "ok" : "not_converged",
+                    pointsMessage(count, n, "sweep.csv"), wall_s);
+  summary.set("run", std::string(toString(s.run)));
   if (s.run == StudyKind::kSimulate)
     summary.set("mode", s.base_simulate.options.mode == FlightMode::kFree ? "free" : "tethered");
   setPointCounts(summary, count, n);

@@ -37,7 +37,7 @@ JsonObject unknownsObject(const OperatingPoint& p) {
 
 // Every periodic run: which iteration, what for, where, and the Eq. (4) residual there.
 CsvTable evaluationTable(const TrimSummary& s) {
-  CsvTable t;
+  CsvTable t("trim_iterations.csv");
   std::vector<double> idx, it, purpose, ok, cycles, th, U, tail, f, fv, fh, m, rv, rh, rm, rmax;
   for (const TrimEvaluationRecord& e : s.evaluation_log) {
     idx.push_back(e.index);
@@ -58,28 +58,28 @@ CsvTable evaluationTable(const TrimSummary& s) {
     rm.push_back(e.result.ok ? e.residual.M_Nm : nan);
     rmax.push_back(e.result.ok ? e.scaled_max : nan);
   }
-  t.addColumn("evaluation", "-", idx);
-  t.addColumn("iteration", "-", it);
-  t.addColumn("purpose", "0=residual 1=derivative", purpose);
-  t.addColumn("ok", "-", ok);
-  t.addColumn("cycles", "-", cycles);
-  t.addColumn("theta_mean", "deg", th);
-  t.addColumn("speed", "m/s", U);
-  t.addColumn("tail_angle", "deg", tail);
-  t.addColumn("freq", "Hz", f);
-  t.addColumn("FV_mean", "N", fv);
-  t.addColumn("FH_mean", "N", fh);
-  t.addColumn("M_mean", "N m", m);
-  t.addColumn("residual_FV", "N", rv);
-  t.addColumn("residual_FH", "N", rh);
-  t.addColumn("residual_M", "N m", rm);
-  t.addColumn("residual_scaled_max", "-", rmax);
+  t.addColumn("evaluation", idx);
+  t.addColumn("iteration", it);
+  t.addColumn("purpose", purpose);
+  t.addColumn("ok", ok);
+  t.addColumn("cycles", cycles);
+  t.addColumn("theta_mean", th);
+  t.addColumn("speed", U);
+  t.addColumn("tail_angle", tail);
+  t.addColumn("freq", f);
+  t.addColumn("FV_mean", fv);
+  t.addColumn("FH_mean", fh);
+  t.addColumn("M_mean", m);
+  t.addColumn("residual_FV", rv);
+  t.addColumn("residual_FH", rh);
+  t.addColumn("residual_M", rm);
+  t.addColumn("residual_scaled_max", rmax);
   return t;
 }
 
 // Every solver iteration: the accepted iterate and its residual.
 CsvTable progressTable(const TrimSummary& s) {
-  CsvTable t;
+  CsvTable t("trim_progress.csv");
   std::vector<double> it, ev, th, U, tail, f, cost, rmax, step, radius, success;
   for (const TrimIterationRecord& r : s.iteration_log) {
     it.push_back(r.iteration);
@@ -94,17 +94,17 @@ CsvTable progressTable(const TrimSummary& s) {
     radius.push_back(r.trust_region_radius);
     success.push_back(r.step_successful ? 1.0 : 0.0);
   }
-  t.addColumn("iteration", "-", it);
-  t.addColumn("evaluations", "-", ev);
-  t.addColumn("theta_mean", "deg", th);
-  t.addColumn("speed", "m/s", U);
-  t.addColumn("tail_angle", "deg", tail);
-  t.addColumn("freq", "Hz", f);
-  t.addColumn("cost", "-", cost);
-  t.addColumn("residual_scaled_max", "-", rmax);
-  t.addColumn("step_norm", "solver units", step);
-  t.addColumn("trust_region_radius", "-", radius);
-  t.addColumn("step_successful", "-", success);
+  t.addColumn("iteration", it);
+  t.addColumn("evaluations", ev);
+  t.addColumn("theta_mean", th);
+  t.addColumn("speed", U);
+  t.addColumn("tail_angle", tail);
+  t.addColumn("freq", f);
+  t.addColumn("cost", cost);
+  t.addColumn("residual_scaled_max", rmax);
+  t.addColumn("step_norm", step);
+  t.addColumn("trust_region_radius", radius);
+  t.addColumn("step_successful", success);
   return t;
 }
 
@@ -224,13 +224,8 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
 
   std::vector<std::string> unknowns;
   for (TrimUnknown u : s.unknowns) unknowns.emplace_back(trimUnknownName(u));
-  JsonObject summary;
-  summary.set("kind", "trim")
-      .set("status", toString(s.status))
-      .set("message", s.message)
-      .set("wall_time_s", s.wall_time_s)
-      .set("version", versionString())
-      .set("converged", s.converged)
+  JsonObject summary = summaryHeader("trim", toString(s.status), s.message, s.wall_time_s);
+  summary.set("converged", s.converged)
       .set("freq_hz", s.solution.freq_hz)
       .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
       .set("speed_mps", s.solution.speed_mps)

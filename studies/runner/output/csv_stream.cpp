@@ -4,8 +4,17 @@
 #include <utility>
 
 #include "studies/runner/output/csv_table.hpp"
+#include "studies/runner/output/output_schema.hpp"
 
 namespace orni::studies {
+
+std::vector<CsvColumn> declaredColumns(std::string_view file,
+                                       const std::vector<std::string>& names) {
+  std::vector<CsvColumn> columns;
+  columns.reserve(names.size());
+  for (const std::string& n : names) columns.push_back({n, declaredColumnUnit(file, n)});
+  return columns;
+}
 
 CsvStreamWriter::CsvStreamWriter(std::filesystem::path path, std::vector<CsvColumn> columns,
                                  std::size_t row_stride)

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "studies/runner/output/atomic_file.hpp"
@@ -15,6 +16,11 @@ namespace orni::studies {
 struct CsvColumn {
   std::string name, unit;
 };
+
+/// The columns `names` of the CSV file `file` with the units the output table declares for them
+/// (output_schema.hpp; std::logic_error for a column it does not describe).
+std::vector<CsvColumn> declaredColumns(std::string_view file,
+                                       const std::vector<std::string>& names);
 
 class CsvStreamWriter {
  public:

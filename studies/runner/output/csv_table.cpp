@@ -4,6 +4,7 @@
 #include <utility>
 
 #include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/output_schema.hpp"
 
 namespace orni::studies {
 
@@ -31,6 +32,16 @@ void CsvTable::addColumn(std::string name, std::string unit, const std::vector<d
   cells.reserve(values.size());
   for (const double v : values) cells.push_back(formatShortest(v));
   add(std::move(name), std::move(unit), std::move(cells));
+}
+
+void CsvTable::addColumn(std::string name, const std::vector<double>& values) {
+  std::string unit = declaredColumnUnit(file_, name);
+  addColumn(std::move(name), std::move(unit), values);
+}
+
+void CsvTable::addTextColumn(std::string name, std::vector<std::string> cells) {
+  std::string unit = declaredColumnUnit(file_, name);
+  addTextColumn(std::move(name), std::move(unit), std::move(cells));
 }
 
 void CsvTable::addTextColumn(std::string name, std::string unit, std::vector<std::string> cells) {

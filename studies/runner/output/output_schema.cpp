@@ -179,6 +179,20 @@ const OutputSpec* findOutput(std::string_view file, std::string_view path) {
   return nullptr;
 }
 
+std::string declaredColumnUnit(std::string_view file, std::string_view column) {
+  const OutputSpec* o = findOutput(file, column);
+  if (o == nullptr)
+    throw std::logic_error("output table: no entry for column '" + std::string(column) + "' of " +
+                           (file.empty() ? std::string("a CSV table without a file name")
+                                         : std::string(file)) +
+                           " (studies/runner/output/output_schema_table.cpp)");
+  if (o->unit == "per key" || o->unit == "per variable")
+    throw std::logic_error("output table: column '" + std::string(column) + "' of " +
+                           std::string(file) + " has a unit of its own (" + std::string(o->unit) +
+                           "); the writer names it");
+  return std::string(o->unit);
+}
+
 bool outputKindListed(std::string_view kinds, std::string_view kind) {
   for (const std::string_view k : split(kinds, ','))
     if (k == kind) return true;

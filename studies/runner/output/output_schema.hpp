@@ -31,6 +31,12 @@ const std::vector<OutputSpec>& outputTable();
 /// The entry describing `path` (a concrete column name or JSON path) of `file`, or nullptr.
 const OutputSpec* findOutput(std::string_view file, std::string_view path);
 
+/// The unit the table declares for column `column` of the CSV file `file`: what the CSV writers
+/// (CsvTable, csv_stream.hpp) write in the units row when the code names no unit. Throws
+/// std::logic_error (a programming error) when the table has no entry or a "per key" /
+/// "per variable" one.
+std::string declaredColumnUnit(std::string_view file, std::string_view column);
+
 /// True when `kinds` (an OutputSpec's list) names `kind`.
 bool outputKindListed(std::string_view kinds, std::string_view kind);
 
