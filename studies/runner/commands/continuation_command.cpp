@@ -1,6 +1,7 @@
 #include "studies/runner/commands/continuation_command.hpp"
 #include "studies/runner/output/console.hpp"
 
+#include <complex>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -172,54 +173,33 @@ std::string parameterUnit(PeriodicControl parameter) {
 }
 
 CsvTable branchTable(PeriodicControl parameter, const std::vector<TrimContinuationPoint>& pts) {
-  CsvTable t("continuation.csv");
-  std::vector<double> index, lam, f, theta, speed, tail, cg, power, mod, stable, mu_re, mu_im,
-      resid, iters, arc, thmin, thmax, alt;
-  std::vector<std::string> event, label;
-  for (const TrimContinuationPoint& p : pts) {
-    const ContinuationPoint& o = p.orbit;
-    index.push_back(o.index);
-    lam.push_back(parameterFileValue(parameter, p));
-    f.push_back(p.solution.freq_hz);
-    theta.push_back(p.solution.theta_rad * kRadToDeg);
-    speed.push_back(p.solution.speed_mps);
-    tail.push_back(p.solution.tail_angle_rad * kRadToDeg);
-    cg.push_back(p.cg_shift_m);
-    power.push_back(p.mean.power_aero_W);
-    mod.push_back(o.max_modulus);
-    stable.push_back(o.stable ? 1.0 : 0.0);
-    mu_re.push_back(o.multipliers.size() ? o.multipliers[0].real() : 0.0);
-    mu_im.push_back(o.multipliers.size() ? o.multipliers[0].imag() : 0.0);
-    resid.push_back(o.residual_max);
-    iters.push_back(o.corrector_iterations);
-    arc.push_back(o.arclength);
-    thmin.push_back(p.mean.theta_min_rad * kRadToDeg);
-    thmax.push_back(p.mean.theta_max_rad * kRadToDeg);
-    alt.push_back(p.mean.altitude_p2p_m);
-    event.push_back(o.event);
-    label.push_back(p.leading_label);
-  }
-  t.addColumn("point", index);
-  t.addColumn(continuationParameterName(parameter), parameterUnit(parameter), lam);
-  t.addColumn("freq_hz", f);
-  t.addColumn("theta_mean_deg", theta);
-  t.addColumn("speed_mps", speed);
-  t.addColumn("tail_angle_deg", tail);
-  t.addColumn("cg_shift_m", cg);
-  t.addColumn("power_aero_W", power);
-  t.addColumn("max_modulus", mod);
-  t.addColumn("stable", stable);
-  t.addColumn("leading_mu_real", mu_re);
-  t.addColumn("leading_mu_imag", mu_im);
-  t.addColumn("periodic_residual", resid);
-  t.addColumn("corrector_iterations", iters);
-  t.addColumn("arclength", arc);
-  t.addColumn("theta_min_deg", thmin);
-  t.addColumn("theta_max_deg", thmax);
-  t.addColumn("altitude_p2p_m", alt);
-  t.addTextColumn("event", event);
-  t.addTextColumn("leading_label", label);
-  return t;
+  using P = TrimContinuationPoint;
+  auto leading = [](const P& p) {
+    return p.orbit.multipliers.size() ? p.orbit.multipliers[0] : std::complex<double>(0.0, 0.0);
+  };
+  return RowTable("continuation.csv", pts)
+      .number("point", [](const P& p) { return p.orbit.index; })
+      .number(continuationParameterName(parameter), parameterUnit(parameter),
+              [&](const P& p) { return parameterFileValue(parameter, p); })
+      .number("freq_hz", [](const P& p) { return p.solution.freq_hz; })
+      .number("theta_mean_deg", [](const P& p) { return p.solution.theta_rad * kRadToDeg; })
+      .number("speed_mps", [](const P& p) { return p.solution.speed_mps; })
+      .number("tail_angle_deg", [](const P& p) { return p.solution.tail_angle_rad * kRadToDeg; })
+      .number("cg_shift_m", [](const P& p) { return p.cg_shift_m; })
+      .number("power_aero_W", [](const P& p) { return p.mean.power_aero_W; })
+      .number("max_modulus", [](const P& p) { return p.orbit.max_modulus; })
+      .number("stable", [](const P& p) { return p.orbit.stable ? 1.0 : 0.0; })
+      .number("leading_mu_real", [&](const P& p) { return leading(p).real(); })
+      .number("leading_mu_imag", [&](const P& p) { return leading(p).imag(); })
+      .number("periodic_residual", [](const P& p) { return p.orbit.residual_max; })
+      .number("corrector_iterations", [](const P& p) { return p.orbit.corrector_iterations; })
+      .number("arclength", [](const P& p) { return p.orbit.arclength; })
+      .number("theta_min_deg", [](const P& p) { return p.mean.theta_min_rad * kRadToDeg; })
+      .number("theta_max_deg", [](const P& p) { return p.mean.theta_max_rad * kRadToDeg; })
+      .number("altitude_p2p_m", [](const P& p) { return p.mean.altitude_p2p_m; })
+      .text("event", [](const P& p) { return p.orbit.event; })
+      .text("leading_label", [](const P& p) { return p.leading_label; })
+      .table();
 }
 
 // Stable stretches as [from, to] of the parameter (file units), in branch order.

@@ -112,34 +112,28 @@ std::vector<double> modeW(const structure::ModalWing& wing, int k) {
 }
 
 CsvTable modesTable(const structure::ModalWing& wing) {
-  const int m = wing.modeCount();
-  std::vector<double> index(static_cast<std::size_t>(m));
-  for (int k = 0; k < m; ++k) index[static_cast<std::size_t>(k)] = k + 1;
   const structure::EffectiveMassTable& e = wing.effective_mass;
-  CsvTable t("modes.csv");
-  t.addColumn("mode", index);
-  t.addColumn("frequency", toVector(wing.frequencies_hz));
-  t.addColumn("damping_ratio", toVector(wing.damping_ratios));
-  t.addColumn("flap_effective_mass", toVector(e.flap_fraction));
-  t.addColumn("heave_effective_mass", toVector(e.heave_fraction));
-  t.addColumn("flap_effective_mass_cumulative", toVector(e.flap_cumulative));
-  t.addColumn("heave_effective_mass_cumulative", toVector(e.heave_cumulative));
-  return t;
+  const auto k = [](std::size_t i) { return static_cast<Eigen::Index>(i); };
+  return RowTable("modes.csv", rowIndices(static_cast<std::size_t>(wing.modeCount())))
+      .number("mode", [](std::size_t i) { return i + 1; })
+      .number("frequency", [&](std::size_t i) { return wing.frequencies_hz[k(i)]; })
+      .number("damping_ratio", [&](std::size_t i) { return wing.damping_ratios[k(i)]; })
+      .number("flap_effective_mass", [&](std::size_t i) { return e.flap_fraction[k(i)]; })
+      .number("heave_effective_mass", [&](std::size_t i) { return e.heave_fraction[k(i)]; })
+      .number("flap_effective_mass_cumulative",
+              [&](std::size_t i) { return e.flap_cumulative[k(i)]; })
+      .number("heave_effective_mass_cumulative",
+              [&](std::size_t i) { return e.heave_cumulative[k(i)]; })
+      .table();
 }
 
 CsvTable modeShapeTable(const structure::ModalWing& wing) {
-  const int n = wing.mesh.nodeCount();
-  std::vector<double> id(static_cast<std::size_t>(n)), x(id.size()), y(id.size());
-  for (int p = 0; p < n; ++p) {
-    const auto i = static_cast<std::size_t>(p);
-    id[i] = p;
-    x[i] = wing.mesh.nodes_W_m[i].x();
-    y[i] = wing.mesh.nodes_W_m[i].y();
-  }
-  CsvTable t("mode_shapes.csv");
-  t.addColumn("node", id);
-  t.addColumn("x_W", x);
-  t.addColumn("y_W", y);
+  const std::vector<Vec3>& nodes = wing.mesh.nodes_W_m;
+  CsvTable t = RowTable("mode_shapes.csv", rowIndices(nodes.size()))
+                   .number("node", [](std::size_t p) { return p; })
+                   .number("x_W", [&](std::size_t p) { return nodes[p].x(); })
+                   .number("y_W", [&](std::size_t p) { return nodes[p].y(); })
+                   .table();
   for (int k = 0; k < wing.modeCount(); ++k)
     t.addColumn("w_" + std::to_string(k + 1), "m/sqrt(kg)", modeW(wing, k));
   return t;

@@ -94,104 +94,61 @@ JsonObject floquetObject(const PeriodicTrimSummary& s) {
 
 // One period of the orbit from flap phase 0.
 CsvTable orbitTable(const PeriodicTrimSummary& s) {
-  CsvTable t("periodic_orbit.csv");
   const OrbitHistory& h = s.history;
   const double T = 1.0 / s.solution.freq_hz;
-  std::vector<double> time, phase, flap, theta, U, W, Q, V, x, alt, fv, fh, m, p;
-  for (std::size_t k = 0; k < h.t_s.size(); ++k) {
-    const BodyState& b = h.body[k];
-    time.push_back(h.t_s[k]);
-    phase.push_back(h.t_s[k] / T);
-    flap.push_back(h.delta_M_rad[k] * kRadToDeg);
-    theta.push_back(b.theta_rad * kRadToDeg);
-    U.push_back(b.U_mps);
-    W.push_back(b.W_mps);
-    Q.push_back(b.Q_radps * kRadToDeg);
-    V.push_back(std::hypot(b.U_mps, b.W_mps));
-    x.push_back(b.x_I_m);
-    alt.push_back(b.h_m);
-    fv.push_back(h.samples[k].loads.FV_N);
-    fh.push_back(h.samples[k].loads.FH_N);
-    m.push_back(h.samples[k].loads.M_Nm);
-    p.push_back(h.samples[k].loads.power_aero_W);
-  }
-  t.addColumn("t", time);
-  t.addColumn("phase", phase);
-  t.addColumn("delta_M", flap);
-  t.addColumn("theta", theta);
-  t.addColumn("U", U);
-  t.addColumn("W", W);
-  t.addColumn("Q", Q);
-  t.addColumn("airspeed", V);
-  t.addColumn("x", x);
-  t.addColumn("h", alt);
-  t.addColumn("FV", fv);
-  t.addColumn("FH", fh);
-  t.addColumn("M", m);
-  t.addColumn("power_aero", p);
-  return t;
+  auto body = [&h](std::size_t k) -> const BodyState& { return h.body[k]; };
+  auto loads = [&h](std::size_t k) -> const LoadSample& { return h.samples[k].loads; };
+  return RowTable("periodic_orbit.csv", rowIndices(h.t_s.size()))
+      .number("t", [&](std::size_t k) { return h.t_s[k]; })
+      .number("phase", [&](std::size_t k) { return h.t_s[k] / T; })
+      .number("delta_M", [&](std::size_t k) { return h.delta_M_rad[k] * kRadToDeg; })
+      .number("theta", [&](std::size_t k) { return body(k).theta_rad * kRadToDeg; })
+      .number("U", [&](std::size_t k) { return body(k).U_mps; })
+      .number("W", [&](std::size_t k) { return body(k).W_mps; })
+      .number("Q", [&](std::size_t k) { return body(k).Q_radps * kRadToDeg; })
+      .number("airspeed", [&](std::size_t k) { return std::hypot(body(k).U_mps, body(k).W_mps); })
+      .number("x", [&](std::size_t k) { return body(k).x_I_m; })
+      .number("h", [&](std::size_t k) { return body(k).h_m; })
+      .number("FV", [&](std::size_t k) { return loads(k).FV_N; })
+      .number("FH", [&](std::size_t k) { return loads(k).FH_N; })
+      .number("M", [&](std::size_t k) { return loads(k).M_Nm; })
+      .number("power_aero", [&](std::size_t k) { return loads(k).power_aero_W; })
+      .table();
 }
 
 CsvTable iterationTable(const PeriodicTrimSummary& s) {
-  CsvTable t("periodic_iterations.csv");
-  std::vector<double> pass, it, rmax, rnorm, step, damping, fresh, refreshed, maps;
-  for (std::size_t i = 0; i < s.newton_log.size(); ++i) {
-    const ShootingIteration& r = s.newton_log[i];
-    pass.push_back(s.newton_pass[i]);
-    it.push_back(r.iteration);
-    rmax.push_back(r.residual_max);
-    rnorm.push_back(r.residual_norm);
-    step.push_back(r.step_norm);
-    damping.push_back(r.damping);
-    fresh.push_back(r.fresh_jacobian ? 1.0 : 0.0);
-    refreshed.push_back(r.refreshed ? 1.0 : 0.0);
-    maps.push_back(static_cast<double>(r.period_maps));
-  }
-  t.addColumn("pass", pass);
-  t.addColumn("iteration", it);
-  t.addColumn("residual_max", rmax);
-  t.addColumn("residual_norm", rnorm);
-  t.addColumn("step_norm", step);
-  t.addColumn("damping", damping);
-  t.addColumn("fresh_jacobian", fresh);
-  t.addColumn("grid_refreshed", refreshed);
-  t.addColumn("period_maps", maps);
-  return t;
+  auto it = [&s](std::size_t i) -> const ShootingIteration& { return s.newton_log[i]; };
+  return RowTable("periodic_iterations.csv", rowIndices(s.newton_log.size()))
+      .number("pass", [&](std::size_t i) { return s.newton_pass[i]; })
+      .number("iteration", [&](std::size_t i) { return it(i).iteration; })
+      .number("residual_max", [&](std::size_t i) { return it(i).residual_max; })
+      .number("residual_norm", [&](std::size_t i) { return it(i).residual_norm; })
+      .number("step_norm", [&](std::size_t i) { return it(i).step_norm; })
+      .number("damping", [&](std::size_t i) { return it(i).damping; })
+      .number("fresh_jacobian", [&](std::size_t i) { return it(i).fresh_jacobian ? 1.0 : 0.0; })
+      .number("grid_refreshed", [&](std::size_t i) { return it(i).refreshed ? 1.0 : 0.0; })
+      .number("period_maps", [&](std::size_t i) { return it(i).period_maps; })
+      .table();
 }
 
 CsvTable floquetTable(const PeriodicTrimSummary& s) {
-  CsvTable t("floquet.csv");
-  std::vector<double> rank, re, im, mod, arg, er, ei, zeta, period, inside;
-  std::vector<std::string> label, dominant;
-  int k = 0;
-  if (s.floquet_valid)
-    for (const FloquetMultiplier& m : s.floquet.multipliers) {
-      rank.push_back(++k);
-      re.push_back(m.mu.real());
-      im.push_back(m.mu.imag());
-      mod.push_back(m.modulus);
-      arg.push_back(m.argument_rad * kRadToDeg);
-      er.push_back(m.exponent_per_s.real());
-      ei.push_back(m.exponent_per_s.imag());
-      zeta.push_back(m.damping_ratio);
-      period.push_back(m.oscillatory ? m.period_s : 0.0);
-      inside.push_back(m.modulus < 1.0 ? 1.0 : 0.0);
-      label.push_back(m.label);
-      dominant.push_back(dominantText(m));
-    }
-  t.addColumn("rank", rank);
-  t.addColumn("mu_real", re);
-  t.addColumn("mu_imag", im);
-  t.addColumn("modulus", mod);
-  t.addColumn("argument", arg);
-  t.addColumn("exponent_real", er);
-  t.addColumn("exponent_imag", ei);
-  t.addColumn("damping_ratio", zeta);
-  t.addColumn("period", period);
-  t.addColumn("inside_unit_circle", inside);
-  t.addTextColumn("label", label);
-  t.addTextColumn("dominant_states", dominant);
-  return t;
+  using M = FloquetMultiplier;
+  static const std::vector<M> kNone;
+  const std::vector<M>& ms = s.floquet_valid ? s.floquet.multipliers : kNone;
+  return RowTable("floquet.csv", rowIndices(ms.size()))
+      .number("rank", [](std::size_t k) { return k + 1; })
+      .number("mu_real", [&](std::size_t k) { return ms[k].mu.real(); })
+      .number("mu_imag", [&](std::size_t k) { return ms[k].mu.imag(); })
+      .number("modulus", [&](std::size_t k) { return ms[k].modulus; })
+      .number("argument", [&](std::size_t k) { return ms[k].argument_rad * kRadToDeg; })
+      .number("exponent_real", [&](std::size_t k) { return ms[k].exponent_per_s.real(); })
+      .number("exponent_imag", [&](std::size_t k) { return ms[k].exponent_per_s.imag(); })
+      .number("damping_ratio", [&](std::size_t k) { return ms[k].damping_ratio; })
+      .number("period", [&](std::size_t k) { return ms[k].oscillatory ? ms[k].period_s : 0.0; })
+      .number("inside_unit_circle", [&](std::size_t k) { return ms[k].modulus < 1.0 ? 1.0 : 0.0; })
+      .text("label", [&](std::size_t k) { return ms[k].label; })
+      .text("dominant_states", [&](std::size_t k) { return dominantText(ms[k]); })
+      .table();
 }
 
 // The multipliers in the complex plane with the unit circle: the whole disc, and a zoom on the

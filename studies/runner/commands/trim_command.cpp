@@ -35,77 +35,49 @@ JsonObject unknownsObject(const OperatingPoint& p) {
   return o;
 }
 
-// Every periodic run: which iteration, what for, where, and the Eq. (4) residual there.
+// Every periodic run: which iteration, what for, where, and the Eq. (4) residual there (no value
+// for a failed run).
 CsvTable evaluationTable(const TrimSummary& s) {
-  CsvTable t("trim_iterations.csv");
-  std::vector<double> idx, it, purpose, ok, cycles, th, U, tail, f, fv, fh, m, rv, rh, rm, rmax;
-  for (const TrimEvaluationRecord& e : s.evaluation_log) {
-    idx.push_back(e.index);
-    it.push_back(e.iteration);
-    purpose.push_back(static_cast<double>(static_cast<int>(e.purpose)));
-    ok.push_back(e.result.ok ? 1.0 : 0.0);
-    cycles.push_back(e.result.cycles);
-    th.push_back(fileUnits(e.point, TrimUnknown::kThetaMean));
-    U.push_back(fileUnits(e.point, TrimUnknown::kSpeed));
-    tail.push_back(fileUnits(e.point, TrimUnknown::kTailAngle));
-    f.push_back(fileUnits(e.point, TrimUnknown::kFreq));
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    fv.push_back(e.result.ok ? e.result.mean.FV_N : nan);
-    fh.push_back(e.result.ok ? e.result.mean.FH_N : nan);
-    m.push_back(e.result.ok ? e.result.mean.M_Nm : nan);
-    rv.push_back(e.result.ok ? e.residual.FV_N : nan);
-    rh.push_back(e.result.ok ? e.residual.FH_N : nan);
-    rm.push_back(e.result.ok ? e.residual.M_Nm : nan);
-    rmax.push_back(e.result.ok ? e.scaled_max : nan);
-  }
-  t.addColumn("evaluation", idx);
-  t.addColumn("iteration", it);
-  t.addColumn("purpose", purpose);
-  t.addColumn("ok", ok);
-  t.addColumn("cycles", cycles);
-  t.addColumn("theta_mean", th);
-  t.addColumn("speed", U);
-  t.addColumn("tail_angle", tail);
-  t.addColumn("freq", f);
-  t.addColumn("FV_mean", fv);
-  t.addColumn("FH_mean", fh);
-  t.addColumn("M_mean", m);
-  t.addColumn("residual_FV", rv);
-  t.addColumn("residual_FH", rh);
-  t.addColumn("residual_M", rm);
-  t.addColumn("residual_scaled_max", rmax);
-  return t;
+  using E = TrimEvaluationRecord;
+  auto ifOk = [](const E& e, double v) {
+    return e.result.ok ? v : std::numeric_limits<double>::quiet_NaN();
+  };
+  return RowTable("trim_iterations.csv", s.evaluation_log)
+      .number("evaluation", [](const E& e) { return e.index; })
+      .number("iteration", [](const E& e) { return e.iteration; })
+      .number("purpose", [](const E& e) { return static_cast<int>(e.purpose); })
+      .number("ok", [](const E& e) { return e.result.ok ? 1.0 : 0.0; })
+      .number("cycles", [](const E& e) { return e.result.cycles; })
+      .number("theta_mean", [](const E& e) { return fileUnits(e.point, TrimUnknown::kThetaMean); })
+      .number("speed", [](const E& e) { return fileUnits(e.point, TrimUnknown::kSpeed); })
+      .number("tail_angle", [](const E& e) { return fileUnits(e.point, TrimUnknown::kTailAngle); })
+      .number("freq", [](const E& e) { return fileUnits(e.point, TrimUnknown::kFreq); })
+      .number("FV_mean", [&](const E& e) { return ifOk(e, e.result.mean.FV_N); })
+      .number("FH_mean", [&](const E& e) { return ifOk(e, e.result.mean.FH_N); })
+      .number("M_mean", [&](const E& e) { return ifOk(e, e.result.mean.M_Nm); })
+      .number("residual_FV", [&](const E& e) { return ifOk(e, e.residual.FV_N); })
+      .number("residual_FH", [&](const E& e) { return ifOk(e, e.residual.FH_N); })
+      .number("residual_M", [&](const E& e) { return ifOk(e, e.residual.M_Nm); })
+      .number("residual_scaled_max", [&](const E& e) { return ifOk(e, e.scaled_max); })
+      .table();
 }
 
 // Every solver iteration: the accepted iterate and its residual.
 CsvTable progressTable(const TrimSummary& s) {
-  CsvTable t("trim_progress.csv");
-  std::vector<double> it, ev, th, U, tail, f, cost, rmax, step, radius, success;
-  for (const TrimIterationRecord& r : s.iteration_log) {
-    it.push_back(r.iteration);
-    ev.push_back(r.evaluations);
-    th.push_back(fileUnits(r.point, TrimUnknown::kThetaMean));
-    U.push_back(fileUnits(r.point, TrimUnknown::kSpeed));
-    tail.push_back(fileUnits(r.point, TrimUnknown::kTailAngle));
-    f.push_back(fileUnits(r.point, TrimUnknown::kFreq));
-    cost.push_back(r.cost);
-    rmax.push_back(r.scaled_max);
-    step.push_back(r.step_norm);
-    radius.push_back(r.trust_region_radius);
-    success.push_back(r.step_successful ? 1.0 : 0.0);
-  }
-  t.addColumn("iteration", it);
-  t.addColumn("evaluations", ev);
-  t.addColumn("theta_mean", th);
-  t.addColumn("speed", U);
-  t.addColumn("tail_angle", tail);
-  t.addColumn("freq", f);
-  t.addColumn("cost", cost);
-  t.addColumn("residual_scaled_max", rmax);
-  t.addColumn("step_norm", step);
-  t.addColumn("trust_region_radius", radius);
-  t.addColumn("step_successful", success);
-  return t;
+  using R = TrimIterationRecord;
+  return RowTable("trim_progress.csv", s.iteration_log)
+      .number("iteration", [](const R& r) { return r.iteration; })
+      .number("evaluations", [](const R& r) { return r.evaluations; })
+      .number("theta_mean", [](const R& r) { return fileUnits(r.point, TrimUnknown::kThetaMean); })
+      .number("speed", [](const R& r) { return fileUnits(r.point, TrimUnknown::kSpeed); })
+      .number("tail_angle", [](const R& r) { return fileUnits(r.point, TrimUnknown::kTailAngle); })
+      .number("freq", [](const R& r) { return fileUnits(r.point, TrimUnknown::kFreq); })
+      .number("cost", [](const R& r) { return r.cost; })
+      .number("residual_scaled_max", [](const R& r) { return r.scaled_max; })
+      .number("step_norm", [](const R& r) { return r.step_norm; })
+      .number("trust_region_radius", [](const R& r) { return r.trust_region_radius; })
+      .number("step_successful", [](const R& r) { return r.step_successful ? 1.0 : 0.0; })
+      .table();
 }
 
 // Residual norm per iteration (log scale) with every residual run, and the unknowns per iteration.

@@ -49,6 +49,12 @@ void CsvTable::addTextColumn(std::string name, std::string unit, std::vector<std
   add(std::move(name), std::move(unit), std::move(cells));
 }
 
+std::vector<std::size_t> rowIndices(std::size_t n) {
+  std::vector<std::size_t> v(n);
+  for (std::size_t i = 0; i < n; ++i) v[i] = i;
+  return v;
+}
+
 std::size_t CsvTable::rows() const { return columns_.empty() ? 0 : columns_.front().size(); }
 
 std::string CsvTable::toString(std::size_t row_stride) const {

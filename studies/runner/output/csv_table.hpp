@@ -41,4 +41,61 @@ class CsvTable {
   std::vector<std::vector<std::string>> columns_;  // formatted cells
 };
 
+/// A table of one row per element of `rows`, declared column by column with how a row gives its
+/// cell: `number(name, f)` (f(row) -> double, shortest round-trip) or `text(name, f)` (f(row) ->
+/// std::string, "" = empty cell); the unit from the output table, or given for a column the
+/// study names. The column list is the table's one declaration of its layout:
+///   CsvTable t = RowTable("floquet.csv", multipliers)
+///                    .number("modulus", [](const FloquetMultiplier& m) { return m.modulus; })
+///                    .text("label", [](const FloquetMultiplier& m) { return m.label; })
+///                    .table();
+template <class Row>
+class RowTable {
+ public:
+  RowTable(std::string file, std::vector<Row> rows)
+      : table_(std::move(file)), rows_(std::move(rows)) {}
+  template <class F>
+  RowTable& number(std::string name, F f) {
+    table_.addColumn(std::move(name), numbers(f));
+    return *this;
+  }
+  template <class F>
+  RowTable& number(std::string name, std::string unit, F f) {
+    table_.addColumn(std::move(name), std::move(unit), numbers(f));
+    return *this;
+  }
+  template <class F>
+  RowTable& text(std::string name, F f) {
+    table_.addTextColumn(std::move(name), texts(f));
+    return *this;
+  }
+  template <class F>
+  RowTable& text(std::string name, std::string unit, F f) {
+    table_.addTextColumn(std::move(name), std::move(unit), texts(f));
+    return *this;
+  }
+  CsvTable table() { return std::move(table_); }
+
+ private:
+  template <class F>
+  std::vector<double> numbers(F& f) const {
+    std::vector<double> v;
+    v.reserve(rows_.size());
+    for (const Row& r : rows_) v.push_back(static_cast<double>(f(r)));
+    return v;
+  }
+  template <class F>
+  std::vector<std::string> texts(F& f) const {
+    std::vector<std::string> v;
+    v.reserve(rows_.size());
+    for (const Row& r : rows_) v.push_back(f(r));
+    return v;
+  }
+  CsvTable table_;
+  std::vector<Row> rows_;
+};
+
+/// 0, 1, ..., n - 1: the rows of a RowTable over parallel arrays.
+std::vector<std::size_t> rowIndices(std::size_t n);
+
 }  // namespace orni::studies
