@@ -18,35 +18,23 @@ namespace {
 // calibration.csv: one row per settled flight (or tethered Eq. 4 run) of the calibration.
 CsvTable calibrationTable(const orni::CalibrationOptions& o,
                           const std::vector<orni::CalibrationEvaluation>& log) {
-  CsvTable t("calibration.csv");
-  std::vector<std::vector<double>> cols(o.variables.size());
-  std::vector<double> stage, ok, theta, speed, climb, drift, r0, r1, r2;
-  for (const orni::CalibrationEvaluation& e : log) {
-    stage.push_back(static_cast<double>(e.stage));
-    r0.push_back(e.residual[0]);
-    r1.push_back(e.residual[1]);
-    r2.push_back(e.residual[2]);
-    for (std::size_t i = 0; i < o.variables.size(); ++i) cols[i].push_back(e.values[i]);
-    ok.push_back(e.settled.ok ? 1.0 : 0.0);
-    theta.push_back(e.settled.theta_mean_rad * kRadToDeg);
-    speed.push_back(e.settled.airspeed_mps);
-    climb.push_back(e.settled.climb_angle_rad * kRadToDeg);
-    drift.push_back(e.settled.theta_drift_rad * kRadToDeg);
-  }
+  using E = orni::CalibrationEvaluation;
+  RowTable<E> t("calibration.csv", log);
   for (std::size_t i = 0; i < o.variables.size(); ++i)
-    t.addColumn(orni::keyOf(o.variables[i].parameter), "file units", cols[i]);
-  t.addColumn("stage", stage);
-  t.addColumn("settled", ok);
-  t.addColumn("theta_mean", theta);
-  t.addColumn("airspeed", speed);
-  t.addColumn("climb_angle", climb);
-  t.addColumn("theta_drift", drift);
+    t.number(orni::keyOf(o.variables[i].parameter), "file units",
+             [i](const E& e) { return e.values[i]; });
   // The solver's residuals: stage 0 Eq. (4) in percent of the weight (FV - W, FH, M / c_mean);
   // otherwise theta error (deg), speed error (0.1 m/s), climb angle (deg).
-  t.addColumn("residual_1", r0);
-  t.addColumn("residual_2", r1);
-  t.addColumn("residual_3", r2);
-  return t;
+  return t.number("stage", [](const E& e) { return e.stage; })
+      .number("settled", [](const E& e) { return e.settled.ok ? 1.0 : 0.0; })
+      .number("theta_mean", [](const E& e) { return e.settled.theta_mean_rad * kRadToDeg; })
+      .number("airspeed", [](const E& e) { return e.settled.airspeed_mps; })
+      .number("climb_angle", [](const E& e) { return e.settled.climb_angle_rad * kRadToDeg; })
+      .number("theta_drift", [](const E& e) { return e.settled.theta_drift_rad * kRadToDeg; })
+      .number("residual_1", [](const E& e) { return e.residual[0]; })
+      .number("residual_2", [](const E& e) { return e.residual[1]; })
+      .number("residual_3", [](const E& e) { return e.residual[2]; })
+      .table();
 }
 }  // namespace
 

@@ -37,41 +37,32 @@ double orNull(const std::optional<double>& v) {
   return v ? *v : std::numeric_limits<double>::quiet_NaN();
 }
 
-/// sensitivity.csv: point, parameter, side, value, value_unit, status, results, message.
+/// sensitivity.csv: point, parameter, side, value, value_unit, status, results, message; the base
+/// point's parameter, value and unit are empty.
 CsvTable sensitivityTable(const SensitivitySettings& s, const std::vector<SweepPointResult>& rows) {
   const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
-  std::vector<std::string> point, parameter, side, value, value_unit, status, message;
-  for (std::size_t i = 0; i < rows.size(); ++i) {
+  auto side = [](std::size_t i) { return sensitivityPointId(i).side; };
+  auto param = [&](std::size_t i) -> const SensitivityParameter* {
     const SensitivityPointId id = sensitivityPointId(i);
-    point.push_back(std::to_string(i));
-    side.push_back(toString(id.side));
-    if (id.side == SensitivitySide::kBase) {
-      parameter.emplace_back();
-      value.emplace_back();
-      value_unit.emplace_back();
-    } else {
-      const SensitivityParameter& p = s.parameters[id.parameter];
-      parameter.push_back(p.key);
-      value.push_back(formatShortest(id.side == SensitivitySide::kLow ? p.low : p.high));
-      value_unit.push_back(keyUnit(p.key));
-    }
-    status.push_back(rows[i].status);
-    message.push_back(rows[i].message);
-  }
-  CsvTable t("sensitivity.csv");
-  t.addTextColumn("point", std::move(point));
-  t.addTextColumn("parameter", std::move(parameter));
-  t.addTextColumn("side", std::move(side));
-  t.addTextColumn("value", std::move(value));
-  t.addTextColumn("value_unit", std::move(value_unit));
-  t.addTextColumn("status", std::move(status));
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    std::vector<std::string> cells;
-    for (const SweepPointResult& r : rows) cells.push_back(r.cells[c]);
-    t.addTextColumn(columns[c].name, columns[c].unit, std::move(cells));
-  }
-  t.addTextColumn("message", std::move(message));
-  return t;
+    return id.side == SensitivitySide::kBase ? nullptr : &s.parameters[id.parameter];
+  };
+  RowTable<std::size_t> table("sensitivity.csv", rowIndices(rows.size()));
+  table.text("point", [](std::size_t i) { return std::to_string(i); })
+      .text("parameter", [&](std::size_t i) { return param(i) ? param(i)->key : std::string(); })
+      .text("side", [&](std::size_t i) { return std::string(toString(side(i))); })
+      .text("value",
+            [&](std::size_t i) {
+              const SensitivityParameter* p = param(i);
+              if (!p) return std::string();
+              return formatShortest(side(i) == SensitivitySide::kLow ? p->low : p->high);
+            })
+      .text("value_unit",
+            [&](std::size_t i) { return param(i) ? keyUnit(param(i)->key) : std::string(); })
+      .text("status", [&](std::size_t i) { return rows[i].status; });
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    table.text(columns[c].name, columns[c].unit,
+               [&rows, c](std::size_t i) { return rows[i].cells[c]; });
+  return table.text("message", [&](std::size_t i) { return rows[i].message; }).table();
 }
 
 JsonObject parametersJson(const SensitivitySettings& s) {

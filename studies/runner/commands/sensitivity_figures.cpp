@@ -49,44 +49,37 @@ std::string tornadoStem(const PredictionRanking& ranking) {
 CsvTable tornadoTable(const Study& study, const std::vector<PredictionRanking>& rankings) {
   const std::vector<SensitivityParameter>& params = study.sensitivity().parameters;
   const std::vector<SensitivityColumn>& columns = sensitivityResultColumns();
-  std::vector<std::string> prediction, unit, prediction_index, rank, parameter, parameter_index,
-      label, base, low, high, delta_low, delta_high, swing, share;
-  for (std::size_t k = 0; k < rankings.size(); ++k) {
-    const PredictionRanking& p = rankings[k];
-    for (std::size_t r = 0; r < p.ranked.size(); ++r) {
-      const SensitivityEffect& e = p.ranked[r];
-      prediction.push_back(columns[p.column].name);
-      unit.push_back(columns[p.column].unit);
-      prediction_index.push_back(std::to_string(k + 1));
-      rank.push_back(std::to_string(r + 1));
-      parameter.push_back(params[e.parameter].key);
-      parameter_index.push_back(std::to_string(e.parameter + 1));
-      label.push_back(parameterLabel(params[e.parameter]));
-      base.push_back(cell(p.base));
-      low.push_back(cell(e.low_value));
-      high.push_back(cell(e.high_value));
-      delta_low.push_back(cell(e.delta_low));
-      delta_high.push_back(cell(e.delta_high));
-      swing.push_back(cell(e.swing));
-      share.push_back(cell(e.swing_share));
-    }
-  }
-  CsvTable t("tornado.csv");
-  t.addTextColumn("prediction", std::move(prediction));
-  t.addTextColumn("prediction_unit", std::move(unit));
-  t.addTextColumn("prediction_index", std::move(prediction_index));
-  t.addTextColumn("rank", std::move(rank));
-  t.addTextColumn("parameter", std::move(parameter));
-  t.addTextColumn("parameter_index", std::move(parameter_index));
-  t.addTextColumn("label", std::move(label));
-  t.addTextColumn("base", std::move(base));
-  t.addTextColumn("low_value", std::move(low));
-  t.addTextColumn("high_value", std::move(high));
-  t.addTextColumn("delta_low", std::move(delta_low));
-  t.addTextColumn("delta_high", std::move(delta_high));
-  t.addTextColumn("swing", std::move(swing));
-  t.addTextColumn("swing_share", std::move(share));
-  return t;
+  struct Row {
+    std::size_t prediction, rank;  // 0-based
+    const PredictionRanking* ranking;
+    const SensitivityEffect* effect;
+  };
+  std::vector<Row> rows;
+  for (std::size_t k = 0; k < rankings.size(); ++k)
+    for (std::size_t r = 0; r < rankings[k].ranked.size(); ++r)
+      rows.push_back({k, r, &rankings[k], &rankings[k].ranked[r]});
+  auto column = [&](const Row& r) -> const SensitivityColumn& {
+    return columns[r.ranking->column];
+  };
+  auto param = [&](const Row& r) -> const SensitivityParameter& {
+    return params[r.effect->parameter];
+  };
+  return RowTable("tornado.csv", rows)
+      .text("prediction", [&](const Row& r) { return column(r).name; })
+      .text("prediction_unit", [&](const Row& r) { return column(r).unit; })
+      .text("prediction_index", [](const Row& r) { return std::to_string(r.prediction + 1); })
+      .text("rank", [](const Row& r) { return std::to_string(r.rank + 1); })
+      .text("parameter", [&](const Row& r) { return param(r).key; })
+      .text("parameter_index", [](const Row& r) { return std::to_string(r.effect->parameter + 1); })
+      .text("label", [&](const Row& r) { return parameterLabel(param(r)); })
+      .text("base", [](const Row& r) { return cell(r.ranking->base); })
+      .text("low_value", [](const Row& r) { return cell(r.effect->low_value); })
+      .text("high_value", [](const Row& r) { return cell(r.effect->high_value); })
+      .text("delta_low", [](const Row& r) { return cell(r.effect->delta_low); })
+      .text("delta_high", [](const Row& r) { return cell(r.effect->delta_high); })
+      .text("swing", [](const Row& r) { return cell(r.effect->swing); })
+      .text("swing_share", [](const Row& r) { return cell(r.effect->swing_share); })
+      .table();
 }
 
 std::string tornadoFigure(const Study& study, const std::vector<PredictionRanking>& rankings,

@@ -40,28 +40,14 @@ SweepGrid gridOf(const SweepSettings& s) {
 CsvTable sweepTable(const SweepSettings& s, const SweepGrid& grid,
                     const std::vector<SweepColumn>& columns,
                     const std::vector<SweepPointResult>& rows) {
-  CsvTable t("sweep.csv");
-  std::vector<std::vector<double>> axis_values(s.axes.size());
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    const std::vector<std::size_t> at = grid.axisIndices(i);
-    for (std::size_t k = 0; k < s.axes.size(); ++k)
-      axis_values[k].push_back(s.axes[k].values.values[at[k]]);
-  }
+  RowTable<std::size_t> t("sweep.csv", rowIndices(rows.size()));
   for (std::size_t k = 0; k < s.axes.size(); ++k)
-    t.addColumn(s.axes[k].key, keyUnit(s.axes[k].key), axis_values[k]);
-  std::vector<std::string> status, message;
-  for (const SweepPointResult& r : rows) {
-    status.push_back(r.status);
-    message.push_back(r.message);
-  }
-  t.addTextColumn("status", status);
-  for (std::size_t c = 0; c < columns.size(); ++c) {
-    std::vector<std::string> cells;
-    for (const SweepPointResult& r : rows) cells.push_back(r.cells[c]);
-    t.addTextColumn(columns[c].name, columns[c].unit, std::move(cells));
-  }
-  t.addTextColumn("message", message);
-  return t;
+    t.number(s.axes[k].key, keyUnit(s.axes[k].key),
+             [&, k](std::size_t i) { return s.axes[k].values.values[grid.axisIndices(i)[k]]; });
+  t.text("status", [&](std::size_t i) { return rows[i].status; });
+  for (std::size_t c = 0; c < columns.size(); ++c)
+    t.text(columns[c].name, columns[c].unit, [&, c](std::size_t i) { return rows[i].cells[c]; });
+  return t.text("message", [&](std::size_t i) { return rows[i].message; }).table();
 }
 
 /// Gnuplot script: one panel per plotted column with a value somewhere, the column against the
