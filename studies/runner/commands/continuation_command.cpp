@@ -262,12 +262,8 @@ std::string branchFigure(const Study& study, PeriodicControl parameter, Periodic
 
 JsonObject startObject(const PeriodicTrimSummary& s) {
   JsonObject o;
-  o.set("converged", s.converged)
-      .set("message", s.message)
-      .set("freq_hz", s.solution.freq_hz)
-      .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
-      .set("speed_mps", s.solution.speed_mps)
-      .set("tail_angle_deg", s.solution.tail_angle_rad * kRadToDeg)
+  o.set("converged", s.converged).set("message", s.message);
+  setOperatingPoint(o, s.solution)
       .set("cg_shift_m", s.cg_shift_m)
       .set("friction_speed_mps", s.friction_speed_mps);
   if (s.converged)

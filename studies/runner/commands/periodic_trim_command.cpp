@@ -231,12 +231,8 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
         .set("wing_and_aero_states", static_cast<int>(s.orbit_start.size()) - 4);
   const TrimSummary& e4 = s.stage1;
   JsonObject stage1;
-  stage1.set("converged", e4.converged)
-      .set("message", e4.message)
-      .set("freq_hz", e4.solution.freq_hz)
-      .set("theta_mean_deg", e4.solution.theta_rad * kRadToDeg)
-      .set("speed_mps", e4.solution.speed_mps)
-      .set("tail_angle_deg", e4.solution.tail_angle_rad * kRadToDeg)
+  stage1.set("converged", e4.converged).set("message", e4.message);
+  setOperatingPoint(stage1, e4.solution)
       .set("residual_scaled_max", e4.scaled_residual_max)
       .set("residual_tolerance", study.trim.residual_tol)
       .set("evaluations", e4.evaluations);
@@ -271,12 +267,8 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
   JsonObject summary =
       summaryHeader(kind == PeriodicRunKind::kStability ? "stability" : "trim",
                     toString(s.status), s.message, s.wall_time_s);
-  summary.set("converged", s.converged)
-      .set("method", toString(TrimMethod::kPeriodic))
-      .set("freq_hz", s.solution.freq_hz)
-      .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
-      .set("speed_mps", s.solution.speed_mps)
-      .set("tail_angle_deg", s.solution.tail_angle_rad * kRadToDeg);
+  summary.set("converged", s.converged).set("method", toString(TrimMethod::kPeriodic));
+  setOperatingPoint(summary, s.solution);
   if (have_orbit) {
     summary.set("periodic_residual", sh.residual_max)
         .set("residual", JsonObject()

@@ -83,12 +83,8 @@ SimulationTrim trimForSimulation(const Study& study, ModalWingCache* modal_wings
   out.converged = t.converged;
   out.point = t.solution;
   out.message = t.message;
-  out.json.set("converged", t.converged)
-      .set("freq_hz", t.solution.freq_hz)
-      .set("theta_mean_deg", t.solution.theta_rad * kRadToDeg)
-      .set("speed_mps", t.solution.speed_mps)
-      .set("tail_angle_deg", t.solution.tail_angle_rad * kRadToDeg)
-      .set("message", t.message);
+  out.json.set("converged", t.converged);
+  setOperatingPoint(out.json, t.solution).set("message", t.message);
   return out;
 }
 

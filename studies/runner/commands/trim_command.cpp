@@ -143,11 +143,8 @@ std::string convergenceFigure(const Study& study, const TrimSummary& s, double t
 JsonObject stage1Object(const TrimSummary& s) {
   const OperatingPoint& p = s.refined_in_free_flight ? s.tethered_solution : s.solution;
   const TrimResidual& r = s.refined_in_free_flight ? s.tethered_residual : s.residual;
-  return JsonObject()
-      .set("freq_hz", p.freq_hz)
-      .set("theta_mean_deg", p.theta_rad * kRadToDeg)
-      .set("speed_mps", p.speed_mps)
-      .set("tail_angle_deg", p.tail_angle_rad * kRadToDeg)
+  JsonObject o;
+  return setOperatingPoint(o, p)
       .set("residual", JsonObject().set("FV_N", r.FV_N).set("FH_N", r.FH_N).set("M_Nm", r.M_Nm))
       .set("mean", cycleMeansJson(s.mean));
 }
@@ -197,11 +194,8 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
   std::vector<std::string> unknowns;
   for (TrimUnknown u : s.unknowns) unknowns.emplace_back(trimUnknownName(u));
   JsonObject summary = summaryHeader("trim", toString(s.status), s.message, s.wall_time_s);
-  summary.set("converged", s.converged)
-      .set("freq_hz", s.solution.freq_hz)
-      .set("theta_mean_deg", s.solution.theta_rad * kRadToDeg)
-      .set("speed_mps", s.solution.speed_mps)
-      .set("tail_angle_deg", s.solution.tail_angle_rad * kRadToDeg)
+  summary.set("converged", s.converged);
+  setOperatingPoint(summary, s.solution)
       .set("residual", JsonObject()
                            .set("FV_N", s.residual.FV_N)
                            .set("FH_N", s.residual.FH_N)
