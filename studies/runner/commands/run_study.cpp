@@ -53,37 +53,24 @@ int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
   if (!farmWriter() && !spreadsPoints(study.kind)) return 0;
   std::optional<Heartbeat> heartbeat;
   if (needsHeartbeat(study.kind)) heartbeat.emplace(std::string(toString(study.kind)));
+  // The kinds that spread points over threads take `jobs` in their run options.
+  auto withThreads = [jobs](auto opts) {
+    opts.threads = jobs;
+    return opts;
+  };
   switch (study.kind) {
-    case StudyKind::kSimulate:
-      return runSimulateStudy(study, out_dir);
-    case StudyKind::kAeromap: {
-      AeromapRunOptions opts;
-      opts.threads = jobs;
-      return runAeromapStudy(study, out_dir, opts);
-    }
-    case StudyKind::kModes:
-      return runModesStudy(study, out_dir);
-    case StudyKind::kTrim:
-      return runTrimStudy(study, out_dir);
-    case StudyKind::kCalibrate:
-      return runCalibrateStudy(study, out_dir);
-    case StudyKind::kSweep: {
-      SweepRunOptions opts;
-      opts.threads = jobs;
-      return runSweepStudy(study, out_dir, opts);
-    }
-    case StudyKind::kContinuation:
-      return runContinuationStudy(study, out_dir, jobs);
-    case StudyKind::kSensitivity: {
-      SensitivityRunOptions opts;
-      opts.threads = jobs;
-      return runSensitivityStudy(study, out_dir, opts);
-    }
-    case StudyKind::kOptimize: {
-      OptimizeRunOptions opts;
-      opts.threads = jobs;
-      return runOptimizeStudy(study, out_dir, opts);
-    }
+    case StudyKind::kSimulate: return runSimulateStudy(study, out_dir);
+    case StudyKind::kAeromap:
+      return runAeromapStudy(study, out_dir, withThreads(AeromapRunOptions{}));
+    case StudyKind::kModes: return runModesStudy(study, out_dir);
+    case StudyKind::kTrim: return runTrimStudy(study, out_dir);
+    case StudyKind::kCalibrate: return runCalibrateStudy(study, out_dir);
+    case StudyKind::kSweep: return runSweepStudy(study, out_dir, withThreads(SweepRunOptions{}));
+    case StudyKind::kContinuation: return runContinuationStudy(study, out_dir, jobs);
+    case StudyKind::kSensitivity:
+      return runSensitivityStudy(study, out_dir, withThreads(SensitivityRunOptions{}));
+    case StudyKind::kOptimize:
+      return runOptimizeStudy(study, out_dir, withThreads(OptimizeRunOptions{}));
   }
   throw std::logic_error("runStudyKind: a study kind without a runner");
 }
