@@ -102,12 +102,12 @@ void readWing(TableReader& top, VehicleModel& v) {
   wing.planform = w.requiredEnum("planform", kPlanforms);
   wing.semispan_m = w.requiredDouble(field("wing.semispan_m"));
   wing.root_chord_m = w.requiredDouble(field("wing.root_chord_m"));
-  wing.incidence_rad = w.optionalDouble(field("wing.incidence_deg"), 0.0) * kDeg;
+  if (auto d = w.maybeDouble(field("wing.incidence_deg"))) wing.incidence_rad = *d * kDeg;
   wing.strip_count = w.requiredInt(field("wing.strips"));
   wing.structure = w.optionalEnum("structure", StructureLevel::kRigid, kStructures);
   wing.p3_aft_of_le_m = w.optionalDouble(field("wing.p3_aft_of_le_m"), 0.5 * wing.root_chord_m);
   wing.member_diameter_scale =
-      w.optionalDouble(field("wing.member_diameter_scale"), 1.0);
+      w.optionalDouble(field("wing.member_diameter_scale"), wing.member_diameter_scale);
 
   TableReader skin = w.requiredTable("skin", {"material", "thickness_m", "pretension_N_per_m"});
   wing.skin.material = requireMaterial(skin, v.materials);
@@ -178,7 +178,7 @@ void readAero(TableReader& top, AeroParameters& a) {
   if (!r) return;
   a.model = r->optionalEnum("model", a.model, kAeroModels);
   a.lag = r->optionalEnum("circulation_lag", a.lag, kLags);
-  a.aspect_ratio = r->optionalDouble(field("aero.aspect_ratio"), 0.0);
+  a.aspect_ratio = r->optionalDouble(field("aero.aspect_ratio"), a.aspect_ratio);
   if (auto d = r->maybeDouble(field("aero.zero_lift_angle_deg"))) a.zero_lift_angle_rad = *d * kDeg;
   a.moment_coefficient_ac =
       r->optionalDouble(field("aero.moment_coefficient_ac"), a.moment_coefficient_ac);
@@ -303,8 +303,9 @@ VehicleDefinition parseVehicleTable(const toml::table& root, const ReadContext& 
   {
     TableReader k = top.requiredTable("kinematics", {"amplitude_deg", "hinge_x_m", "hinge_z_m"});
     v.flapping.amplitude_rad = k.requiredDouble(field("kinematics.amplitude_deg")) * kDeg;
-    v.flapping.hinge_x_B_m = k.optionalDouble(field("kinematics.hinge_x_m"), 0.0);
-    v.flapping.hinge_z_B_m = k.optionalDouble(field("kinematics.hinge_z_m"), 0.0);
+    FlappingKinematics& f = v.flapping;
+    f.hinge_x_B_m = k.optionalDouble(field("kinematics.hinge_x_m"), f.hinge_x_B_m);
+    f.hinge_z_B_m = k.optionalDouble(field("kinematics.hinge_z_m"), f.hinge_z_B_m);
     k.finish();
   }
 
@@ -314,7 +315,7 @@ VehicleDefinition parseVehicleTable(const toml::table& root, const ReadContext& 
     v.body.present = true;
     v.body.mass_kg = body->requiredDouble(field("body.mass_kg"));
     v.body.pitch_inertia_kgm2 = body->requiredDouble(field("body.pitch_inertia_kgm2"));
-    v.body.drag_area_m2 = body->optionalDouble(field("body.drag_area_m2"), 0.0);
+    v.body.drag_area_m2 = body->optionalDouble(field("body.drag_area_m2"), v.body.drag_area_m2);
     body->finish();
   }
 
@@ -329,11 +330,11 @@ VehicleDefinition parseVehicleTable(const toml::table& root, const ReadContext& 
     t.zero_lift_drag_coefficient =
         tail->requiredDouble(field("tail.zero_lift_drag_coefficient"));
     t.oswald_efficiency =
-        tail->optionalDouble(field("tail.oswald_efficiency"), 0.9);
+        tail->optionalDouble(field("tail.oswald_efficiency"), t.oswald_efficiency);
     t.arm_m = tail->requiredDouble(field("tail.arm_m"));
-    t.height_m = tail->optionalDouble(field("tail.height_m"), 0.0);
-    t.mass_kg = tail->optionalDouble(field("tail.mass_kg"), 0.0);
-    t.downwash_factor = tail->optionalDouble(field("tail.downwash_factor"), 0.0);
+    t.height_m = tail->optionalDouble(field("tail.height_m"), t.height_m);
+    t.mass_kg = tail->optionalDouble(field("tail.mass_kg"), t.mass_kg);
+    t.downwash_factor = tail->optionalDouble(field("tail.downwash_factor"), t.downwash_factor);
     tail->finish();
   }
 
@@ -344,7 +345,8 @@ VehicleDefinition parseVehicleTable(const toml::table& root, const ReadContext& 
     p.speed_mps = op.requiredDouble(field("operating_point.speed_mps"));
     p.freq_hz = op.requiredDouble(field("operating_point.freq_hz"));
     p.theta_rad = op.requiredDouble(field("operating_point.theta_deg")) * kDeg;
-    p.tail_angle_rad = op.optionalDouble(field("operating_point.tail_angle_deg"), 0.0) * kDeg;
+    if (auto d = op.maybeDouble(field("operating_point.tail_angle_deg")))
+      p.tail_angle_rad = *d * kDeg;
     op.finish();
   }
 
