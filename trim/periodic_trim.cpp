@@ -12,6 +12,7 @@
 #include "core/analysis/monodromy.hpp"
 #include "core/integrate/ode_integrator.hpp"
 #include "core/model/frames.hpp"
+#include "trim/trim_unknowns.hpp"
 
 namespace orni {
 
@@ -63,11 +64,9 @@ double orbitCheck(const FlightCoreModel& model, const std::vector<double>& x,
 std::string PeriodicTrimSummary::BriefReport() const {
   char buf[512];
   std::snprintf(buf, sizeof buf,
-                "%s: theta_mean %.4f deg, airspeed %.4f m/s, tail %.4f deg, f %.4f Hz; periodic "
-                "residual %.2e, %d Newton iterations, %ld period maps; %s; %.3f s",
-                toString(status), solution.theta_rad * kRadToDeg, solution.speed_mps,
-                solution.tail_angle_rad * kRadToDeg, solution.freq_hz, shooting.residual_max,
-                shooting.iterations, shooting.period_maps,
+                "%s: %s; periodic residual %.2e, %d Newton iterations, %ld period maps; %s; %.3f s",
+                toString(status), pointText(solution, "theta_mean", "airspeed").c_str(),
+                shooting.residual_max, shooting.iterations, shooting.period_maps,
                 floquet_valid ? floquet.BriefReport().c_str() : "no Floquet analysis",
                 wall_time_s);
   return buf;

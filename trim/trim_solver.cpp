@@ -16,6 +16,7 @@
 #include "core/model/cancellation.hpp"
 #include "core/model/frames.hpp"
 #include "trim/ceres_logging.hpp"
+#include "trim/trim_unknowns.hpp"
 
 namespace orni {
 
@@ -42,12 +43,6 @@ std::string valueText(TrimUnknown u, double si) {
   return buf;
 }
 
-std::string pointText(const OperatingPoint& p) {
-  char buf[160];
-  std::snprintf(buf, sizeof buf, "theta %.4f deg, U %.4f m/s, tail %.4f deg, f %.4f Hz",
-                p.theta_rad * kRadToDeg, p.speed_mps, p.tail_angle_rad * kRadToDeg, p.freq_hz);
-  return buf;
-}
 
 }  // namespace
 

@@ -1,5 +1,7 @@
 #include "trim/trim_unknowns.hpp"
 
+#include <cstdio>
+
 #include "core/model/frames.hpp"
 
 namespace orni {
@@ -53,6 +55,14 @@ void setUnknownValue(OperatingPoint* point, TrimUnknown u, double value_si) {
     case TrimUnknown::kTailAngle: point->tail_angle_rad = value_si; break;
     case TrimUnknown::kFreq: point->freq_hz = value_si; break;
   }
+}
+
+std::string pointText(const OperatingPoint& p, const char* theta_name, const char* speed_name) {
+  char buf[200];
+  std::snprintf(buf, sizeof buf, "%s %.4f deg, %s %.4f m/s, tail %.4f deg, f %.4f Hz", theta_name,
+                p.theta_rad * kRadToDeg, speed_name, p.speed_mps, p.tail_angle_rad * kRadToDeg,
+                p.freq_hz);
+  return buf;
 }
 
 }  // namespace orni

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "core/model/vehicle_model.hpp"
@@ -36,6 +37,12 @@ std::optional<TrimUnknown> parseTrimUnknown(std::string_view name);
 /// An unknown of an operating point, in SI (rad, m/s, Hz).
 double unknownValue(const OperatingPoint& point, TrimUnknown u);
 void setUnknownValue(OperatingPoint* point, TrimUnknown u, double value_si);
+
+/// "THETA 9.2000 deg, SPEED 10.8000 m/s, tail 11.8500 deg, f 12.0000 Hz" with the names the report
+/// gives theta and the speed ("theta" and "U" for Eq. 4's point, "theta_mean" and "airspeed" for
+/// an orbit's): the operating point of the solvers' one-line reports.
+std::string pointText(const OperatingPoint& p, const char* theta_name = "theta",
+                      const char* speed_name = "U");
 
 /// Closed interval of an unknown, SI.
 struct TrimBounds {
