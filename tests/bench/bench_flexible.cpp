@@ -115,23 +115,36 @@ void BM_TetheredEfwFlexible10CyclesHistories(benchmark::State& state) {
 }
 BENCHMARK(BM_TetheredEfwFlexible10CyclesHistories)->Unit(benchmark::kMillisecond);
 
+// The flexible tethered wing at the vehicle's operating point (nonlinear: the membrane wing) on a
+// state of the orbit: what the right-hand side and sample benchmarks evaluate.
+struct TetheredWingAtState {
+  FlightCoreModel model;
+  OperatingPoint op = efwFile().design_point;
+  FlexibleTetheredSystem sys;
+  std::vector<double> y;
+  explicit TetheredWingAtState(bool nonlinear)
+      : model(withNonlinearWing(nonlinear)),
+        sys(model, *model.flexible, tetheredBodyMotion(op.speed_mps, op.theta_rad),
+            ControlInput{op.freq_hz, op.tail_angle_rad}),
+        y(static_cast<std::size_t>(sys.stateCount())) {
+    sys.initialState(0.0, y.data());
+    for (int i = 0; i < 2 * model.flexible->mode_count; ++i) y[static_cast<std::size_t>(i)] = 1e-4;
+  }
+  static VehicleModel withNonlinearWing(bool nonlinear) {
+    VehicleModel v = efwFlexible();
+    v.wing.fe.nonlinear = nonlinear;
+    return v;
+  }
+};
+
 // One right-hand side of the flexible tethered wing (strip kinematics, MST-TD kernel, modal
-// loads, apparent mass and its LDL^T solve, resultant, quadratures) on a state of the orbit.
+// loads, apparent mass and its LDL^T solve, resultant, quadratures).
 void BM_FlexibleTetheredRhs(benchmark::State& state) {
-  VehicleModel v = efwFlexible();
-  v.wing.fe.nonlinear = state.range(0) != 0;
-  const FlightCoreModel model(v);
-  const OperatingPoint op = efwFile().design_point;
-  FlexibleTetheredSystem sys(model, *model.flexible,
-                             tetheredBodyMotion(op.speed_mps, op.theta_rad),
-                             ControlInput{op.freq_hz, op.tail_angle_rad});
-  std::vector<double> y(static_cast<std::size_t>(sys.stateCount()));
-  std::vector<double> ydot(y.size());
-  sys.initialState(0.0, y.data());
-  for (int i = 0; i < 2 * model.flexible->mode_count; ++i) y[static_cast<std::size_t>(i)] = 1e-4;
+  TetheredWingAtState w(state.range(0) != 0);
+  std::vector<double> ydot(w.y.size());
   double t = 0.0;
   for (auto _ : state) {
-    sys.rhs(t, y.data(), ydot.data());
+    w.sys.rhs(t, w.y.data(), ydot.data());
     benchmark::DoNotOptimize(ydot.data());
     t += 1e-5;
   }
@@ -141,20 +154,11 @@ BENCHMARK(BM_FlexibleTetheredRhs)->ArgName("nonlinear")->Arg(0)->Arg(1)->Unit(be
 // One history sample of that run (FlexibleTetheredSystem::sample: the right-hand side's loads plus
 // the inertial loads by the lumped sums, the separated area and the hinge power).
 void BM_FlexibleTetheredSample(benchmark::State& state) {
-  VehicleModel v = efwFlexible();
-  v.wing.fe.nonlinear = state.range(0) != 0;
-  const FlightCoreModel model(v);
-  const OperatingPoint op = efwFile().design_point;
-  FlexibleTetheredSystem sys(model, *model.flexible,
-                             tetheredBodyMotion(op.speed_mps, op.theta_rad),
-                             ControlInput{op.freq_hz, op.tail_angle_rad});
-  std::vector<double> y(static_cast<std::size_t>(sys.stateCount()));
-  sys.initialState(0.0, y.data());
-  for (int i = 0; i < 2 * model.flexible->mode_count; ++i) y[static_cast<std::size_t>(i)] = 1e-4;
+  TetheredWingAtState w(state.range(0) != 0);
   double t = 0.0;
   LoadSample s;
   for (auto _ : state) {
-    sys.sample(t, y.data(), &s);
+    w.sys.sample(t, w.y.data(), &s);
     benchmark::DoNotOptimize(s.FV_N);
     t += 1e-5;
   }
