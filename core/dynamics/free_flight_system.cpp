@@ -483,13 +483,15 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   const double theta = y[2], U = y[3], W = y[4], Q = y[5];
   // Aerodynamic loads of both wings about P1 in the flight-path frame, with the apparent-mass
   // force of the solved u' at each strip's mid-chord.
+  // Their power into the air is the right-hand side's (the power quadrature's integrand).
   Vec3 F = last_.F_aero_W, M = last_.M_aero_P2_W;
+  double power_one_wing_W = 0.0;
   if (switches_.aerodynamics) {
     apparentAccelerations();
     const FlapState flap =
         flapStateAt(md.core.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
     ws_.kin.resultant(ws_.data.batch, ws_.extra_force, ws_.extra_couple,
-                      flap.phi_dot_radps * Vec3::UnitX(), &F, &M, nullptr);
+                      flap.phi_dot_radps * Vec3::UnitX(), &F, &M, &power_one_wing_W);
   }
   const Vec3 F_B = last_.R_BW * F;
   const Vec3 M_P1_B = last_.R_BW * M + md.p_P1P2_B_m.cross(F_B);
@@ -500,6 +502,7 @@ void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out
   o.FH_wing_aero_N = 2.0 * F_B.dot(path.e_v_B);
   o.M_wing_aero_Nm = 2.0 * M_P1_B.y();
   o.separated_fraction = last_.separated_fraction;
+  o.power_aero_W = 2.0 * power_one_wing_W;
   o.FV_N = o.FV_wing_aero_N + o.FV_tail_N;
   o.FH_N = o.FH_wing_aero_N + o.FH_tail_N + o.FH_body_N;
   o.M_Nm = o.M_wing_aero_Nm + o.M_tail_Nm;

@@ -1239,7 +1239,7 @@ const std::vector<OutputSpec>& outputTable() {
     {"periodic_orbit.csv", "trim,stability", "phase", "-",
      "flap phase t/T, from 0 to 1"},
     {"periodic_orbit.csv", "trim,stability", "power_aero", "W",
-     "wings' aerodynamic power: never set in free-flight samples, so 0 in every row (cycle mean: mean.power_W)"},
+     "aerodynamic power both wings put into the air at the sample; its mean over the period is mean.power_W"},
     {"periodic_orbit.csv", "trim,stability", "t", "s",
      "time from the orbit start at flap phase 0; history_samples + 1 uniform rows, the last at T = 1/f"},
     {"periodic_orbit.csv", "trim,stability", "theta", "deg",
