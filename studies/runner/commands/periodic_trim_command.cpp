@@ -281,10 +281,10 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
   }
   summary.set("residual_source",
            "periodic_residual: max |x(T) - x(0)| of the orbit in state scales (and the altitude "
-           "gain in 0.1 m); residual: the orbit's cycle means of the fuselage loads (wings' "
-           "aerodynamic and inertial loads, tail, fuselage drag) in the flight-path frame minus "
-           "the weight, not driven to zero: they balance the mean of the fuselage's own "
-           "inertial load in that rotating frame")
+           "gain in 0.1 m); residual: the orbit's cycle means of the aerodynamic loads (both "
+           "wings with their apparent mass, tail, fuselage drag) in the flight-path frame minus "
+           "the weight, not driven to zero: they balance the mean of the vehicle's inertial "
+           "loads in that rotating frame")
       .set("floquet", floquetObject(s))
       .set("free_flight", freeFlightObject(s.free_flight))
       .set("orbit_start", start)
