@@ -401,9 +401,11 @@ CalibrationSummary calibrate(const VehicleModel& base, const CalibrationOptions&
   s.theta_error_deg = at_solution.residual[0];
   s.speed_error_mps = at_solution.residual[1] * 0.1;
   s.climb_angle_deg = at_solution.residual[2];
-  s.converged = ok && std::abs(s.theta_error_deg) <= options.tolerance &&
-                std::abs(s.speed_error_mps) <= options.tolerance &&
-                std::abs(s.climb_angle_deg) <= options.tolerance;
+  // Each residual within the tolerance in its own unit (deg, 0.1 m/s, deg), as the solver's stop
+  // test: the speed to 0.1 tolerance m/s (it was compared in m/s, 10 times looser than documented).
+  s.converged = ok && std::abs(at_solution.residual[0]) <= options.tolerance &&
+                std::abs(at_solution.residual[1]) <= options.tolerance &&
+                std::abs(at_solution.residual[2]) <= options.tolerance;
   char buf[400];
   std::snprintf(buf, sizeof buf,
                 "%s after %d iterations, %d settled free flights: theta error %.4f deg, speed "

@@ -48,6 +48,12 @@ TEST(TrimCalibration, RecoversTheCgPositionFromAPerturbedStart) {
   // settle: the CG then nears this vehicle's stability limit, about 25 mm behind the hinge.)
   EXPECT_NEAR(s.values[0], truth, 3e-4) << s.message << "\n" << s.ceres_report;
   EXPECT_FALSE(s.at_lower[0] || s.at_upper[0]);
+  // Converged means each residual within the tolerance in its unit: theta and climb in deg, the
+  // speed in 0.1 m/s (calibrate.tolerance 0.01 holds U to 1 mm/s).
+  ASSERT_TRUE(s.converged) << s.message;
+  EXPECT_LE(std::abs(s.theta_error_deg), o.tolerance);
+  EXPECT_LE(std::abs(s.speed_error_mps), 0.1 * o.tolerance);
+  EXPECT_LE(std::abs(s.climb_angle_deg), o.tolerance);
 
   // Conditioning: one value, so one singular value and B = J diag(range) / band a column; the
   // half-width the band allows is then range sum_j |B_j| / |B|^2 (the pseudo-inverse of a column).
