@@ -65,7 +65,7 @@ std::string startFromPeriodicState(const FlightCoreModel& model, const Operating
   t.stop_when_steady = true;
   t.record_history = true;
   // 32 samples per cycle integrate the periodic loads to well below the release's own first-order
-  // error; the flexible wing's loads are nodal sums over the mesh, so fewer samples are cheaper.
+  // error.
   t.samples_per_cycle = 32;
   TimeHistory hist;
   const SimulationSummary ts = simulateTethered(model, point, t, &hist);
