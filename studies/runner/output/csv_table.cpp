@@ -17,6 +17,31 @@ std::string csvTextCell(const std::string& text) {
   return q + "\"";
 }
 
+std::vector<std::string> csvLineCells(const std::string& line) {
+  std::vector<std::string> cells(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+        cells.back() += '"';
+        ++i;
+      } else if (c == '"') {
+        quoted = false;
+      } else {
+        cells.back() += c;
+      }
+    } else if (c == '"') {
+      quoted = true;
+    } else if (c == ',') {
+      cells.emplace_back();
+    } else if (c != '\r') {
+      cells.back() += c;
+    }
+  }
+  return cells;
+}
+
 void CsvTable::add(std::string name, std::string unit, std::vector<std::string> cells) {
   if (!columns_.empty() && cells.size() != columns_.front().size())
     throw std::logic_error("CsvTable: column '" + name + "' has a different length");

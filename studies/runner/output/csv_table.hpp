@@ -11,6 +11,10 @@ namespace orni::studies {
 /// std::logic_error for a newline.
 std::string csvTextCell(const std::string& text);
 
+/// The cells of one line of such a table (a names or units row), quotes resolved: the inverse of
+/// csvTextCell over a line; a trailing '\r' is dropped.
+std::vector<std::string> csvLineCells(const std::string& line);
+
 /// Column names and units are written like text cells (csvTextCell): quoted when they hold a
 /// comma or a double quote, std::logic_error for a newline.
 class CsvTable {

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "core/model/field_table.hpp"
+#include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_reader.hpp"
 
 namespace orni::studies {
@@ -74,32 +75,6 @@ std::vector<std::string_view> filesInOrder() {
   return files;
 }
 
-/// One CSV line's cells (RFC 4180 quoting).
-std::vector<std::string> csvCells(const std::string& line) {
-  std::vector<std::string> cells(1);
-  bool quoted = false;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    const char c = line[i];
-    if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-        cells.back() += '"';
-        ++i;
-      } else if (c == '"') {
-        quoted = false;
-      } else {
-        cells.back() += c;
-      }
-    } else if (c == '"') {
-      quoted = true;
-    } else if (c == ',') {
-      cells.emplace_back();
-    } else if (c != '\r') {
-      cells.back() += c;
-    }
-  }
-  return cells;
-}
-
 void checkOne(OutputCheck& check, const std::string& file, const std::string& path,
               const std::string* unit) {
   const OutputSpec* o = findOutput(file, path);
@@ -162,7 +137,8 @@ OutputCheck checkRunFolder(const std::string& run_dir) {
     std::string names_line, units_line;
     std::getline(f, names_line);
     std::getline(f, units_line);
-    const std::vector<std::string> names = csvCells(names_line), units = csvCells(units_line);
+    const std::vector<std::string> names = csvLineCells(names_line),
+                                   units = csvLineCells(units_line);
     const std::string file = csv.filename().string();
     for (std::size_t c = 0; c < names.size(); ++c) {
       ++check.csv_columns;

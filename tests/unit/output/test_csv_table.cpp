@@ -47,6 +47,14 @@ std::string shortestScientific(double v) {
   }
 }
 
+TEST(OutputCsvTable, LineCellsReadBackWhatTextCellsWrite) {
+  const std::vector<std::string> cells = {"plain", "a, b", "say \"hi\"", "", "N m"};
+  std::string line;
+  for (std::size_t i = 0; i < cells.size(); ++i) line += (i ? "," : "") + csvTextCell(cells[i]);
+  EXPECT_EQ(csvLineCells(line), cells);
+  EXPECT_EQ(csvLineCells(line + "\r"), cells);
+}
+
 TEST(OutputCsvTable, NamesRowUnitsRowThenValues) {
   CsvTable t;
   t.addColumn("speed_mps", "m/s", {8.0, 10.5});
