@@ -1,8 +1,11 @@
 // The condensed membrane (membrane_rom.hpp) on the literal EFW against the full nonlinear FE
 // solution (von_karman.hpp) of the same wing under the same load: a uniform 53 Pa upward on the
-// skin, about the rigid wing's mean lift per area at Table 3's point (2.3 N on 0.044 m^2).
-// Acceptance: deflections within 5 %, section pitch within 0.3 deg.
+// skin, about the rigid wing's mean lift per area at Table 3's point (2.3 N on 0.044 m^2), and a
+// lift growing along the span. Acceptance: deflections within 5 %, section pitch within 0.3 deg;
+// met on a taut skin, whose static equilibrium is unique; the slack skin has none to compare.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -48,71 +51,127 @@ Section section(const WingMesh& mesh, const Eigen::VectorXd& u, std::size_t stri
   return {lead, trail, -std::atan2(trail - lead, chord) * 180.0 / fe_test::kTestPi};
 }
 
-TEST(FeMembraneRomEfw, ReducedStaticMatchesTheFullNonlinearSolution) {
-  const VehicleModel v = testing::magpieVehicle();
-  const WingMesh mesh = buildWingMesh(v, v.wing.fe.element_size_m);
-  ModalWingOptions options = modalWingOptionsOf(v.wing.fe);
-  options.nonlinear = true;
-  const ModalWing mw = buildModalWing(v, mesh, options);
-  const Eigen::VectorXd load = liftLoad(mesh, kLiftPressure_Pa);
+// The literal EFW, its modal wing (24 modes, as the nonlinear vehicle files ask for), the full
+// nonlinear static solution and the reduced one under a load.
+struct StaticCase {
+  VehicleModel vehicle = testing::magpieVehicle();
+  WingMesh mesh;
+  ModalWingOptions options;
+  ModalWing modal_wing;
+  explicit StaticCase(double pretension_Npm, int modes = 24) {
+    vehicle.wing.skin.pretension_N_per_m = pretension_Npm;
+    mesh = buildWingMesh(vehicle, vehicle.wing.fe.element_size_m);
+    options = modalWingOptionsOf(vehicle.wing.fe);
+    options.nonlinear = true;
+    options.selection.max_modes = modes;
+    modal_wing = buildModalWing(vehicle, mesh, options);
+  }
+  NonlinearStaticResult full(const Eigen::VectorXd& load, int load_steps = 10) const {
+    NonlinearStaticOptions o;
+    o.load_steps = load_steps;
+    return solveWingStatic(vehicle, mesh, options.support, load, o);
+  }
+  // The reduced static solution with `load_steps` equal load increments (false: no convergence).
+  bool reduced(const Eigen::VectorXd& load, int load_steps, Eigen::VectorXd* u) const {
+    Eigen::VectorXd q;
+    if (!solveModalStatic(modal_wing.stiffnessDiagonal(), modal_wing.membrane,
+                          modal_wing.mode_shapes.transpose() * load, &q, load_steps))
+      return false;
+    *u = modal_wing.mode_shapes * q;
+    return true;
+  }
+  std::size_t tip() const { return mesh.strip_nodes.size() - 1; }
+  std::size_t mid() const { return mesh.strip_nodes.size() / 2; }
+};
 
-  NonlinearStaticOptions fe_options;
-  fe_options.load_steps = 10;
-  const NonlinearStaticResult full = solveWingStatic(v, mesh, options.support, load, fe_options);
-  ASSERT_TRUE(full.converged) << full.message;
-  NonlinearStaticOptions linear_options = fe_options;
-  linear_options.nonlinear = false;
-  const NonlinearStaticResult linear = solveWingStatic(v, mesh, options.support, load, linear_options);
+// Upward pressure growing linearly from the root to the tip (twice 53 Pa at the tip, 53 Pa at
+// mid-span): the flapping wing's lift grows along the span with the stroke velocity.
+Eigen::VectorXd spanwiseLiftLoad(const WingMesh& mesh, double mid_span_pressure_pa) {
+  double span = 0.0;
+  for (const Vec3& x : mesh.nodes_W_m) span = std::max(span, x.y());
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(kDofsPerNode * mesh.nodeCount());
+  for (const std::array<int, 3>& tri : mesh.triangles) {
+    const std::array<Vec3, 3> x = {mesh.nodes_W_m[static_cast<std::size_t>(tri[0])],
+                                   mesh.nodes_W_m[static_cast<std::size_t>(tri[1])],
+                                   mesh.nodes_W_m[static_cast<std::size_t>(tri[2])]};
+    for (std::size_t k = 0; k < 3; ++k)
+      f(globalDof(tri[k], kW)) -=
+          2.0 * mid_span_pressure_pa * x[k].y() / span * triangleArea(x) / 3.0;
+  }
+  return f;
+}
 
-  Eigen::VectorXd q;
-  ASSERT_TRUE(solveModalStatic(mw.stiffnessDiagonal(), mw.membrane,
-                               mw.mode_shapes.transpose() * load, &q, 10));
-  const Eigen::VectorXd u_rom = mw.mode_shapes * q;
+// A taut skin (100 N/m: a strain of 2.5e-5 in the 100 GPa, 0.04 mm skin, far less than any film
+// glued or shrunk onto a frame holds) has one static equilibrium, and the reduced wing finds it:
+// measured (2026-12-05) under 53 Pa uniform, full / 24 modes: tip LE 6.38 / 6.36 mm, mid-span TE
+// 4.02 / 3.99 mm, mid-span pitch -1.07 / -1.06 deg, tip pitch 0.69 / 0.75 deg; converging with
+// the mode count (mid-span TE 3.89 / 3.99 / 4.01 mm with 12 / 24 / 48 modes); the same full
+// solution with 10 or 40 load increments and with either member ordering (the members'
+// in-plane rotation, worth 24 % at mid-span for the slack skin, is nothing here). Under the
+// spanwise-growing load: tip LE 8.48 / 8.46, mid-span TE 4.36 / 4.35 mm; at 106 Pa uniform the
+// 24 modes stay within 2.3 % and 0.24 deg.
+TEST(FeMembraneRomEfw, TautSkinReducedStaticMatchesTheFullNonlinearSolution) {
+  const StaticCase c(100.0);
+  const struct {
+    const char* name;
+    Eigen::VectorXd load;
+  } loads[] = {{"uniform 53 Pa", liftLoad(c.mesh, kLiftPressure_Pa)},
+               {"spanwise, 53 Pa at mid-span", spanwiseLiftLoad(c.mesh, kLiftPressure_Pa)}};
+  for (const auto& l : loads) {
+    const NonlinearStaticResult full = c.full(l.load);
+    ASSERT_TRUE(full.converged) << full.message;
+    NonlinearStaticOptions linear_options;
+    linear_options.nonlinear = false;
+    const NonlinearStaticResult linear =
+        solveWingStatic(c.vehicle, c.mesh, c.options.support, l.load, linear_options);
+    Eigen::VectorXd u_rom;
+    ASSERT_TRUE(c.reduced(l.load, 10, &u_rom));
+    for (const std::size_t strip : {c.tip(), c.mid()}) {
+      const Section f = section(c.mesh, full.displacement, strip);
+      const Section r = section(c.mesh, u_rom, strip);
+      const Section lin = section(c.mesh, linear.displacement, strip);
+      std::printf("EFW, skin 100 N/m, %s, strip %zu: LE up %.2f mm (ROM %.2f, linear %.2f), TE up "
+                  "%.2f mm (ROM %.2f, linear %.2f), pitch %.2f deg (ROM %.2f, linear %.2f)\n",
+                  l.name, strip, 1e3 * f.lead_up_m, 1e3 * r.lead_up_m, 1e3 * lin.lead_up_m,
+                  1e3 * f.trail_up_m, 1e3 * r.trail_up_m, 1e3 * lin.trail_up_m, f.pitch_deg,
+                  r.pitch_deg, lin.pitch_deg);
+      EXPECT_NEAR(r.lead_up_m / f.lead_up_m, 1.0, kDeflectionTol) << l.name << ", strip " << strip;
+      EXPECT_NEAR(r.trail_up_m / f.trail_up_m, 1.0, kDeflectionTol) << l.name << ", strip " << strip;
+      EXPECT_NEAR(r.pitch_deg, f.pitch_deg, kPitchTol_deg) << l.name << ", strip " << strip;
+    }
+  }
+}
 
-  const std::size_t tip = mesh.strip_nodes.size() - 1, mid = mesh.strip_nodes.size() / 2;
-  const Section full_tip = section(mesh, full.displacement, tip);
-  const Section full_mid = section(mesh, full.displacement, mid);
-  const Section rom_tip = section(mesh, u_rom, tip);
-  const Section rom_mid = section(mesh, u_rom, mid);
-  const Section lin_mid = section(mesh, linear.displacement, mid);
-  const Section lin_tip = section(mesh, linear.displacement, tip);
-  ::testing::Test::RecordProperty("full_tip_le_mm", std::to_string(1e3 * full_tip.lead_up_m));
-  ::testing::Test::RecordProperty("full_mid_te_mm", std::to_string(1e3 * full_mid.trail_up_m));
-  ::testing::Test::RecordProperty("full_mid_pitch_deg", std::to_string(full_mid.pitch_deg));
-  ::testing::Test::RecordProperty("rom_tip_le_mm", std::to_string(1e3 * rom_tip.lead_up_m));
-  ::testing::Test::RecordProperty("rom_mid_te_mm", std::to_string(1e3 * rom_mid.trail_up_m));
-  ::testing::Test::RecordProperty("rom_mid_pitch_deg", std::to_string(rom_mid.pitch_deg));
-  ::testing::Test::RecordProperty("linear_tip_le_mm", std::to_string(1e3 * lin_tip.lead_up_m));
-  ::testing::Test::RecordProperty("linear_mid_te_mm", std::to_string(1e3 * lin_mid.trail_up_m));
-  ::testing::Test::RecordProperty("linear_mid_pitch_deg", std::to_string(lin_mid.pitch_deg));
-  std::printf("EFW at %.0f Pa: tip LE up %.2f mm (ROM %.2f, linear %.2f); mid-span TE up %.2f mm "
-              "(ROM %.2f, linear %.2f); mid-span pitch %.2f deg (ROM %.2f, linear %.2f)\n",
-              kLiftPressure_Pa, 1e3 * full_tip.lead_up_m, 1e3 * rom_tip.lead_up_m,
-              1e3 * lin_tip.lead_up_m, 1e3 * full_mid.trail_up_m, 1e3 * rom_mid.trail_up_m,
-              1e3 * lin_mid.trail_up_m, full_mid.pitch_deg, rom_mid.pitch_deg, lin_mid.pitch_deg);
-
-  // Mid-span (where the lift is): the tolerances hold (measured: TE 29.6 mm against
-  // 29.3 mm, pitch -15.64 deg against -15.39 deg), but by a cancellation of two errors of the
-  // ROM, measured (2026-12-05) and not yet removed:
-  //  - the basis: the 24 linear modes do not converge the von Karman solution. Against the full
-  //    model in von Karman's ordering (MemberStretch::kOutOfPlaneOnly, which the condensation
-  //    reproduces exactly: CondensationIsExactForVonKarmansOrdering), whose solution has its
-  //    mid-span TE at 36.2 mm, tip LE 19.1 mm and total potential -11.9 mJ, the ROM's potential
-  //    is -5.7 / -8.9 / -7.2 / -10.8 mJ with 12 / 24 / 36 / 48 modes (36: Newton from the load
-  //    increments stops on a higher equilibrium) and its mid-span TE 12.1 / 29.6 / 17.7 / 38.0 mm;
-  //  - the members' in-plane rotation, which the default full model charges at E A and the
-  //    condensation cannot (it is not quadratic in the relaxation): worth 36.2 -> 29.3 mm at the
-  //    mid-span TE of the full solution.
-  EXPECT_NEAR(rom_mid.trail_up_m / full_mid.trail_up_m, 1.0, kDeflectionTol);
-  EXPECT_NEAR(rom_mid.pitch_deg, full_mid.pitch_deg, kPitchTol_deg);
-  // The tip does not meet them: the reduced wing is softer there (measured: LE 23.5 mm against
-  // 17.3 mm, pitch -4.7 deg against -12.8 deg), for the two reasons above. Bounded here so that
-  // it cannot grow unnoticed.
-  EXPECT_NEAR(rom_tip.lead_up_m / full_tip.lead_up_m, 1.0, 0.45);
-  // The point of the exercise: the stretched skin holds the chord far better than the linear
-  // plate (docs/theory.md 4.7: ~15 mm and more at mid-span).
-  EXPECT_LT(std::abs(full_mid.trail_up_m - full_mid.lead_up_m),
-            0.5 * std::abs(lin_mid.trail_up_m - lin_mid.lead_up_m));
+// The slack skin (no pretension, the vehicle files' default) has no unique static equilibrium
+// under this load: the compressed regions of a 0.04 mm skin wrinkle, and which wrinkled state a
+// solution reaches depends on how the load is applied. Measured (2026-12-05) on the full model:
+// 10 / 40 load increments give mid-span TE 29.25 / 30.86 mm, tip LE 17.28 / 18.33 mm, potentials
+// -10.64 / -11.07 mJ (in von Karman's member ordering 36.19 / 34.02 mm, -11.89 / -11.49 mJ);
+// a first-order pretension of 10 / 30 / 100 N/m takes the mid-span TE to 15.8 / 8.5 / 4.0 mm. The
+// reduced wing's equilibria spread far more: mid-span TE 29.6 mm with 10 equal increments, 15.6 mm
+// with 60 (the 10-increment path jumps to another branch). So a comparison at 5 % means nothing for
+// the slack skin, and the reduced slack wing is not validated: its close mid-span agreement with 10
+// increments was one branch matching another. Enrichment of the 24 modes with static shapes of the
+// skin tensioned to 300, 3000 and 30000 N/m under lift, flap-inertia and pitching loads (Ritz
+// vectors, tried 2026-12-05) did not remove the spread. Held here so the finding stays measured.
+TEST(FeMembraneRomEfw, SlackSkinReducedStaticDependsOnTheLoadPath) {
+  const StaticCase c(0.0);
+  const Eigen::VectorXd load = liftLoad(c.mesh, kLiftPressure_Pa);
+  Eigen::VectorXd coarse, fine;
+  ASSERT_TRUE(c.reduced(load, 10, &coarse));
+  ASSERT_TRUE(c.reduced(load, 60, &fine));
+  const Section a = section(c.mesh, coarse, c.mid()), b = section(c.mesh, fine, c.mid());
+  std::printf("EFW, slack skin, 53 Pa, 24 modes: mid-span TE up %.2f mm (10 increments), %.2f mm "
+              "(60 increments)\n", 1e3 * a.trail_up_m, 1e3 * b.trail_up_m);
+  ::testing::Test::RecordProperty("slack_rom_mid_te_mm_10_steps", std::to_string(1e3 * a.trail_up_m));
+  ::testing::Test::RecordProperty("slack_rom_mid_te_mm_60_steps", std::to_string(1e3 * b.trail_up_m));
+  // Two equilibria further apart than the acceptance tolerance (measured a ratio of 1.9).
+  EXPECT_GT(a.trail_up_m / b.trail_up_m, 1.0 + 4.0 * kDeflectionTol);
+  // The pretension's effect: the taut skin's reduced mid-span TE (4.0 mm) is a fraction of either.
+  const StaticCase taut(100.0);
+  Eigen::VectorXd u_taut;
+  ASSERT_TRUE(taut.reduced(load, 10, &u_taut));
+  EXPECT_LT(section(taut.mesh, u_taut, taut.mid()).trail_up_m, 0.5 * b.trail_up_m);
 }
 
 
