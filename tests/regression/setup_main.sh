@@ -41,17 +41,21 @@ check "... naming the fit a fit" grep -q 'calibrated (fit)' "$scratch/out.txt"
 check "... and claiming no reproduction" bash -c "! grep -qi 'reproduced' '$scratch/out.txt'"
 # The regression on the published point (issue 26): the vehicle calibrated to Table 3 (a fit, no
 # prediction) trims at 12 Hz within (0.5 deg, 0.3 m/s, 0.5 deg) of Table 3 (9.2 deg, 10.8 m/s,
-# 11.85 deg), and both from its trim (the check's horizon covering three periods of the release's
-# 4.2-s phugoid, trim/free_flight_check.hpp) and released at Table 3's point it flies bounded
-# (Eq. 5).
+# 11.85 deg), and released at Table 3's point it flies bounded (Eq. 5). The Eq. 5 check released
+# at its trim (the horizon covering three periods of the release's 4.2-s phugoid,
+# trim/free_flight_check.hpp) reaches a verdict, but which one depends on round-off: the calibrated
+# vehicle flies the slack membrane skin, whose response is not unique (results/README.md), and the
+# same code gave a largest scaled deviation of 0.80 (bounded) on one machine and 1.49 (unbounded)
+# on another (2026-12-05). The verdict is compared with the committed one above; here only that it
+# was reached.
 t3="$scratch/main-run/table3_trim/summary.json"
 check "table3_trim converged" test "$(json "$t3" status)" = ok
 th=$(json "$t3" theta_mean_deg); u=$(json "$t3" speed_mps); ta=$(json "$t3" tail_angle_deg)
 check "table3_trim theta $th = 9.2 +- 0.5 deg" awk_true "($th - 9.2) ^ 2 <= 0.25"
 check "table3_trim U $u = 10.8 +- 0.3 m/s" awk_true "($u - 10.8) ^ 2 <= 0.09"
 check "table3_trim tail $ta = 11.85 +- 0.5 deg" awk_true "($ta - 11.85) ^ 2 <= 0.25"
-check "table3_trim's free flight (Eq. 5) bounded" \
-  grep -q '"status": "bounded"' <(sed -n '/"free_flight": {/,/}/p' "$t3")
+check "table3_trim's free flight (Eq. 5) reached a verdict" \
+  grep -Eq '"status": "(bounded|unbounded)"' <(sed -n '/"free_flight": {/,/}/p' "$t3")
 check "the calibrated vehicle released at Table 3's point flies bounded" \
   grep -q '"bounded": true' "$scratch/main-run/fig6_8_free_flight_table3/summary.json"
 for r in fig2_rfw_theta0 fig2_rfw_theta20 table3_trim trim_magpie fig6_8_free_flight \
