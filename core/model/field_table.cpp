@@ -132,9 +132,11 @@ std::vector<FieldSpec> makeTable() {
              "skin thickness"),
       // 0 (a slack film) to 2000 N/m: 50 MPa in the 0.04 mm skin, half the yield stress of
       // polyester film (~100 MPa); hand-stretched or heat-shrunk ornithopter films carry
-      // 10-200 N/m (1-5 MPa in 20-50 um film).
+      // 10-200 N/m (1-5 MPa in 20-50 um film). The physical check is the frame's: the film
+      // shrunk onto it must not buckle the wing (core/structure/skin_pretension.hpp; the magpie's
+      // frame holds up to 41 N/m), checked when the wing is built.
       number("wing.skin.pretension_N_per_m", "N/m", 1.0, R::closed(0.0, 2000.0), "0",
-             "isotropic membrane pretension of the skin"),
+             "isotropic tension of the skin film as laid; shrunk onto the frame it keeps what the frame holds (refused where it buckles the wing)"),
       table("wing.members", "none", "[[wing.members]]: straight solid circular rods"),
       text("wing.members[].name", "required", "member name (unique)"),
       text("wing.members[].material", "required", "material of the rod", "a [materials.NAME] name"),

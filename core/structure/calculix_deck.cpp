@@ -165,12 +165,15 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
   };
   const CalculixStaticOptions& st = options.static_steps;
   const bool has_static = !st.load_factors.empty();
+  const bool shrink = has_static && st.skin_shrink_strain != 0.0;
   if (!options.frequency_step && !has_static)
     throw std::invalid_argument("calculixDeck: no step (neither the frequency step nor a static one)");
   if (has_static) {
     for (double f : st.load_factors)
       if (!std::isfinite(f))
         throw std::invalid_argument("calculixDeck: a static load factor is not finite");
+    if (!std::isfinite(st.skin_shrink_strain))
+      throw std::invalid_argument("calculixDeck: the skin shrink strain is not finite");
     if (!(st.min_increment > 0.0 && st.min_increment <= st.initial_increment &&
           st.initial_increment <= st.max_increment && st.max_increment <= 1.0) ||
         st.max_increments < 1)
@@ -355,6 +358,7 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
         << "\n"
         << "*DENSITY\n"
         << real(skin_mat->density_kgpm3 * kTpmm3PerKgpm3) << "\n"
+        << (shrink ? "*EXPANSION\n1.\n" : "")
         << "*SHELL SECTION, ELSET=SKIN, MATERIAL=" << skin_material << "\n"
         << real(wing_structure.wing.skin.thickness_m * kMmPerM) << "\n";
 
@@ -421,6 +425,7 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
   }
   if (options.root_edge_pinned) out << "ROOT, 1, 3\n";
   if (!clamped.empty()) out << "CLAMPED, 1, 6\n";
+  if (shrink) out << "*INITIAL CONDITIONS, TYPE=TEMPERATURE\nNALL, 0.\n";
   if (options.frequency_step) {
     out << "*STEP\n*FREQUENCY\n" << options.mode_count << "\n";
     if (options.node_file) out << "*NODE FILE\nU\n";
@@ -446,6 +451,7 @@ std::string calculixDeck(const WingStructure& wing_structure, const WingMesh& me
         for (std::size_t d = 0; d < 6; ++d)
           if (f[d] != 0.0) out << id + 1 << ", " << d + 1 << ", " << real(factor * f[d]) << "\n";
     }
+    if (shrink) out << "*TEMPERATURE\nNALL, " << real(-st.skin_shrink_strain) << "\n";
     out << "*NODE PRINT, NSET=NPRINT\nU\n";
     if (st.node_file) out << "*NODE FILE\nU\n";
     out << "*END STEP\n";

@@ -75,6 +75,10 @@ struct CalculixStaticOptions {
   std::vector<int> print_nodes;
   bool node_file = false;  ///< also *NODE FILE U (JOB.frd, for cgx)
   CalculixStaticLoad load;
+  /// The skin's isotropic shrink strain s (skinShrinkStrain, skin_pretension.hpp), or 0: the
+  /// skin material gets *EXPANSION 1, every node starts at temperature 0 and is at -s in every
+  /// static step (the first ramps it in), so CalculiX finds the shrunk film's prestress as we do.
+  double skin_shrink_strain = 0.0;
 };
 
 struct CalculixDeckOptions {

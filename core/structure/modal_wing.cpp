@@ -7,6 +7,7 @@
 
 #include "core/structure/craig_bampton.hpp"
 #include "core/structure/dof_partition.hpp"
+#include "core/structure/skin_pretension.hpp"
 #include "core/model/invalid_model_error.hpp"
 
 namespace orni::structure {
@@ -93,7 +94,7 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
   WingFeModel fe = assembleWingFe(wing_structure, mesh, fe_options);
   // A pretensioned skin is a prestressed structure: its modes and every static solution use
   // K + K_G(N0) (docs/theory.md 4.6, 4.7).
-  addSkinPretension(wing_structure, mesh, &fe);
+  addSkinPretension(wing_structure, mesh, options.support, &fe);
   const DofPartition part = makeDofPartition(
       fe.active, wingBoundaryDofs(mesh, options.support), options.free_boundary_dofs);
   if (part.interior.empty()) throw std::invalid_argument("buildModalWing: no interior DOF");

@@ -11,6 +11,7 @@
 #include "core/structure/beam_element.hpp"
 #include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/shell_element.hpp"
+#include "core/structure/skin_pretension.hpp"
 
 namespace orni::structure {
 namespace {
@@ -360,32 +361,11 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
   return res;
 }
 
-SparseMatrix skinPretensionStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
-                                     double pretension_Npm) {
-  const int n = kDofsPerNode * mesh.nodeCount();
-  if (pretension_Npm == 0.0 || mesh.triangles.empty()) return SparseMatrix(n, n);
-  ElementStresses s;
-  s.beam_axial_force_N.setZero(static_cast<Eigen::Index>(mesh.beams.size()), 1);
-  s.skin_membrane_force_Npm.setZero(3 * static_cast<Eigen::Index>(mesh.triangles.size()), 1);
-  for (Eigen::Index f = 0; f < static_cast<Eigen::Index>(mesh.triangles.size()); ++f) {
-    s.skin_membrane_force_Npm(3 * f, 0) = pretension_Npm;
-    s.skin_membrane_force_Npm(3 * f + 1, 0) = pretension_Npm;
-  }
-  return assembleGeometricStiffness(wing_structure, mesh, s, 0);
-}
-
-void addSkinPretension(const WingStructure& wing_structure, const WingMesh& mesh,
-                       WingFeModel* fe) {
-  const double n0 = wing_structure.wing.skin.pretension_N_per_m;
-  if (n0 == 0.0) return;
-  fe->stiffness += skinPretensionStiffness(wing_structure, mesh, n0);
-}
-
 NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const WingMesh& mesh,
                                       const WingSupport& support, const Eigen::VectorXd& load,
                                       const NonlinearStaticOptions& options) {
   WingFeModel fe = assembleWingFe(wing_structure, mesh);
-  addSkinPretension(wing_structure, mesh, &fe);
+  addSkinPretension(wing_structure, mesh, support, &fe);
   const DofPartition part = makeDofPartition(fe.active, wingBoundaryDofs(mesh, support));
   const VonKarmanTerms terms(wing_structure, mesh);
   return solveNonlinearStatic(fe.stiffness, terms, part, load, options);

@@ -121,21 +121,11 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
                                            const Eigen::VectorXd& load,
                                            const NonlinearStaticOptions& options = {});
 
-/// The whole static chain for a wing: assembly (with the skin pretension of wing.skin), the
+/// The whole static chain for a wing: assembly (with the skin pretension of wing.skin,
+/// skin_pretension.hpp), the
 /// support of wing.fe, the terms, the solve.
 NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const WingMesh& mesh,
                                       const WingSupport& support, const Eigen::VectorXd& load,
                                       const NonlinearStaticOptions& options = {});
-
-/// The geometric stiffness of a uniform isotropic skin pretension N0 (N/m) over every facet
-/// (docs/theory.md 4.6's membrane-stress plate matrix with N_xx = N_yy = N0, N_xy = 0), 6n x 6n.
-/// Zero matrix for N0 = 0.
-SparseMatrix skinPretensionStiffness(const WingStructure& wing_structure, const WingMesh& mesh,
-                                     double pretension_Npm);
-
-/// K of the wing with the pretension of wing.skin added (the stiffness every static and modal
-/// analysis of the wing uses).
-void addSkinPretension(const WingStructure& wing_structure, const WingMesh& mesh,
-                       WingFeModel* fe);
 
 }  // namespace orni::structure

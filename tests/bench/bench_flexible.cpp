@@ -9,7 +9,6 @@
 //   BM_TetheredEfwFlexible10Cycles: 10 flapping cycles at the vehicle's operating point, MST-TD;
 //     modes as above; nonlinear:0 the linear wing (the default), 1 the nonlinear. Target:
 //     nonlinear within 2x the linear.
-//   BM_TetheredEfwTautSkin10Cycles: the same on a taut skin (100 N/m), linear and nonlinear.
 //   BM_TetheredEfwFlexible10CyclesHistories: the linear run recorded at 100 samples a cycle;
 //     target: at most 20 % over the run without histories.
 //   BM_FlexibleTetheredRhs: one right-hand side of that run; BM_FlexibleTetheredSample: one
@@ -99,29 +98,6 @@ BENCHMARK(BM_TetheredEfwFlexible10Cycles)
 // (test_fe_membrane_efw.cpp) and the linear prestressed wing flaps within 1.1 % of it
 // (docs/theory.md 4.7): nonlinear 0 / 1, the vehicle's 24 modes. The nonlinear wing's cost is the
 // price of that 1 %.
-void BM_TetheredEfwTautSkin10Cycles(benchmark::State& state) {
-  VehicleModel v = efwFlexible();
-  v.wing.skin.pretension_N_per_m = 100.0;
-  v.wing.fe.nonlinear = state.range(0) != 0;
-  const FlightCoreModel model(v);
-  const OperatingPoint point = efwFile().design_point;
-  SimulationOptions opts;
-  opts.cycles = 10;
-  opts.record_history = false;
-  long evals = 0;
-  for (auto _ : state) {
-    const SimulationSummary s = simulateTethered(model, point, opts, nullptr);
-    benchmark::DoNotOptimize(s.mean.FV_N);
-    evals = s.rhs_evaluations;
-  }
-  state.counters["rhs_evals"] = static_cast<double>(evals);
-}
-BENCHMARK(BM_TetheredEfwTautSkin10Cycles)
-    ->ArgName("nonlinear")
-    ->Arg(0)
-    ->Arg(1)
-    ->Unit(benchmark::kMillisecond);
-
 // The same 10 cycles (linear wing, the vehicle's modes) recorded at 100 samples a cycle into a
 // TimeHistory, as the CLI and the Python module run them: the cost of the histories is the
 // difference to BM_TetheredEfwFlexible10Cycles/explicit:0/modes:0/nonlinear:0 (target <= 20 %).

@@ -12,7 +12,7 @@ set bmargin at screen 0.22
 set rmargin at screen 0.88
 set xrange [0.5:14.5]
 set yrange [0.5:9.5]
-set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (4.17 m/s)" 2, "tail_angle_deg (9.317 deg)" 3, "hinge_power_W (0.06462 W)" 4, "pitch_swing_deg (7.184 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5492 m)" 7, "norm_ratio_max (1.579)" 8, "CF_V_min (0.01902)" 9, "CF_V_max (0.2587)" 10, "CF_H_min (0.04267)" 11, "CF_H_max (0.04545)" 12, "CM_CG_min (0.05666)" 13, "CM_CG_max (0.04527)" 14) rotate by 40 right noenhanced font ',9'
+set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (4.17 m/s)" 2, "tail_angle_deg (9.317 deg)" 3, "hinge_power_W (0.261 W)" 4, "pitch_swing_deg (7.184 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5492 m)" 7, "norm_ratio_max (1.579)" 8, "CF_V_min (0.01902)" 9, "CF_V_max (0.2586)" 10, "CF_H_min (0.04267)" 11, "CF_H_max (0.04545)" 12, "CM_CG_min (0.05666)" 13, "CM_CG_max (0.04527)" 14) rotate by 40 right noenhanced font ',9'
 set ytics ("body.pitch_inertia_kgm2" 9, "kinematics.hinge_x_m" 8, "body.drag_area_m2" 7, "materials.LE1.youngs_modulus_gpa" 6, "materials.CFRP_ROD.youngs_modulus_gpa" 5, "wing.p3_aft_of_le_m" 4, "aero.suction_efficiency" 3, "wing.skin.pretension_N_per_m" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
 unset grid
 unset key
@@ -34,7 +34,7 @@ set bmargin at screen 0.22
 set rmargin at screen 0.88
 set xrange [0.5:14.5]
 set yrange [0.5:9.5]
-set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (4.17 m/s)" 2, "tail_angle_deg (9.317 deg)" 3, "hinge_power_W (0.06462 W)" 4, "pitch_swing_deg (7.184 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5492 m)" 7, "norm_ratio_max (1.579)" 8, "CF_V_min (0.01902)" 9, "CF_V_max (0.2587)" 10, "CF_H_min (0.04267)" 11, "CF_H_max (0.04545)" 12, "CM_CG_min (0.05666)" 13, "CM_CG_max (0.04527)" 14) rotate by 40 right noenhanced font ',9'
+set xtics ("theta_mean_deg (3.681 deg)" 1, "speed_mps (4.17 m/s)" 2, "tail_angle_deg (9.317 deg)" 3, "hinge_power_W (0.261 W)" 4, "pitch_swing_deg (7.184 deg)" 5, "altitude_p2p_m (0.002577 m)" 6, "altitude_p2p_slow_m (0.5492 m)" 7, "norm_ratio_max (1.579)" 8, "CF_V_min (0.01902)" 9, "CF_V_max (0.2586)" 10, "CF_H_min (0.04267)" 11, "CF_H_max (0.04545)" 12, "CM_CG_min (0.05666)" 13, "CM_CG_max (0.04527)" 14) rotate by 40 right noenhanced font ',9'
 set ytics ("body.pitch_inertia_kgm2" 9, "kinematics.hinge_x_m" 8, "body.drag_area_m2" 7, "materials.LE1.youngs_modulus_gpa" 6, "materials.CFRP_ROD.youngs_modulus_gpa" 5, "wing.p3_aft_of_le_m" 4, "aero.suction_efficiency" 3, "wing.skin.pretension_N_per_m" 2, "wing.fe.damping_ratio" 1) noenhanced font ',9'
 unset grid
 unset key

@@ -11,7 +11,7 @@ set xlabel "change of CM_CG_min from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
 set rmargin at screen 0.96
 set yrange [0.4:9.6]
-set ytics ("aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 3, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
+set ytics ("aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "wing.skin.pretension_N_per_m: 0 .. 30 N/m (base 0)" 7, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 6, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 5, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 4, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 3, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 2, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 1) noenhanced font ',9'
 set grid noytics
 set offsets graph 0.18, graph 0.18, 0, 0
 set style fill solid 0.85 border rgb '#333333'
@@ -36,7 +36,7 @@ set xlabel "change of CM_CG_min from the base vehicle's value" noenhanced
 set lmargin at screen 0.40
 set rmargin at screen 0.96
 set yrange [0.4:9.6]
-set ytics ("aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 7, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 6, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 5, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 4, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 3, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 2, "wing.skin.pretension_N_per_m: 0 .. 200 N/m (base 0)\nno value at high: see sensitivity.csv" 1) noenhanced font ',9'
+set ytics ("aero.suction_efficiency: 0.3 .. 1 (base 0.98)" 9, "kinematics.hinge_x_m: 0.01 .. 0.042 m (base 0.015)" 8, "wing.skin.pretension_N_per_m: 0 .. 30 N/m (base 0)" 7, "body.pitch_inertia_kgm2: 4e-05 .. 0.00032 kg m^2 (base 0.00017)" 6, "wing.fe.damping_ratio: 0.005 .. 0.05 (base 0.015)" 5, "body.drag_area_m2: 0 .. 0.001 m^2 (base 4e-04)\nno value at low: see sensitivity.csv" 4, "wing.p3_aft_of_le_m: 0.026 .. 0.078 m (base 0.052)\nno value at low: see sensitivity.csv" 3, "materials.CFRP_ROD.youngs_modulus_gpa: 100 .. 400 GPa (base 175)\nno value at low: see sensitivity.csv" 2, "materials.LE1.youngs_modulus_gpa: 100 .. 400 GPa (base 250)\nno value at low: see sensitivity.csv" 1) noenhanced font ',9'
 set grid noytics
 set offsets graph 0.18, graph 0.18, 0, 0
 set style fill solid 0.85 border rgb '#333333'

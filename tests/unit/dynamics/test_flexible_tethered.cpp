@@ -271,15 +271,13 @@ TEST(DynamicsFlexibleTethered, NonlinearWingHingeWorkEqualsAeroWorkPlusDamping) 
 }
 
 
-// A taut skin makes the geometric nonlinearity a small correction: with a pretension of 100 N/m
-// (a strain of 2.5e-5 in the 100 GPa, 0.04 mm skin) the skin's stress stiffness carries the
-// aerodynamic pressure, and the linear prestressed wing flaps as the nonlinear one does; the
-// slack skin (no pretension) has no stress to start from, and there the stretching is everything.
-// Measured (2026-12-05), efw_magpie_table3 at Table 3's point, 5 mm mesh, 24 modes, tethered 10
-// cycles, mean FV linear / nonlinear: 0.20 / 1.18 N slack, 1.12 / 1.37 N at 10 N/m, 1.35 / 1.43 N
-// at 30, 1.487 / 1.504 N at 100, 1.533 / 1.538 N at 300 (mean aerodynamic power 16.50 / 16.48 W at 100
-// N/m). Here on the coarse test wing (10 mm, 6 modes) of the honest magpie.
-TEST(DynamicsFlexibleTethered, TautSkinLinearWingFlapsAsTheNonlinearWing) {
+// The linear wing is not valid for this skin at any pretension the frame can hold. Before
+// 2026-12-06 a uniform 100 N/m pretension made the linear prestressed wing flap as the nonlinear
+// one (mean FV 1.487 / 1.504 N at Table 3's point, 24 modes); that pretension is not in
+// equilibrium with the frame and its free trailing edge. The film shrunk onto the frame
+// (skin_pretension.hpp) to 30 N/m, below the frame's buckling at ~41 N/m, leaves the aft skin
+// slack and softens the frame: here on the coarse test wing (10 mm, 6 modes) of the honest magpie.
+TEST(DynamicsFlexibleTethered, LinearWingLosesTheLiftAtEveryPretensionTheFrameHolds) {
   auto means = [](double pretension_Npm, bool nonlinear) {
     VehicleModel v = efw(StructureLevel::kFlexible);
     v.wing.skin.pretension_N_per_m = pretension_Npm;
@@ -288,20 +286,16 @@ TEST(DynamicsFlexibleTethered, TautSkinLinearWingFlapsAsTheNonlinearWing) {
     EXPECT_EQ(s.status, SimulationStatus::kOk) << s.message;
     return s.mean;
   };
-  const auto taut_linear = means(100.0, false), taut_nonlinear = means(100.0, true);
+  const auto held_linear = means(30.0, false), held_nonlinear = means(30.0, true);
   const auto slack_linear = means(0.0, false), slack_nonlinear = means(0.0, true);
   std::printf("tethered means, linear / nonlinear wing: slack FV %.4f / %.4f N, FH %.4f / %.4f N; "
-              "100 N/m FV %.4f / %.4f N, FH %.4f / %.4f N, hinge power %.3f / %.3f W\n",
+              "shrunk film 30 N/m FV %.4f / %.4f N, FH %.4f / %.4f N, hinge power %.3f / %.3f W\n",
               slack_linear.FV_N, slack_nonlinear.FV_N, slack_linear.FH_N, slack_nonlinear.FH_N,
-              taut_linear.FV_N, taut_nonlinear.FV_N, taut_linear.FH_N, taut_nonlinear.FH_N,
-              taut_linear.power_hinge_W, taut_nonlinear.power_hinge_W);
-  // 3 % of the lift and the power, 3 % of the lift for the thrust (a net of thrust and drag):
-  // the measured gaps at 100 N/m on the 24-mode wing are 1.1 % and 0.1 %.
-  EXPECT_NEAR(taut_linear.FV_N / taut_nonlinear.FV_N, 1.0, 0.03);
-  EXPECT_NEAR(taut_linear.FH_N, taut_nonlinear.FH_N, 0.03 * std::abs(taut_nonlinear.FV_N));
-  EXPECT_NEAR(taut_linear.power_hinge_W / taut_nonlinear.power_hinge_W, 1.0, 0.03);
-  // Slack, the linear plate loses most of the lift the stretched skin keeps.
+              held_linear.FV_N, held_nonlinear.FV_N, held_linear.FH_N, held_nonlinear.FH_N,
+              held_linear.power_hinge_W, held_nonlinear.power_hinge_W);
+  // Slack or held, the linear plate loses most of the lift the stretched skin keeps.
   EXPECT_LT(slack_linear.FV_N, 0.5 * slack_nonlinear.FV_N);
+  EXPECT_LT(held_linear.FV_N, 0.5 * held_nonlinear.FV_N);
 }
 
 }  // namespace

@@ -328,6 +328,25 @@ TEST(StructureCalculixDeck, StaticStepsLoadsAndClampedNodes) {
   EXPECT_EQ(dloads[1]->lines, std::vector<std::string>{"SKIN, P, 0.001"});
   EXPECT_TRUE(cardsStartingWith(f.cards, "*CLOAD").empty());
   EXPECT_EQ(cardsStartingWith(f.cards, "*STEP")[0]->keyword, "*STEP, INC=1000");
+  // Without a shrink, no thermal card at all.
+  EXPECT_TRUE(cardsStartingWith(f.cards, "*EXPANSION").empty());
+  EXPECT_TRUE(cardsStartingWith(f.cards, "*TEMPERATURE").empty());
+
+  // A shrunk skin (skin_pretension.hpp): the skin material expands by 1 per degree, every node
+  // starts at 0 and is at -s in every static step.
+  o.static_steps.skin_shrink_strain = 2.5e-6;
+  const ParsedDeck sh = parse(calculixDeck(w.vehicle, w.mesh, o));
+  const auto expansion = cardsStartingWith(sh.cards, "*EXPANSION");
+  ASSERT_EQ(expansion.size(), 1u);  // the skin's only: the rods do not shrink
+  EXPECT_EQ(expansion[0]->lines, std::vector<std::string>{"1."});
+  const auto initial = cardsStartingWith(sh.cards, "*INITIAL CONDITIONS");
+  ASSERT_EQ(initial.size(), 1u);
+  EXPECT_EQ(initial[0]->keyword, "*INITIAL CONDITIONS, TYPE=TEMPERATURE");
+  EXPECT_EQ(initial[0]->lines, std::vector<std::string>{"NALL, 0."});
+  const auto temperatures = cardsStartingWith(sh.cards, "*TEMPERATURE");
+  ASSERT_EQ(temperatures.size(), 2u);
+  EXPECT_EQ(temperatures[1]->lines, std::vector<std::string>{"NALL, -2.5E-06"});
+  o.static_steps.skin_shrink_strain = 0.0;
 
   // Bad static input.
   CalculixDeckOptions bad = o;

@@ -12,6 +12,7 @@
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/membrane_rom.hpp"
 #include "core/structure/modal_wing.hpp"
+#include "core/structure/skin_pretension.hpp"
 #include "core/structure/von_karman.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "fe_test_meshes.hpp"
@@ -22,7 +23,6 @@ namespace {
 
 constexpr double kLiftPressure_Pa = 53.0;
 constexpr double kDeflectionTol = 0.05;   // acceptance: 5 %
-constexpr double kPitchTol_deg = 0.3;     // acceptance: 0.3 deg
 
 // Upward (-z_W: z_W points down) uniform pressure, consistent nodal loads of linear triangles.
 Eigen::VectorXd liftLoad(const WingMesh& mesh, double pressure_pa) {
@@ -84,62 +84,41 @@ struct StaticCase {
   std::size_t mid() const { return mesh.strip_nodes.size() / 2; }
 };
 
-// Upward pressure growing linearly from the root to the tip (twice 53 Pa at the tip, 53 Pa at
-// mid-span): the flapping wing's lift grows along the span with the stroke velocity.
-Eigen::VectorXd spanwiseLiftLoad(const WingMesh& mesh, double mid_span_pressure_pa) {
-  double span = 0.0;
-  for (const Vec3& x : mesh.nodes_W_m) span = std::max(span, x.y());
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(kDofsPerNode * mesh.nodeCount());
-  for (const std::array<int, 3>& tri : mesh.triangles) {
-    const std::array<Vec3, 3> x = {mesh.nodes_W_m[static_cast<std::size_t>(tri[0])],
-                                   mesh.nodes_W_m[static_cast<std::size_t>(tri[1])],
-                                   mesh.nodes_W_m[static_cast<std::size_t>(tri[2])]};
-    for (std::size_t k = 0; k < 3; ++k)
-      f(globalDof(tri[k], kW)) -=
-          2.0 * mid_span_pressure_pa * x[k].y() / span * triangleArea(x) / 3.0;
-  }
-  return f;
-}
-
-// A taut skin (100 N/m: a strain of 2.5e-5 in the 100 GPa, 0.04 mm skin, far less than any film
-// glued or shrunk onto a frame holds) has one static equilibrium, and the reduced wing finds it:
-// measured (2026-12-05) under 53 Pa uniform, full / 24 modes: tip LE 6.38 / 6.36 mm, mid-span TE
-// 4.02 / 3.99 mm, mid-span pitch -1.07 / -1.06 deg, tip pitch 0.69 / 0.75 deg; converging with
-// the mode count (mid-span TE 3.89 / 3.99 / 4.01 mm with 12 / 24 / 48 modes); the same full
-// solution with 10 or 40 load increments and with either member ordering (the members'
-// in-plane rotation, worth 24 % at mid-span for the slack skin, is nothing here). Under the
-// spanwise-growing load: tip LE 8.48 / 8.46, mid-span TE 4.36 / 4.35 mm; at 106 Pa uniform the
-// 24 modes stay within 2.3 % and 0.24 deg.
-TEST(FeMembraneRomEfw, TautSkinReducedStaticMatchesTheFullNonlinearSolution) {
-  const StaticCase c(100.0);
-  const struct {
-    const char* name;
-    Eigen::VectorXd load;
-  } loads[] = {{"uniform 53 Pa", liftLoad(c.mesh, kLiftPressure_Pa)},
-               {"spanwise, 53 Pa at mid-span", spanwiseLiftLoad(c.mesh, kLiftPressure_Pa)}};
-  for (const auto& l : loads) {
-    const NonlinearStaticResult full = c.full(l.load);
-    ASSERT_TRUE(full.converged) << full.message;
-    NonlinearStaticOptions linear_options;
-    linear_options.nonlinear = false;
-    const NonlinearStaticResult linear =
-        solveWingStatic(c.vehicle, c.mesh, c.options.support, l.load, linear_options);
-    Eigen::VectorXd u_rom;
-    ASSERT_TRUE(c.reduced(l.load, 10, &u_rom));
-    for (const std::size_t strip : {c.tip(), c.mid()}) {
-      const Section f = section(c.mesh, full.displacement, strip);
-      const Section r = section(c.mesh, u_rom, strip);
-      const Section lin = section(c.mesh, linear.displacement, strip);
-      std::printf("EFW, skin 100 N/m, %s, strip %zu: LE up %.2f mm (ROM %.2f, linear %.2f), TE up "
-                  "%.2f mm (ROM %.2f, linear %.2f), pitch %.2f deg (ROM %.2f, linear %.2f)\n",
-                  l.name, strip, 1e3 * f.lead_up_m, 1e3 * r.lead_up_m, 1e3 * lin.lead_up_m,
-                  1e3 * f.trail_up_m, 1e3 * r.trail_up_m, 1e3 * lin.trail_up_m, f.pitch_deg,
-                  r.pitch_deg, lin.pitch_deg);
-      EXPECT_NEAR(r.lead_up_m / f.lead_up_m, 1.0, kDeflectionTol) << l.name << ", strip " << strip;
-      EXPECT_NEAR(r.trail_up_m / f.trail_up_m, 1.0, kDeflectionTol) << l.name << ", strip " << strip;
-      EXPECT_NEAR(r.pitch_deg, f.pitch_deg, kPitchTol_deg) << l.name << ", strip " << strip;
-    }
-  }
+// Where the slack skin's static solution is unique (small loads: the same answer with 10 or 40
+// load increments), the 24-mode reduced wing is too stiff at the trailing edge: the modes of the
+// linear wing do not hold the membrane's deformation. Measured (2026-12-06), full / ROM: at 1.67
+// Pa (3 % of 53 Pa) mid-span TE 2.670 / 2.240 mm (0.84), tip LE 0.866 / 0.871 mm; at 4.77 Pa
+// 6.08-6.21 / 4.46 mm (0.72); at 15 Pa 13.6-14.5 / 8.47 mm. CalculiX NLGEOM at 1.67 Pa (a partial
+// run, test_fe_calculix_nonlinear.cpp): mid-span TE 2.528 mm, tip 0.920 mm, so the full solution is
+// within 6 % of it and the ROM 11 % below it. The acceptance's 5 % is therefore not met on the
+// slack skin, and no pretension the frame can hold makes the skin taut (test_skin_pretension.cpp:
+// the film shrunk onto Table 1's frame keeps 4 % of N0 chordwise and buckles the wing at 41 N/m; the
+// 100 N/m uniform pretension under which this ROM matched the full solution to 1 % before
+// 2026-12-06 was not in equilibrium with the frame). Held here so the finding stays measured.
+TEST(FeMembraneRomEfw, ReducedStaticIsTooStiffOnTheSlackSkinWhereTheSolutionIsUnique) {
+  const StaticCase c(0.0);
+  constexpr double kSmallLift_Pa = 1.67;
+  const Eigen::VectorXd load = liftLoad(c.mesh, kSmallLift_Pa);
+  const NonlinearStaticResult coarse = c.full(load, 10), fine = c.full(load, 40);
+  ASSERT_TRUE(coarse.converged) << coarse.message;
+  ASSERT_TRUE(fine.converged) << fine.message;
+  Eigen::VectorXd u_rom;
+  ASSERT_TRUE(c.reduced(load, 10, &u_rom));
+  const Section full_mid = section(c.mesh, fine.displacement, c.mid());
+  const Section path_mid = section(c.mesh, coarse.displacement, c.mid());
+  const Section rom_mid = section(c.mesh, u_rom, c.mid());
+  const Section full_tip = section(c.mesh, fine.displacement, c.tip());
+  const Section rom_tip = section(c.mesh, u_rom, c.tip());
+  std::printf("EFW slack, %.2f Pa: mid-span TE full %.3f mm (10 increments %.3f), ROM %.3f mm; tip "
+              "LE full %.3f mm, ROM %.3f mm\n",
+              kSmallLift_Pa, 1e3 * full_mid.trail_up_m, 1e3 * path_mid.trail_up_m,
+              1e3 * rom_mid.trail_up_m, 1e3 * full_tip.lead_up_m, 1e3 * rom_tip.lead_up_m);
+  // Unique: the two load paths agree to 0.1 %.
+  EXPECT_NEAR(path_mid.trail_up_m / full_mid.trail_up_m, 1.0, 1e-3);
+  // The finding: the ROM's trailing edge 10-25 % low (measured 16 %), its leading edge within 5 %.
+  EXPECT_GT(rom_mid.trail_up_m / full_mid.trail_up_m, 0.75);
+  EXPECT_LT(rom_mid.trail_up_m / full_mid.trail_up_m, 0.90);
+  EXPECT_NEAR(rom_tip.lead_up_m / full_tip.lead_up_m, 1.0, kDeflectionTol);
 }
 
 // The slack skin (no pretension, the vehicle files' default) has no unique static equilibrium
@@ -147,7 +126,7 @@ TEST(FeMembraneRomEfw, TautSkinReducedStaticMatchesTheFullNonlinearSolution) {
 // solution reaches depends on how the load is applied. Measured (2026-12-05) on the full model:
 // 10 / 40 load increments give mid-span TE 29.25 / 30.86 mm, tip LE 17.28 / 18.33 mm, potentials
 // -10.64 / -11.07 mJ (in von Karman's member ordering 36.19 / 34.02 mm, -11.89 / -11.49 mJ);
-// a first-order pretension of 10 / 30 / 100 N/m takes the mid-span TE to 15.8 / 8.5 / 4.0 mm. The
+// a film shrunk onto the frame to 10 / 30 N/m leaves it at 31-34 mm (test_skin_pretension.cpp). The
 // reduced wing's equilibria spread far more: mid-span TE 29.6 mm with 10 equal increments, 15.6 mm
 // with 60 (the 10-increment path jumps to another branch). So a comparison at 5 % means nothing for
 // the slack skin, and the reduced slack wing is not validated: its close mid-span agreement with 10
@@ -167,11 +146,6 @@ TEST(FeMembraneRomEfw, SlackSkinReducedStaticDependsOnTheLoadPath) {
   ::testing::Test::RecordProperty("slack_rom_mid_te_mm_60_steps", std::to_string(1e3 * b.trail_up_m));
   // Two equilibria further apart than the acceptance tolerance (measured a ratio of 1.9).
   EXPECT_GT(a.trail_up_m / b.trail_up_m, 1.0 + 4.0 * kDeflectionTol);
-  // The pretension's effect: the taut skin's reduced mid-span TE (4.0 mm) is a fraction of either.
-  const StaticCase taut(100.0);
-  Eigen::VectorXd u_taut;
-  ASSERT_TRUE(taut.reduced(load, 10, &u_taut));
-  EXPECT_LT(section(taut.mesh, u_taut, taut.mid()).trail_up_m, 0.5 * b.trail_up_m);
 }
 
 
@@ -196,7 +170,7 @@ TEST(FeMembraneRomEfw, CondensationIsExactForVonKarmansOrdering) {
   const Eigen::VectorXd u = mw.mode_shapes * q + mw.membrane.membraneDisplacement(q);
 
   WingFeModel fe = assembleWingFe(v, mesh);
-  addSkinPretension(v, mesh, &fe);
+  addSkinPretension(v, mesh, options.support, &fe);
   const VonKarmanTerms von_karman(v, mesh, MemberStretch::kOutOfPlaneOnly);
   const VonKarmanTerms both_transverse(v, mesh);  // the default
   ModalMembraneStiffness::Workspace ws(mw.membrane.pairCount());
