@@ -85,40 +85,52 @@ struct StaticCase {
 };
 
 // Where the slack skin's static solution is unique (small loads: the same answer with 10 or 40
-// load increments), the 24-mode reduced wing is too stiff at the trailing edge: the modes of the
-// linear wing do not hold the membrane's deformation. Measured (2026-12-06), full / ROM: at 1.67
-// Pa (3 % of 53 Pa) mid-span TE 2.670 / 2.240 mm (0.84), tip LE 0.866 / 0.871 mm; at 4.77 Pa
-// 6.08-6.21 / 4.46 mm (0.72); at 15 Pa 13.6-14.5 / 8.47 mm. CalculiX NLGEOM at 1.67 Pa (a partial
-// run, test_fe_calculix_nonlinear.cpp): mid-span TE 2.528 mm, tip 0.920 mm, so the full solution is
-// within 6 % of it and the ROM 11 % below it. The acceptance's 5 % is therefore not met on the
-// slack skin, and no pretension the frame can hold makes the skin taut (test_skin_pretension.cpp:
-// the film shrunk onto Table 1's frame keeps 4 % of N0 chordwise and buckles the wing at 41 N/m; the
-// 100 N/m uniform pretension under which this ROM matched the full solution to 1 % before
-// 2026-12-06 was not in equilibrium with the frame). Held here so the finding stays measured.
-TEST(FeMembraneRomEfw, ReducedStaticIsTooStiffOnTheSlackSkinWhereTheSolutionIsUnique) {
-  const StaticCase c(0.0);
+// load increments), the reduced wing converges to the full one with the mode count, slowly: the
+// membrane's deformation is not in the first linear modes. Measured (2026-12-06) at 1.67 Pa (3 % of
+// 53 Pa), mid-span TE: full 2.670 mm; 12 / 24 / 48 / 96 / 160 modes 1.949 / 2.240 / 2.557 / 2.642
+// / 2.658 mm (0.73 / 0.84 / 0.958 / 0.990 / 0.996; builds 0.2 / 0.5 / 2.2 / 20 / 130 s); tip LE
+// full 0.866, 24 modes 0.871 mm. At 4.77 Pa (full 6.08-6.21 mm with 40 / 10 increments: the
+// branches begin) 24 / 48 / 72 / 96 modes give 4.46 / 5.12 / 5.82 / 5.95 mm; at 15 Pa 96 modes jump
+// to another branch (19.6 against 13.6-14.5 mm). CalculiX NLGEOM at 1.67 Pa (a partial run,
+// test_fe_calculix_nonlinear.cpp): mid-span TE 2.528 mm, tip 0.920 mm; the full solution is within
+// 6 % of it. So the 24 modes the nonlinear vehicle file uses are 16 % too stiff here, 48 meet the
+// acceptance's 5 %; no pretension the frame can hold makes the skin taut (test_skin_pretension.cpp;
+// the uniform 100 N/m under which 24 modes matched the full solution to 1 % before 2026-12-06 was
+// not in equilibrium with the frame).
+TEST(FeMembraneRomEfw, ReducedStaticConvergesInTheModesWhereTheSlackSolutionIsUnique) {
+  const StaticCase c24(0.0, 24);
   constexpr double kSmallLift_Pa = 1.67;
-  const Eigen::VectorXd load = liftLoad(c.mesh, kSmallLift_Pa);
-  const NonlinearStaticResult coarse = c.full(load, 10), fine = c.full(load, 40);
+  const Eigen::VectorXd load = liftLoad(c24.mesh, kSmallLift_Pa);
+  const NonlinearStaticResult coarse = c24.full(load, 10), fine = c24.full(load, 40);
   ASSERT_TRUE(coarse.converged) << coarse.message;
   ASSERT_TRUE(fine.converged) << fine.message;
-  Eigen::VectorXd u_rom;
-  ASSERT_TRUE(c.reduced(load, 10, &u_rom));
-  const Section full_mid = section(c.mesh, fine.displacement, c.mid());
-  const Section path_mid = section(c.mesh, coarse.displacement, c.mid());
-  const Section rom_mid = section(c.mesh, u_rom, c.mid());
-  const Section full_tip = section(c.mesh, fine.displacement, c.tip());
-  const Section rom_tip = section(c.mesh, u_rom, c.tip());
-  std::printf("EFW slack, %.2f Pa: mid-span TE full %.3f mm (10 increments %.3f), ROM %.3f mm; tip "
-              "LE full %.3f mm, ROM %.3f mm\n",
-              kSmallLift_Pa, 1e3 * full_mid.trail_up_m, 1e3 * path_mid.trail_up_m,
-              1e3 * rom_mid.trail_up_m, 1e3 * full_tip.lead_up_m, 1e3 * rom_tip.lead_up_m);
+  const Section full_mid = section(c24.mesh, fine.displacement, c24.mid());
+  const Section path_mid = section(c24.mesh, coarse.displacement, c24.mid());
+  const Section full_tip = section(c24.mesh, fine.displacement, c24.tip());
   // Unique: the two load paths agree to 0.1 %.
   EXPECT_NEAR(path_mid.trail_up_m / full_mid.trail_up_m, 1.0, 1e-3);
-  // The finding: the ROM's trailing edge 10-25 % low (measured 16 %), its leading edge within 5 %.
-  EXPECT_GT(rom_mid.trail_up_m / full_mid.trail_up_m, 0.75);
-  EXPECT_LT(rom_mid.trail_up_m / full_mid.trail_up_m, 0.90);
-  EXPECT_NEAR(rom_tip.lead_up_m / full_tip.lead_up_m, 1.0, kDeflectionTol);
+  double previous = 0.0;
+  for (const int modes : {12, 24, 48}) {
+    const StaticCase c(0.0, modes);
+    Eigen::VectorXd u_rom;
+    ASSERT_TRUE(c.reduced(load, 10, &u_rom));
+    const Section rom_mid = section(c.mesh, u_rom, c.mid());
+    const Section rom_tip = section(c.mesh, u_rom, c.tip());
+    const double ratio = rom_mid.trail_up_m / full_mid.trail_up_m;
+    std::printf("EFW slack, %.2f Pa, %d modes: mid-span TE %.3f mm (full %.3f, 10 increments %.3f; "
+                "ratio %.3f), tip LE %.3f mm (full %.3f)\n",
+                kSmallLift_Pa, modes, 1e3 * rom_mid.trail_up_m, 1e3 * full_mid.trail_up_m,
+                1e3 * path_mid.trail_up_m, ratio, 1e3 * rom_tip.lead_up_m, 1e3 * full_tip.lead_up_m);
+    ::testing::Test::RecordProperty("rom_over_full_mid_te_" + std::to_string(modes) + "_modes",
+                                    std::to_string(ratio));
+    // From below, monotonically (a Ritz basis of a convex energy near the unique minimum).
+    EXPECT_GT(ratio, previous) << modes << " modes";
+    EXPECT_LT(ratio, 1.0 + 1e-3) << modes << " modes";
+    EXPECT_NEAR(rom_tip.lead_up_m / full_tip.lead_up_m, 1.0, kDeflectionTol) << modes << " modes";
+    previous = ratio;
+  }
+  // 48 modes: the acceptance's 5 % (measured 4.2 %); 24 modes do not (16 %).
+  EXPECT_NEAR(previous, 1.0, kDeflectionTol);
 }
 
 // The slack skin (no pretension, the vehicle files' default) has no unique static equilibrium
