@@ -2,6 +2,7 @@
 #include "core/structure/skin_pretension.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -124,14 +125,16 @@ void addSkinPretension(const WingStructure& wing_structure, const WingMesh& mesh
   const double n0 = wing_structure.wing.skin.pretension_N_per_m;
   if (n0 == 0.0) return;
   const double limit = skinPretensionBucklingLimit(wing_structure, mesh, support, n0);
-  if (limit < n0)
+  if (limit < n0) {
+    char numbers[256];
+    std::snprintf(numbers, sizeof numbers, "%.6g N/m: the wing cannot hold that film; shrunk onto "
+                  "the frame it buckles the wing from %.4g N/m", n0, limit);
     throw InvalidModelError(
-        "wing.skin.pretension_N_per_m = " + std::to_string(n0) +
-        " N/m: the wing cannot hold that film; shrunk onto the frame it buckles the wing (the "
-        "stiffness with the prestress is no longer positive definite) from " +
-        std::to_string(limit) +
-        " N/m. What a film holds is in equilibrium with the frame, which yields, and with the free "
-        "trailing edge (docs/theory.md 4.7); lower the pretension or stiffen the frame");
+        std::string("wing.skin.pretension_N_per_m = ") + numbers +
+        " (the stiffness with the prestress is no longer positive definite). What a film holds is "
+        "in equilibrium with the frame, which yields, and with the free trailing edge "
+        "(docs/theory.md 4.7); lower the pretension or stiffen the frame");
+  }
   fe->stiffness += skinPretensionStiffness(wing_structure, mesh, support, n0);
 }
 
