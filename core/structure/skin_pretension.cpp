@@ -98,44 +98,53 @@ int negativePivots(const SparseMatrix& k_ff, const SparseMatrix& k_g_ff, double 
   return negative;
 }
 
+// The largest factor in [0, 1] of K_G for which K + factor K_G stays positive definite on the
+// retained DOFs of the support: 1 when the whole prestress is held, else by bisection (the
+// prestress is linear in N0; 40 halvings, 1e-12 relative).
+double heldFactor(const SparseMatrix& stiffness, const SparseMatrix& prestress_stiffness,
+                  const std::vector<bool>& active, const WingMesh& mesh, const WingSupport& support) {
+  const DofPartition part = makeDofPartition(active, wingBoundaryDofs(mesh, support));
+  std::vector<int> free = part.retained();
+  std::sort(free.begin(), free.end());
+  const SparseMatrix k_ff = extractBlock(stiffness, free, free);
+  const SparseMatrix k_g_ff = extractBlock(prestress_stiffness, free, free);
+  if (negativePivots(k_ff, k_g_ff, 1.0) == 0) return 1.0;
+  double held = 0.0, buckled = 1.0;
+  for (int i = 0; i < 40; ++i) {
+    const double mid = 0.5 * (held + buckled);
+    (negativePivots(k_ff, k_g_ff, mid) == 0 ? held : buckled) = mid;
+  }
+  return held;
+}
+
 }  // namespace
 
 double skinPretensionBucklingLimit(const WingStructure& wing_structure, const WingMesh& mesh,
                                    const WingSupport& support, double pretension_Npm) {
   if (pretension_Npm <= 0.0 || mesh.triangles.empty()) return pretension_Npm;
   const WingFeModel fe = assembleWingFe(wing_structure, mesh);
-  const DofPartition part = makeDofPartition(fe.active, wingBoundaryDofs(mesh, support));
-  std::vector<int> free = part.retained();
-  std::sort(free.begin(), free.end());
-  const SparseMatrix k_ff = extractBlock(fe.stiffness, free, free);
-  const SparseMatrix k_g_ff =
-      extractBlock(skinPretensionStiffness(wing_structure, mesh, support, pretension_Npm), free, free);
-  if (negativePivots(k_ff, k_g_ff, 1.0) == 0) return pretension_Npm;
-  // Bisection on the load factor (the prestress is linear in N0): 40 halvings, 1e-12 relative.
-  double held = 0.0, buckled = 1.0;
-  for (int i = 0; i < 40; ++i) {
-    const double mid = 0.5 * (held + buckled);
-    (negativePivots(k_ff, k_g_ff, mid) == 0 ? held : buckled) = mid;
-  }
-  return held * pretension_Npm;
+  return pretension_Npm *
+         heldFactor(fe.stiffness, skinPretensionStiffness(wing_structure, mesh, support, pretension_Npm),
+                    fe.active, mesh, support);
 }
 
 void addSkinPretension(const WingStructure& wing_structure, const WingMesh& mesh,
                        const WingSupport& support, WingFeModel* fe) {
   const double n0 = wing_structure.wing.skin.pretension_N_per_m;
   if (n0 == 0.0) return;
-  const double limit = skinPretensionBucklingLimit(wing_structure, mesh, support, n0);
-  if (limit < n0) {
+  const SparseMatrix k_g = skinPretensionStiffness(wing_structure, mesh, support, n0);
+  const double factor = heldFactor(fe->stiffness, k_g, fe->active, mesh, support);
+  if (factor < 1.0) {
     char numbers[256];
     std::snprintf(numbers, sizeof numbers, "%.6g N/m: the wing cannot hold that film; shrunk onto "
-                  "the frame it buckles the wing from %.4g N/m", n0, limit);
+                  "the frame it buckles the wing from %.4g N/m", n0, factor * n0);
     throw InvalidModelError(
         std::string("wing.skin.pretension_N_per_m = ") + numbers +
         " (the stiffness with the prestress is no longer positive definite). What a film holds is "
         "in equilibrium with the frame, which yields, and with the free trailing edge "
         "(docs/theory.md 4.7); lower the pretension or stiffen the frame");
   }
-  fe->stiffness += skinPretensionStiffness(wing_structure, mesh, support, n0);
+  fe->stiffness += k_g;
 }
 
 }  // namespace orni::structure

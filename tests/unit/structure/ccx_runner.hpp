@@ -12,11 +12,24 @@
 #include <string>
 #include <vector>
 
+#include "core/structure/calculix_deck.hpp"
 #include "core/structure/calculix_results.hpp"
+#include "core/structure/fe_assembly.hpp"
 
 namespace orni::structure::fe_test {
 
 inline bool ccxAvailable() { return std::system("command -v ccx >/dev/null 2>&1") == 0; }
+
+/// A deck of static steps only, held as `support` holds the wing (P3's joint and cross axis, the
+/// root edge), as our static solves are.
+inline CalculixDeckOptions staticDeckFor(const WingSupport& support) {
+  CalculixDeckOptions o;
+  o.frequency_step = false;
+  o.p3_joint = support.p3_joint;
+  o.p3_cross_axis_normal = support.p3_cross_axis == UniversalJointCrossAxis::kZW;
+  o.root_edge_pinned = support.root_edge_pinned;
+  return o;
+}
 
 inline constexpr const char* kNoCcxMessage =
     "ccx (CalculiX, Debian package calculix-ccx) is not on PATH: cross-code check skipped";

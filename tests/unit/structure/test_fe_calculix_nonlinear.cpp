@@ -162,11 +162,7 @@ struct EfwCase {
     mid_te = mesh.strip_nodes[mesh.strip_nodes.size() / 2].trailing_edge;
   }
   CalculixDeckOptions deck(const std::vector<double>& factors, bool nlgeom) const {
-    CalculixDeckOptions o;
-    o.frequency_step = false;
-    o.p3_joint = support.p3_joint;
-    o.p3_cross_axis_normal = support.p3_cross_axis == UniversalJointCrossAxis::kZW;
-    o.root_edge_pinned = support.root_edge_pinned;
+    CalculixDeckOptions o = fe_test::staticDeckFor(support);
     o.static_steps.nlgeom = nlgeom;
     o.static_steps.load_factors = factors;
     o.static_steps.print_nodes = {tip, mid_te};

@@ -49,11 +49,7 @@ TEST(SkinPretension, ShrunkFilmOnTheEfwMatchesCalculix) {
   const WingSupport support = WingSupport::of(v.wing.fe);
   constexpr double kHeld_Npm = 30.0;
   const SkinPrestress p = shrunkSkinPrestress(v, mesh, support, kHeld_Npm);
-  CalculixDeckOptions o;
-  o.frequency_step = false;
-  o.p3_joint = support.p3_joint;
-  o.p3_cross_axis_normal = support.p3_cross_axis == UniversalJointCrossAxis::kZW;
-  o.root_edge_pinned = support.root_edge_pinned;
+  CalculixDeckOptions o = fe_test::staticDeckFor(support);
   o.static_steps.nlgeom = false;
   o.static_steps.load_factors = {1.0};
   o.static_steps.skin_shrink_strain = skinShrinkStrain(v, kHeld_Npm);
@@ -173,7 +169,7 @@ TEST(SkinPretension, TheEfwFrameHoldsLittleOfAShrunkFilmAndBucklesNear41NPerM) {
     spanwise += e.area_m2 * in_w(1, 1);
   }
   const double limit = skinPretensionBucklingLimit(v, mesh, support, 100.0);
-  std::printf("EFW, a film shrunk to N0: area means chordwise %.3f N0, spanwise %.3f N0; the frame "
+  std::printf("EFW, a film shrunk to N0: area means chordwise %.3f N0, spanwise %.3f N0; the wing "
               "buckles at %.2f N/m\n",
               chordwise / area, spanwise / area, limit);
   EXPECT_LT(chordwise / area, 0.1);
