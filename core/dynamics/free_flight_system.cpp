@@ -15,7 +15,8 @@ FreeFlightWorkspace::FreeFlightWorkspace(const FreeFlightModel& model)
     : data(model.core),
       kin(model.stacked(), model.mode_count),
       chol(3 + model.mode_count),
-      membrane_ws(model.flex ? model.flex->membrane().pairCount() : 0) {
+      membrane_ws(model.flex ? structure::ModalMembraneStiffness::Workspace(model.flex->membrane())
+                              : structure::ModalMembraneStiffness::Workspace()) {
   const int m = model.mode_count;
   const auto ns = static_cast<Eigen::Index>(model.core.strips.size());
   n_u = 3 + m;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/SparseCholesky>
@@ -22,12 +23,77 @@ void pairProducts(const ModalMembraneStiffness& m, const Eigen::VectorXd& q, Eig
   }
 }
 
+// G (R x P) with C ~ G^T G: the diagonally pivoted Cholesky factorisation of A C A (A =
+// diag(amplitude)), stopped when the largest remaining diagonal is at most `tolerance` times the
+// largest diagonal of A C A, with every kept column divided back by A. With tolerance 0 it runs to
+// the numerical rank (a remaining diagonal below 1e-13 of the largest: round-off of a positive
+// semi-definite C). The remainder is the Schur complement of the pivots: positive semi-definite.
+Eigen::MatrixXd pivotedStrainFactor(const Eigen::MatrixXd& c, const Eigen::VectorXd& amplitude,
+                                    double tolerance) {
+  const auto n = c.rows();
+  const Eigen::MatrixXd a = amplitude.asDiagonal() * c * amplitude.asDiagonal();
+  Eigen::VectorXd d = a.diagonal().cwiseMax(0.0);
+  const double d_max = d.size() > 0 ? d.maxCoeff() : 0.0;
+  const double stop = std::max(tolerance, 1e-13) * d_max;
+  Eigen::MatrixXd l = Eigen::MatrixXd::Zero(n, n);  // columns: the kept directions
+  std::vector<bool> pivoted(static_cast<std::size_t>(n), false);
+  Eigen::Index r = 0;
+  for (; r < n; ++r) {
+    Eigen::Index piv = -1;
+    double best = stop;
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (!pivoted[static_cast<std::size_t>(i)] && d(i) > best) {
+        best = d(i);
+        piv = i;
+      }
+    if (piv < 0) break;
+    pivoted[static_cast<std::size_t>(piv)] = true;
+    Eigen::VectorXd col = a.col(piv);
+    if (r > 0) col.noalias() -= l.leftCols(r) * l.row(piv).head(r).transpose();
+    col /= std::sqrt(best);
+    for (Eigen::Index i = 0; i < n; ++i)
+      if (pivoted[static_cast<std::size_t>(i)] && i != piv) col(i) = 0.0;  // round-off
+    l.col(r) = col;
+    d -= col.cwiseAbs2();
+    d(piv) = 0.0;
+  }
+  Eigen::MatrixXd g = l.leftCols(r).transpose();  // R x P, of A C A
+  for (Eigen::Index p = 0; p < n; ++p) g.col(p) /= amplitude(p);
+  return g;
+}
+
+}  // namespace
+
+namespace {
+
+// z = C x (P), through G when factored (strain = G x, R entries of scratch).
+void applyPairStiffness(const ModalMembraneStiffness& m, const Eigen::VectorXd& x,
+                        Eigen::VectorXd* strain, Eigen::VectorXd* z) {
+  if (m.factored()) {
+    strain->noalias() = m.strain_factor * x;
+    z->noalias() = m.strain_factor.transpose() * *strain;
+  } else {
+    z->noalias() = m.pair_stiffness * x;
+  }
+}
+
+// f_r += scale sum_p z_p dQ_p/dq_r, dQ_p/dq_r = delta_ir q_j + delta_jr q_i.
+void addPairForce(const ModalMembraneStiffness& m, const Eigen::VectorXd& q,
+                  const Eigen::VectorXd& z, double scale, Eigen::VectorXd* f) {
+  for (int p = 0; p < m.pairCount(); ++p) {
+    const auto& ij = m.pairs[static_cast<std::size_t>(p)];
+    const double zp = scale * z(p);
+    (*f)(ij[0]) += zp * q(ij[1]);
+    (*f)(ij[1]) += zp * q(ij[0]);
+  }
+}
+
 }  // namespace
 
 double ModalMembraneStiffness::energy(const Eigen::VectorXd& q, Workspace* ws) const {
   if (empty()) return 0.0;
   pairProducts(*this, q, &ws->products);
-  ws->z.noalias() = pair_stiffness * ws->products;
+  applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);
   return 0.5 * ws->products.dot(ws->z);
 }
 
@@ -35,14 +101,8 @@ void ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, Workspace* ws,
                                       Eigen::VectorXd* f, double scale) const {
   if (empty()) return;
   pairProducts(*this, q, &ws->products);
-  ws->z.noalias() = pair_stiffness * ws->products;
-  // f_r = sum_p z_p dQ_p/dq_r, dQ_p/dq_r = delta_ir q_j + delta_jr q_i.
-  for (int p = 0; p < pairCount(); ++p) {
-    const auto& ij = pairs[static_cast<std::size_t>(p)];
-    const double z = scale * ws->z(p);
-    (*f)(ij[0]) += z * q(ij[1]);
-    (*f)(ij[1]) += z * q(ij[0]);
-  }
+  applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);
+  addPairForce(*this, q, ws->z, scale, f);
 }
 
 double ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot,
@@ -54,13 +114,8 @@ double ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, const Eigen::V
     ws->rates(p) = q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]);
     ws->products(p) = q(ij[0]) * q(ij[1]) + beta_s * ws->rates(p);  // Q + beta Q'
   }
-  ws->z.noalias() = pair_stiffness * ws->products;  // one pass over C (P^2 doubles)
-  for (int p = 0; p < pairCount(); ++p) {
-    const auto& ij = pairs[static_cast<std::size_t>(p)];
-    const double z = scale * ws->z(p);
-    (*f)(ij[0]) += z * q(ij[1]);
-    (*f)(ij[1]) += z * q(ij[0]);
-  }
+  applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);  // one pass over C or G
+  addPairForce(*this, q, ws->z, scale, f);
   return ws->rates.dot(ws->z);
 }
 
@@ -74,9 +129,9 @@ ModalMembraneStiffness::Rates ModalMembraneStiffness::rates(const Eigen::VectorX
     ws->rates(p) = q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]);
     ws->products(p) = q(ij[0]) * q(ij[1]);
   }
-  ws->z.noalias() = pair_stiffness * ws->products;
+  applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);
   r.strain_energy_rate_W = ws->rates.dot(ws->z);
-  ws->z.noalias() = pair_stiffness * ws->rates;
+  applyPairStiffness(*this, ws->rates, &ws->strain_rate, &ws->z);
   r.dissipation_W = beta_s * ws->rates.dot(ws->z);
   return r;
 }
@@ -95,55 +150,49 @@ void ModalMembraneStiffness::tangentParts(const Eigen::VectorXd& q, const Eigen:
     ws->products(p) = q(ij[0]) * q(ij[1]);
     if (damped) ws->products(p) += beta_s * (q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]));
   }
-  ws->z.noalias() = pair_stiffness * ws->products;
-  // C J(v) column by column from J's two entries per row: J(v)(p, i) = v_j, J(v)(p, j) = v_i
-  // (2 v_i when i = j), i.e. P M^2 multiply-adds instead of the dense P^2 M; J(q) and, damped,
-  // J(q') (dQ'/dq = J(q')).
-  ws->c_jac.setZero();
-  if (damped) ws->c_jac_rate.setZero();
+  applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);
+  // X J(v) with X = C or G, column by column from J's two entries per row: J(v)(p, i) = v_j,
+  // J(v)(p, j) = v_i (2 v_i when i = j), i.e. 2 P rows(X) multiply-adds instead of the dense
+  // P rows(X) M; J(q) and, damped, J(q') (dQ'/dq = J(q')).
+  const Eigen::MatrixXd& x = factored() ? strain_factor : pair_stiffness;
+  ws->jac.setZero();
+  if (damped) ws->jac_rate.setZero();
   for (int p = 0; p < np; ++p) {
     const auto& ij = pairs[static_cast<std::size_t>(p)];
-    const auto c = pair_stiffness.col(p);
-    ws->c_jac.col(ij[0]).noalias() += q(ij[1]) * c;
-    ws->c_jac.col(ij[1]).noalias() += q(ij[0]) * c;
+    const auto c = x.col(p);
+    ws->jac.col(ij[0]).noalias() += q(ij[1]) * c;
+    ws->jac.col(ij[1]).noalias() += q(ij[0]) * c;
     if (damped) {
-      ws->c_jac_rate.col(ij[0]).noalias() += (beta_s * q_dot(ij[1])) * c;
-      ws->c_jac_rate.col(ij[1]).noalias() += (beta_s * q_dot(ij[0])) * c;
+      ws->jac_rate.col(ij[0]).noalias() += (beta_s * q_dot(ij[1])) * c;
+      ws->jac_rate.col(ij[1]).noalias() += (beta_s * q_dot(ij[0])) * c;
     }
   }
-  for (int p = 0; p < np; ++p) {  // J^T (C J), and sum_p z_p d2Q_p/dq2
+  if (factored()) {  // J^T C J = (G J)^T (G J), beta J^T C J(q') = (G J)^T (beta G J(q'))
+    gauss_newton->noalias() = ws->jac.transpose() * ws->jac;
+    if (damped) rest->noalias() = ws->jac.transpose() * ws->jac_rate;
+  }
+  for (int p = 0; p < np; ++p) {  // dense: J^T (C J) from J's two entries per row
     const auto& ij = pairs[static_cast<std::size_t>(p)];
-    gauss_newton->row(ij[0]).noalias() += q(ij[1]) * ws->c_jac.row(p);
-    gauss_newton->row(ij[1]).noalias() += q(ij[0]) * ws->c_jac.row(p);
-    if (damped) {
-      rest->row(ij[0]).noalias() += q(ij[1]) * ws->c_jac_rate.row(p);
-      rest->row(ij[1]).noalias() += q(ij[0]) * ws->c_jac_rate.row(p);
+    if (!factored()) {
+      gauss_newton->row(ij[0]).noalias() += q(ij[1]) * ws->jac.row(p);
+      gauss_newton->row(ij[1]).noalias() += q(ij[0]) * ws->jac.row(p);
+      if (damped) {
+        rest->row(ij[0]).noalias() += q(ij[1]) * ws->jac_rate.row(p);
+        rest->row(ij[1]).noalias() += q(ij[0]) * ws->jac_rate.row(p);
+      }
     }
-    (*rest)(ij[0], ij[1]) += ws->z(p);
+    (*rest)(ij[0], ij[1]) += ws->z(p);  // sum_p z_p d2Q_p/dq2
     (*rest)(ij[1], ij[0]) += ws->z(p);
   }
 }
 
 Eigen::MatrixXd ModalMembraneStiffness::tangent(const Eigen::VectorXd& q) const {
-  const int m = mode_count;
-  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(m, m);
+  Eigen::MatrixXd k = Eigen::MatrixXd::Zero(mode_count, mode_count);
   if (empty()) return k;
-  const int np = pairCount();
-  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(np, m);  // dQ/dq
-  Eigen::VectorXd products(np);
-  for (int p = 0; p < np; ++p) {
-    const auto& ij = pairs[static_cast<std::size_t>(p)];
-    jac(p, ij[0]) += q(ij[1]);
-    jac(p, ij[1]) += q(ij[0]);
-    products(p) = q(ij[0]) * q(ij[1]);
-  }
-  const Eigen::VectorXd z = pair_stiffness * products;
-  k.noalias() = jac.transpose() * (pair_stiffness * jac);
-  for (int p = 0; p < np; ++p) {  // sum_p z_p d^2 Q_p / dq dq
-    const auto& ij = pairs[static_cast<std::size_t>(p)];
-    k(ij[0], ij[1]) += z(p);
-    k(ij[1], ij[0]) += z(p);
-  }
+  TangentWorkspace ws(*this);
+  Eigen::MatrixXd rest(mode_count, mode_count);
+  tangentParts(q, Eigen::VectorXd::Zero(mode_count), 0.0, &ws, &k, &rest);
+  k += rest;
   return k;
 }
 
@@ -160,7 +209,7 @@ ModalMembraneStiffness modalMembraneStiffness(const VonKarmanTerms& terms,
                                               const DofPartition& part,
                                               const std::vector<Vec3>& nodes_W_m,
                                               const Eigen::MatrixXd& shapes,
-                                              bool keep_relaxation) {
+                                              const MembraneCondensationOptions& options) {
   const int n = terms.dofCount();
   const auto m = static_cast<int>(shapes.cols());
   if (shapes.rows() != n || stiffness.rows() != n ||
@@ -255,9 +304,32 @@ ModalMembraneStiffness modalMembraneStiffness(const VonKarmanTerms& terms,
     // C += U^T F (negative semi-definite: the membrane relaxes).
     const Eigen::MatrixXd relax = u_free.transpose() * f_free;
     cmat += 0.5 * (relax + relax.transpose());
-    if (keep_relaxation) out.relaxation = expandRows(u_free, in_plane, n);
+    if (options.keep_relaxation) out.relaxation = expandRows(u_free, in_plane, n);
   }
-  out.pair_stiffness = 0.5 * (cmat + cmat.transpose());
+  cmat = (0.5 * (cmat + cmat.transpose())).eval();  // eval: cmat.transpose() aliases cmat
+  Eigen::VectorXd pair_amplitude = Eigen::VectorXd::Ones(np);
+  double tolerance = 0.0;
+  if (options.mode_amplitude.size() > 0) {
+    if (options.mode_amplitude.size() != m || !(options.mode_amplitude.array() > 0.0).all() ||
+        !(options.rank_tolerance >= 0.0 && options.rank_tolerance < 1.0))
+      throw std::invalid_argument(
+          "membrane stiffness: mode amplitudes must be positive, one per mode, and the rank "
+          "tolerance in [0, 1)");
+    for (int p = 0; p < np; ++p) {
+      const auto& ij = out.pairs[static_cast<std::size_t>(p)];
+      pair_amplitude(p) = options.mode_amplitude(ij[0]) * options.mode_amplitude(ij[1]);
+    }
+    tolerance = options.rank_tolerance;
+  }
+  if (options.storage == MembraneStorage::kDense) {
+    out.pair_stiffness = std::move(cmat);
+    return out;
+  }
+  Eigen::MatrixXd factor = pivotedStrainFactor(cmat, pair_amplitude, tolerance);
+  if (options.storage == MembraneStorage::kCheaper && 2 * factor.rows() >= np)
+    out.pair_stiffness = std::move(cmat);
+  else
+    out.strain_factor = std::move(factor);
   return out;
 }
 
@@ -268,7 +340,7 @@ bool solveModalStatic(const Eigen::VectorXd& stiffness_diagonal,
   *q = Eigen::VectorXd::Zero(m);
   const double f_norm = modal_load.norm();
   if (f_norm == 0.0) return true;
-  ModalMembraneStiffness::Workspace ws(membrane.pairCount());
+  ModalMembraneStiffness::Workspace ws(membrane);
   auto residual = [&](const Eigen::VectorXd& x, double lambda) {
     Eigen::VectorXd r = stiffness_diagonal.cwiseProduct(x) - lambda * modal_load;
     membrane.addForce(x, &ws, &r);

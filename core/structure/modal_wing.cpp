@@ -61,6 +61,10 @@ bool ModalWingOptions::IsValid(std::string* why) const {
     if (why != nullptr) *why = "damping_ratio: expected in [0, 1)";
     return false;
   }
+  if (!(membrane_rank_tolerance >= 0.0 && membrane_rank_tolerance < 1.0)) {
+    if (why != nullptr) *why = "membrane_rank_tolerance: expected in [0, 1)";
+    return false;
+  }
   return true;
 }
 
@@ -152,10 +156,15 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
   if (options.geometric_stiffness)
     w.geometric_stiffness =
         modalGeometricStiffness(wing_structure, mesh, fe, part, w.mode_shapes, fe_options);
-  if (options.nonlinear)
+  if (options.nonlinear) {
+    // Truncated at the pairs' energy for the static response to unit modal forces (1/omega^2).
+    MembraneCondensationOptions condensation;
+    condensation.keep_relaxation = options.keep_membrane_relaxation;
+    condensation.mode_amplitude = w.stiffnessDiagonal().cwiseInverse();
+    condensation.rank_tolerance = options.membrane_rank_tolerance;
     w.membrane = modalMembraneStiffness(VonKarmanTerms(wing_structure, mesh), fe.stiffness, part,
-                                        mesh.nodes_W_m, w.mode_shapes,
-                                        options.keep_membrane_relaxation);
+                                        mesh.nodes_W_m, w.mode_shapes, condensation);
+  }
   w.member_mass_kg = fe.member_mass_kg;
   w.skin_mass_kg = fe.skin_mass_kg;
   w.wing_mass_kg = fe.totalMass_kg();

@@ -185,7 +185,7 @@ TEST(FeMembraneRomEfw, CondensationIsExactForVonKarmansOrdering) {
   addSkinPretension(v, mesh, options.support, &fe);
   const VonKarmanTerms von_karman(v, mesh, MemberStretch::kOutOfPlaneOnly);
   const VonKarmanTerms both_transverse(v, mesh);  // the default
-  ModalMembraneStiffness::Workspace ws(mw.membrane.pairCount());
+  ModalMembraneStiffness::Workspace ws(mw.membrane);
   const double rom_J =
       0.5 * q.dot(mw.stiffnessDiagonal().cwiseProduct(q)) + mw.membrane.energy(q, &ws);
   const double linear_J = 0.5 * u.dot(fe.stiffness * u);
