@@ -62,10 +62,6 @@ Eigen::MatrixXd pivotedStrainFactor(const Eigen::MatrixXd& c, const Eigen::Vecto
   return g;
 }
 
-}  // namespace
-
-namespace {
-
 // z = C x (P), through G when factored (strain = G x, R entries of scratch).
 void applyPairStiffness(const ModalMembraneStiffness& m, const Eigen::VectorXd& x,
                         Eigen::VectorXd* strain, Eigen::VectorXd* z) {
