@@ -22,8 +22,8 @@
 // displacements solved for once per pair instead of fitted (the relaxation Mignolet et al. 2013
 // require, done exactly); it has no quadratic term because a flat wing's bending cannot stretch
 // the membrane to first order. The modal force f = dV/dq and tangent derive from the one
-// potential, so the model conserves energy. Cost per right-hand side: 2 R P + 3P multiply-adds
-// with C = G^T G truncated to R strain directions (modalMembraneStiffness).
+// potential, so the model conserves energy. Cost per right-hand side: P^2 + 3P multiply-adds with
+// the dense C, 2 R P + 3P with C = G^T G truncated to R strain directions (modalMembraneStiffness).
 //
 // Why this route and not implicit condensation (Hollkamp & Gordon 2008) or a prestressed
 // linearisation: both need nonlinear static solves of the full model (ICE: hundreds for a cubic
@@ -102,7 +102,8 @@ struct ModalMembraneStiffness {
   /// beta D eps'): f += scale J^T C (Q + beta Q'), J = dQ/dq, Q' = J q'. The in-plane field
   /// follows q quasi-statically, so eps' is linear in Q' and the dissipation is beta Q'^T C Q'
   /// (the condensed strain energy of the strain rate, times beta): never negative. Returns the
-  /// force's power on q' (unscaled), dV_NL/dt + dissipation. 4 R P multiply-adds; no allocation.
+  /// force's power on q' (unscaled), dV_NL/dt + dissipation. One pass over C (P^2 multiply-adds)
+  /// or two over G (2 R P); no allocation.
   double addForce(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
                   Workspace* ws, Eigen::VectorXd* f, double scale = 1.0) const;
   /// The two parts of that power separately (for histories and checks).
@@ -150,8 +151,8 @@ struct MembraneCondensationOptions {
 /// evaluation then costs 2 R P instead of P^2. The truncated C is positive semi-definite and every
 /// force and tangent derives from its one potential, so the truncated wing still conserves
 /// energy; the left-out part is positive semi-definite too (a Schur complement), so truncation
-/// only softens, by at most the tolerance times the stiffest scaled pair's energy per left-out
-/// scaled pair. Measured on the magpie at Table 3's point (efw_magpie_table3, 10 tethered cycles,
+/// never stiffens the energy, and the left-out part's largest scaled diagonal is at most the
+/// tolerance times the largest of A C A. Measured on the magpie at Table 3's point (efw_magpie_table3, 10 tethered cycles,
 /// 1/omega^2 amplitudes): 48 modes, R = 684 (numerical rank) / 353 / 172 at tolerance 0 / 1e-10 /
 /// 1e-8: mean FV 1.30748 / 1.30749 / 1.275 N, 33 / 17.6 / 4.7 s; so 1e-10 (the default) and not
 /// 1e-8. 24 modes: R = 220 of P = 300 at 1e-10, and the dense C is cheaper (kCheaper keeps it).

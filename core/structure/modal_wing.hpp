@@ -41,7 +41,7 @@ struct ModalWingOptions {
   bool nonlinear = false;
   /// Keep the in-plane relaxation shapes of the condensation (tests, deflection output).
   bool keep_membrane_relaxation = false;
-  /// MembraneCondensationOptions::rank_tolerance (0: the condensed membrane untruncated).
+  /// MembraneCondensationOptions::rank_tolerance (0: truncated only at C's numerical rank).
   double membrane_rank_tolerance = 1e-10;
 
   bool IsValid(std::string* why) const;
