@@ -32,13 +32,6 @@ ModalImplicitSplit::ModalImplicitSplit(const FlexibleWingModel& flex, int q_offs
       S_(flex.mode_count, flex.mode_count),
       S_chol_(flex.mode_count),
       lu_(flex.mode_count),
-      S_inv_(flex.mode_count, flex.mode_count),
-      H_(flex.mode_count, flex.mode_count),
-      res_(flex.mode_count),
-      res_prev_(flex.mode_count),
-      step_prev_(flex.mode_count),
-      h_y_(flex.mode_count),
-      h_t_s_(flex.mode_count),
       w_(flex.mode_count),
       r_(flex.mode_count) {
   if (mode_count_ < 1 || q_offset < 0 || q_offset + 2 * mode_count_ > state_count)
@@ -134,12 +127,19 @@ void ModalImplicitSplit::factor(double gamma) {
       throw std::runtime_error("ModalImplicitSplit: stage matrix is not positive definite");
   } else {
     // The membrane's Jacobian is not symmetric (the damping force changes with q) and its stress
-    // part can be indefinite (compressed skin loses bending stiffness): LU with pivoting, kept as
-    // the inverse that Broyden's method updates (M^3, against the tangent's ~P^2 M / 12).
+    // part can be indefinite (compressed skin loses bending stiffness): LU with pivoting.
     lu_.compute(S_);
-    S_inv_ = lu_.inverse();
   }
   gamma_ = gamma;
+}
+
+void ModalImplicitSplit::solveStageMatrix() {
+  if (membrane_ != nullptr) {
+    w_ = lu_.solve(r_);
+    r_ = w_;
+  } else {
+    S_chol_.solveInPlace(r_);
+  }
 }
 
 int ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
@@ -159,49 +159,26 @@ int ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
     }
     return 0;
   }
-  // Nonlinear stage equation x - gamma f_I(x) = b, modal rows only, by a quasi-Newton method,
-  // from the caller's guess in x:
-  //   r_q = x_q - gamma x_qd - b_q,   R = A0 (x_qd - b_qd) + gamma g(x),
-  //   d_qd = H (R - gamma K r_q),   d_q = r_q + gamma d_qd,   x -= d,
-  // with H = S^{-1} of the last linearisation. After the first iteration r_q = 0 and the iteration
-  // solves R(x_qd) = 0 (x_q = b_q + gamma x_qd), whose Jacobian is S = A0 + gamma D + gamma^2 K:
-  // from there each step updates H by Broyden's "good" rank-one formula,
-  //   H += (s - H y) s^T H / (s^T H y),   s = the last step in x_qd, y = the change of R,
-  // so the iteration follows the cubic membrane's stiffening within the step without a new
-  // tangent (Dennis & Schnabel 1996, 8.1; superlinear where Newton's method with a held matrix
-  // contracts only linearly). It re-linearises when that is not enough (below).
+  // Nonlinear stage equation x - gamma f_I(x) = b, modal rows only, by Newton's method with the
+  // matrix of the last linearisation, from the caller's guess in x:
+  //   r_q = x_q - gamma x_qd - b_q,   A0 r_qd = A0 (x_qd - b_qd) + gamma g(x),
+  //   S d_qd = A0 r_qd - gamma K r_q,   d_q = r_q + gamma d_qd,   x -= d.
   Eigen::Map<Eigen::VectorXd> xq(x + off_, mode_count_), xqd(x + off_ + mode_count_, mode_count_);
   double last_correction = std::numeric_limits<double>::infinity();
   const double q_scale = bq.lpNorm<Eigen::Infinity>(), qd_scale = bqd.lpNorm<Eigen::Infinity>();
-  H_ = S_inv_;
-  bool secant = false;  // res_prev_ and step_prev_ hold the last step of R(x_qd) = 0
   for (int it = 0; it < kMaxNewtonIterations; ++it) {
     restoring(xq, xqd);
     rq_ = xq - gamma * xqd - bq;
     w_ = xqd - bqd;
-    res_.noalias() = A0_ * w_;
-    res_.noalias() += gamma * g_;
-    if (secant) {
-      res_prev_ = res_ - res_prev_;  // y
-      h_y_.noalias() = H_ * res_prev_;
-      const double denominator = step_prev_.dot(h_y_);
-      if (std::abs(denominator) > 1e-12 * step_prev_.norm() * h_y_.norm()) {
-        h_t_s_.noalias() = H_.transpose() * step_prev_;
-        h_y_ = (step_prev_ - h_y_) / denominator;
-        H_.noalias() += h_y_ * h_t_s_.transpose();
-      }
-    }
-    r_ = res_;
+    r_.noalias() = A0_ * w_;
+    r_.noalias() += gamma * g_;
     r_.noalias() -= gamma * (K_ * rq_);
-    w_.noalias() = H_ * r_;
-    xqd -= w_;
-    rq_ += gamma * w_;
+    solveStageMatrix();
+    xqd -= r_;
+    rq_ += gamma * r_;
     xq -= rq_;
     ++newton_iterations_;
-    secant = it >= 1;  // from the second step on, r_q was 0 before it
-    res_prev_ = res_;
-    step_prev_ = -w_;
-    const double correction = w_.lpNorm<Eigen::Infinity>();  // of q' (that of q is gamma times it)
+    const double correction = r_.lpNorm<Eigen::Infinity>();  // of q' (that of q is gamma times it)
     // Converged relative to the stage's known data b, not to the iterate: an iterate that ran
     // away (the cubic membrane force grows fast) must not pass a test its own size loosens.
     // SUNDIALS 6.4 cannot recover from a right-hand side that fails after an accepted stage solve
@@ -213,13 +190,13 @@ int ModalImplicitSplit::solve(double gamma, const double* b, double* x) {
     if (rq_.lpNorm<Eigen::Infinity>() <= kNewtonTolerance * (q_scale + kModalScale_msqrtkg) &&
         correction <= kNewtonTolerance * (qd_scale + kModalRateScale))
       return 0;
-    // Re-linearise about the iterate when a correction is not 2x below the last (the updates
-    // start again from the new matrix, for this and the step's following stages).
+    // Newton's matrix is that of the step's start (or of an earlier iterate): the cubic membrane
+    // stiffens within a step and its damping force changes with q, and with a stale matrix the
+    // iteration only contracts linearly. Re-linearise about the iterate when a correction is not
+    // 4x below the last (full Newton from there, for this and the step's following stages).
     if (correction > kRelineariseRatio * last_correction) {
       linearise(xq, xqd);
       factor(gamma);
-      H_ = S_inv_;
-      secant = false;
     }
     last_correction = correction;
   }

@@ -20,11 +20,8 @@
 // the fixed A0: the mismatch (M(t)^{-1} - A0^{-1}) f_NL, from the separation-dependent apparent
 // mass, is stiff in the explicit part). After every accepted step (OdeIntegrator's update hook)
 // the system passes its effective modal mass at the new state, and the Newton matrix takes the
-// membrane's tangent there; within a stage solve Broyden's method updates that matrix's inverse
-// from the residuals (a tangent costs ~2 P^2 multiply-adds, an update 4 M^2), and the solve
-// re-linearises about its iterate when it stops contracting (a hardening spring whose stage
-// stiffness exceeds twice the matrix's). Measured on the slack magpie, 24 modes, 10 tethered
-// cycles: 0.62 s with the held matrix, 0.47 s with the updates (mean FV 1.52618 / 1.52606 N).
+// membrane's tangent there; Newton's method re-linearises about its iterate when it stops
+// contracting (a hardening spring whose stage stiffness exceeds twice the matrix's).
 //
 // The linear wing's stage equations (I - gamma L) x = b reduce to one M x M SPD solve:
 //   (A0 + gamma D + gamma^2 K) x_qd = A0 b_qd - gamma K b_q,   x_q = b_q + gamma x_qd,
@@ -69,17 +66,15 @@ class ModalImplicitSplit {
   void restoring(const Eigen::Ref<const Eigen::VectorXd>& q,
                  const Eigen::Ref<const Eigen::VectorXd>& qd);
   void factor(double gamma);
+  void solveStageMatrix();  // r_ = S^{-1} r_
   // K, D of the Newton matrix: the linear modes plus the membrane's tangent at q.
   void linearise(const Eigen::Ref<const Eigen::VectorXd>& q,
                  const Eigen::Ref<const Eigen::VectorXd>& qd);
   static constexpr int kMaxNewtonIterations = 12;
   // Re-linearise when a correction is above this fraction of the last one. Measured on the slack
-  // magpie (24 modes, 10 tethered cycles), with Newton's matrix held between linearisations:
-  // 0.25 took 837 steps, 0.5 1102, 0.8 2110 (failed stages make the steps shorter). With its
-  // inverse updated by Broyden's method (below; 2026-12-06): 0.25 / 0.5 / 0.9 / 1.0 took 6031 /
-  // 6048 / 6762 / 7114 right-hand sides and 0.59 / 0.47 / 0.44 / 0.46 s, against 6388 and 0.62 s
-  // without the updates.
-  static constexpr double kRelineariseRatio = 0.5;
+  // magpie (24 modes, 10 tethered cycles): 0.25 took 837 steps, 0.5 1102, 0.8 2110 (failed
+  // stages make the steps shorter); each re-linearisation costs ~8 Newton iterations.
+  static constexpr double kRelineariseRatio = 0.25;
   // Newton's corrections end below 1e-6 of the iterate (plus a floor of the modal scales, 1e-6
   // m sqrt(kg) and 1e-4 m sqrt(kg)/s): two orders below the integrator's error weights, whose
   // absolute parts are 1e-3 and 1e-1 rel_tol (1e-7 and 1e-5 at the default rel_tol 1e-4).
@@ -106,9 +101,6 @@ class ModalImplicitSplit {
   Eigen::MatrixXd S_;
   SmallCholesky S_chol_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;  // S of the nonlinear wing
-  Eigen::MatrixXd S_inv_;  // S^{-1} of the nonlinear wing at the last factorisation
-  Eigen::MatrixXd H_;      // S^{-1} with the Broyden updates of the current stage solve
-  Eigen::VectorXd res_, res_prev_, step_prev_, h_y_, h_t_s_;  // Newton residuals, the last step
   Eigen::VectorXd w_, r_;
 };
 
