@@ -76,9 +76,10 @@ class ModalImplicitSplit {
   // stages make the steps shorter); each re-linearisation costs ~8 Newton iterations.
   // Tried 2026-12-06 and withdrawn: Broyden updates of S^{-1} between linearisations (ratio 0.5)
   // took these 10 cycles from 0.62 to 0.48 s with the cycle means moved by 2e-4, but moved the
-  // calibrated vehicle (efw_magpie_table3) onto another orbit: its release state at Table 3's
-  // trim came out at theta -11.5 deg, Q 754 deg/s instead of 9.4 deg, and both Eq. 5 verdicts
-  // (table3_trim, fig6_8_free_flight_table3) flipped. Also measured: a Newton tolerance of 1e-5
+  // calibrated vehicle (efw_magpie_table3) onto another orbit: released at Table 3's point
+  // (fig6_8_free_flight_table3) it starts at theta -11.5 deg, Q 754 deg/s (without the updates:
+  // 10.3 deg, 82 deg/s on an Intel machine, 9.4 deg, -57 deg/s on an AMD one) and is judged
+  // unbounded (bounded on both machines without). Also measured: a Newton tolerance of 1e-5
   // saves 7 %, ARKODE's predictors 1-3 cost 20-80 % more right-hand sides.
   static constexpr double kRelineariseRatio = 0.25;
   // Newton's corrections end below 1e-6 of the iterate (plus a floor of the modal scales, 1e-6
