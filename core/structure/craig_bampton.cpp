@@ -1,5 +1,6 @@
 // Craig-Bampton basis and ADAMS-style orthonormalisation (docs/theory.md 3.1, 3.2).
 #include "core/structure/craig_bampton.hpp"
+#include "core/structure/product_blocking.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,6 +14,7 @@ namespace orni::structure {
 
 CraigBamptonModel craigBampton(const SparseMatrix& stiffness, const SparseMatrix& mass,
                                const DofPartition& partition, const CraigBamptonOptions& options) {
+  planProductsWithFixedCacheSizes();  // the same bits on every CPU (docs/theory.md 3.7)
   const std::vector<int>& interior = partition.interior;
   const std::vector<int>& bf = partition.boundary_free;
   const int ni = static_cast<int>(interior.size());

@@ -1,6 +1,7 @@
 // Condensed membrane stiffness of the modal wing (membrane_rom.hpp, docs/theory.md 4.7).
 #include "core/structure/membrane_rom.hpp"
 #include "core/model/invariant.hpp"
+#include "core/structure/product_blocking.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -206,6 +207,7 @@ ModalMembraneStiffness modalMembraneStiffness(const VonKarmanTerms& terms,
                                               const std::vector<Vec3>& nodes_W_m,
                                               const Eigen::MatrixXd& shapes,
                                               const MembraneCondensationOptions& options) {
+  planProductsWithFixedCacheSizes();  // the same bits on every CPU (docs/theory.md 3.7)
   const int n = terms.dofCount();
   const auto m = static_cast<int>(shapes.cols());
   if (shapes.rows() != n || stiffness.rows() != n ||

@@ -1,6 +1,7 @@
 // Spectra shift-invert generalised eigen-solution (docs/theory.md 3.3).
 #include "core/structure/modal_solver.hpp"
 #include "core/model/invariant.hpp"
+#include "core/structure/product_blocking.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -136,6 +137,7 @@ EigenSolution dispatch(const SparseMatrix& stiffness, const SparseMatrix& mass, 
 
 EigenSolution lowestEigenpairs(const SparseMatrix& stiffness, const SparseMatrix& mass, int count,
                                const EigenSolveOptions& options) {
+  planProductsWithFixedCacheSizes();  // the same bits on every CPU (docs/theory.md 3.7)
   const int n = static_cast<int>(stiffness.rows());
   if (stiffness.cols() != n || mass.rows() != n || mass.cols() != n)
     throw std::invalid_argument("lowestEigenpairs: K and M must be square of the same size");

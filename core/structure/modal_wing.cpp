@@ -7,6 +7,7 @@
 
 #include "core/structure/craig_bampton.hpp"
 #include "core/structure/dof_partition.hpp"
+#include "core/structure/product_blocking.hpp"
 #include "core/structure/skin_pretension.hpp"
 #include "core/model/invalid_model_error.hpp"
 
@@ -88,6 +89,7 @@ ModalWingOptions modalWingOptionsOf(const WingFeSettings& fe) {
 
 ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& mesh,
                          const ModalWingOptions& options) {
+  planProductsWithFixedCacheSizes();  // the same bits on every CPU (docs/theory.md 3.7)
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("buildModalWing: " + why);
   if (mesh.p2_node < 0 || mesh.p2_node >= mesh.nodeCount())

@@ -10,6 +10,7 @@
 
 #include "core/structure/beam_element.hpp"
 #include "core/structure/geometric_stiffness.hpp"
+#include "core/structure/product_blocking.hpp"
 #include "core/structure/shell_element.hpp"
 #include "core/structure/skin_pretension.hpp"
 
@@ -243,6 +244,7 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
                                            const VonKarmanTerms& terms, const DofPartition& part,
                                            const Eigen::VectorXd& load,
                                            const NonlinearStaticOptions& options) {
+  planProductsWithFixedCacheSizes();  // the same bits on every CPU (docs/theory.md 3.7)
   std::string why;
   if (!options.IsValid(&why)) throw std::invalid_argument("nonlinear static: " + why);
   const int n = terms.dofCount();
