@@ -29,6 +29,13 @@ auto interruptible(Work&& work) -> decltype(work()) {
   std::packaged_task<Result()> task(std::forward<Work>(work));
   std::future<Result> done = task.get_future();
   bool interrupted = false;
+  // The handler's exception, taken out of the thread state until the worker has stopped: the
+  // run's last lines still go to Python's logging after the loop, and calling into Python with an
+  // exception pending fails there and (caught) clears it, which made an interrupted call raise
+  // "error_already_set called while Python error indicator not set" now and then.
+  PyObject* pending_type = nullptr;
+  PyObject* pending_value = nullptr;
+  PyObject* pending_traceback = nullptr;
   {
     py::gil_scoped_release release;
     std::thread worker(std::move(task));
@@ -37,6 +44,7 @@ auto interruptible(Work&& work) -> decltype(work()) {
       py::gil_scoped_acquire gil;
       forwardConsoleLines();  // progress reaches Python's logging while the run goes on
       if (PyErr_CheckSignals() != 0) {  // the handler's exception is now set in this thread
+        PyErr_Fetch(&pending_type, &pending_value, &pending_traceback);
         interrupted = true;
         requestCancellation();
       }
@@ -46,6 +54,7 @@ auto interruptible(Work&& work) -> decltype(work()) {
   forwardConsoleLines();  // the run's last lines (its result line)
   if (interrupted) {
     clearCancellation();  // the worker has stopped: the next call runs normally
+    PyErr_Restore(pending_type, pending_value, pending_traceback);  // takes the references back
     throw py::error_already_set();
   }
   return done.get();
