@@ -324,7 +324,10 @@ ModalMembraneStiffness modalMembraneStiffness(const VonKarmanTerms& terms,
     return out;
   }
   Eigen::MatrixXd factor = pivotedStrainFactor(cmat, pair_amplitude, tolerance);
-  if (options.storage == MembraneStorage::kCheaper && 2 * factor.rows() >= np)
+  // A factor of no rows (C = 0: the modes stretch nothing) is kept as the dense zero C, which
+  // factored() can tell from it, whatever the storage asked for.
+  if (factor.rows() == 0 ||
+      (options.storage == MembraneStorage::kCheaper && 2 * factor.rows() >= np))
     out.pair_stiffness = std::move(cmat);
   else
     out.strain_factor = std::move(factor);

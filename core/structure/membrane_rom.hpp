@@ -127,7 +127,7 @@ struct ModalMembraneStiffness {
 enum class MembraneStorage {
   kCheaper,  ///< the factor G if 2 R < P (an evaluation costs 2 R P against P^2), else C
   kDense,    ///< C (untruncated)
-  kFactor,   ///< G
+  kFactor,   ///< G (the dense C if C = 0: a factor of no rows)
 };
 struct MembraneCondensationOptions {
   MembraneStorage storage = MembraneStorage::kCheaper;

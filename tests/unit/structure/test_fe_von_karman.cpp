@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstdio>
+#include <limits>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -335,54 +336,82 @@ TEST(FeMembraneRom, DampedForceRatesAndTangentPartsMatchFiniteDifferences) {
 // 136 pairs: C's numerical rank is far below P), and at the default tolerance the clamped film's
 // large deflection (w/t ~ 6) within 1e-4 of the dense C's. Larger tolerances (printed) drop real
 // strain directions: 1e-3 keeps 13 and moves the centre by 1 %.
-TEST(FeMembraneRom, TruncatedFactorOnlySoftensAndKeepsTheLargeDeflection) {
-  const double a = 0.04, t = 4e-5;
-  VehicleModel v = fe_test::skinVehicle(t, 4e9, 0.3, 1400.0);
-  WingMesh mesh = fe_test::plateGridMesh(a, a, 6, 6, -a / 2, -a / 2, true);
-  mesh.p2_node = fe_test::gridNode(0, 0, 6);
-  const WingFeModel fe = assembleWingFe(v, mesh);
-  std::vector<int> held;
-  for (int n = 0; n < mesh.nodeCount(); ++n) {
-    const Vec3& x = mesh.nodes_W_m[static_cast<std::size_t>(n)];
-    if (std::abs(std::abs(x.x()) - a / 2) < 1e-12 || std::abs(std::abs(x.y()) - a / 2) < 1e-12)
-      for (int k = 0; k < kDofsPerNode; ++k) held.push_back(globalDof(n, k));
+// A clamped 40 mm square of polyester film (t = 0.04 mm, 6 x 6 grid: 25 interior nodes) and its
+// lowest out-of-plane modes (more out-of-plane than in-plane motion), at most `max_bending` of them:
+// the membrane tests' plate.
+struct ClampedFilm {
+  static constexpr double kSide_m = 0.04;
+  static constexpr double kThickness_m = 4e-5;
+  VehicleModel vehicle = fe_test::skinVehicle(kThickness_m, 4e9, 0.3, 1400.0);
+  WingMesh mesh;
+  WingFeModel fe;
+  DofPartition part;
+  Eigen::MatrixXd all_modes;      // every interior mode (6n x interior DOF)
+  Eigen::VectorXd all_omega2;     // their eigenvalues, (rad/s)^2
+  Eigen::MatrixXd shapes;         // the out-of-plane ones (6n x M)
+  Eigen::VectorXd omega2;         // theirs
+  int centre = fe_test::gridNode(3, 3, 6);
+
+  explicit ClampedFilm(int max_bending) {
+    const double a = kSide_m;
+    mesh = fe_test::plateGridMesh(a, a, 6, 6, -a / 2, -a / 2, true);
+    mesh.p2_node = fe_test::gridNode(0, 0, 6);
+    fe = assembleWingFe(vehicle, mesh);
+    std::vector<int> held;
+    for (int n = 0; n < mesh.nodeCount(); ++n) {
+      const Vec3& x = mesh.nodes_W_m[static_cast<std::size_t>(n)];
+      if (std::abs(std::abs(x.x()) - a / 2) < 1e-12 || std::abs(std::abs(x.y()) - a / 2) < 1e-12)
+        for (int k = 0; k < kDofsPerNode; ++k) held.push_back(globalDof(n, k));
+    }
+    part = makeDofPartition(fe.active, held);
+    const SparseMatrix k_ii = extractBlock(fe.stiffness, part.interior, part.interior);
+    const SparseMatrix m_ii = extractBlock(fe.mass, part.interior, part.interior);
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig{Eigen::MatrixXd(k_ii),
+                                                                       Eigen::MatrixXd(m_ii)};
+    all_modes = expandRows(eig.eigenvectors(), part.interior, fe.dofCount());
+    all_omega2 = eig.eigenvalues();
+    std::vector<Eigen::Index> bending;
+    for (Eigen::Index c = 0; c < all_modes.cols() && static_cast<int>(bending.size()) < max_bending;
+         ++c)
+      if (outOfPlaneShare(all_modes.col(c)) > 0.5) bending.push_back(c);
+    const auto m = static_cast<Eigen::Index>(bending.size());
+    shapes.resize(fe.dofCount(), m);
+    omega2.resize(m);
+    for (Eigen::Index j = 0; j < m; ++j) {
+      shapes.col(j) = all_modes.col(bending[static_cast<std::size_t>(j)]);
+      omega2(j) = all_omega2(bending[static_cast<std::size_t>(j)]);
+    }
   }
-  const DofPartition part = makeDofPartition(fe.active, held);
-  const SparseMatrix k_ii = extractBlock(fe.stiffness, part.interior, part.interior);
-  const SparseMatrix m_ii = extractBlock(fe.mass, part.interior, part.interior);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig{Eigen::MatrixXd(k_ii),
-                                                                     Eigen::MatrixXd(m_ii)};
-  const Eigen::MatrixXd all = expandRows(eig.eigenvectors(), part.interior, fe.dofCount());
-  std::vector<int> bending;  // the first 16 out-of-plane modes
-  for (Eigen::Index c = 0; c < all.cols() && bending.size() < 16; ++c) {
+  // w^2 / (u^2 + v^2 + w^2) over the nodes.
+  double outOfPlaneShare(const Eigen::VectorXd& shape) const {
     double out = 0.0, in = 0.0;
     for (int n = 0; n < mesh.nodeCount(); ++n) {
-      out += std::pow(all(globalDof(n, kW), c), 2);
-      in += std::pow(all(globalDof(n, kU), c), 2) + std::pow(all(globalDof(n, kV), c), 2);
+      out += std::pow(shape(globalDof(n, kW)), 2);
+      in += std::pow(shape(globalDof(n, kU)), 2) + std::pow(shape(globalDof(n, kV)), 2);
     }
-    if (out > in) bending.push_back(static_cast<int>(c));
+    return out / (out + in);
   }
-  const auto m = static_cast<Eigen::Index>(bending.size());
-  Eigen::MatrixXd shapes(fe.dofCount(), m);
-  Eigen::VectorXd omega2(m);
-  for (Eigen::Index j = 0; j < m; ++j) {
-    shapes.col(j) = all.col(bending[static_cast<std::size_t>(j)]);
-    omega2(j) = eig.eigenvalues()(bending[static_cast<std::size_t>(j)]);
-  }
-  const VonKarmanTerms terms(v, mesh);
+};
+
+TEST(FeMembraneRom, TruncatedFactorOnlySoftensAndKeepsTheLargeDeflection) {
+  const ClampedFilm film(16);  // the first 16 out-of-plane modes
+  const double t = ClampedFilm::kThickness_m;
+  const VonKarmanTerms terms(film.vehicle, film.mesh);
   MembraneCondensationOptions dense_options;
   dense_options.storage = MembraneStorage::kDense;
   const ModalMembraneStiffness dense =
-      modalMembraneStiffness(terms, fe.stiffness, part, mesh.nodes_W_m, shapes, dense_options);
+      modalMembraneStiffness(terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m,
+                             film.shapes, dense_options);
   const Eigen::MatrixXd c = dense.pair_stiffness;
   MembraneCondensationOptions factor_options;
   factor_options.storage = MembraneStorage::kFactor;
-  factor_options.mode_amplitude = omega2.cwiseInverse();
+  factor_options.mode_amplitude = film.omega2.cwiseInverse();
   for (const double tolerance : {0.0, 1e-10, 1e-4, 1e-3, 1e-2}) {
     SCOPED_TRACE(tolerance);
     factor_options.rank_tolerance = tolerance;
     const ModalMembraneStiffness rom =
-        modalMembraneStiffness(terms, fe.stiffness, part, mesh.nodes_W_m, shapes, factor_options);
+        modalMembraneStiffness(terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m,
+                               film.shapes, factor_options);
     ASSERT_TRUE(rom.factored());
     const Eigen::MatrixXd left_out = c - rom.pairStiffness();
     const double c_max = c.cwiseAbs().maxCoeff();
@@ -392,12 +421,11 @@ TEST(FeMembraneRom, TruncatedFactorOnlySoftensAndKeepsTheLargeDeflection) {
       EXPECT_LT(left_out.cwiseAbs().maxCoeff(), 1e-10 * c_max);
     }
     Eigen::VectorXd q_dense, q_rom;
-    const Eigen::VectorXd load = shapes.transpose() * pressureLoad(mesh, 40.0);
-    ASSERT_TRUE(solveModalStatic(omega2, dense, load, &q_dense, 10));
-    ASSERT_TRUE(solveModalStatic(omega2, rom, load, &q_rom, 10));
-    const int centre = fe_test::gridNode(3, 3, 6);
-    const double w_dense = (shapes * q_dense)(globalDof(centre, kW));
-    const double w_rom = (shapes * q_rom)(globalDof(centre, kW));
+    const Eigen::VectorXd load = film.shapes.transpose() * pressureLoad(film.mesh, 40.0);
+    ASSERT_TRUE(solveModalStatic(film.omega2, dense, load, &q_dense, 10));
+    ASSERT_TRUE(solveModalStatic(film.omega2, rom, load, &q_rom, 10));
+    const double w_dense = (film.shapes * q_dense)(globalDof(film.centre, kW));
+    const double w_rom = (film.shapes * q_rom)(globalDof(film.centre, kW));
     EXPECT_GT(w_dense / t, 5.0);
     if (tolerance <= 1e-10) {
       EXPECT_NEAR(w_rom / w_dense, 1.0, 1e-4);
@@ -407,54 +435,62 @@ TEST(FeMembraneRom, TruncatedFactorOnlySoftensAndKeepsTheLargeDeflection) {
   }
 }
 
+// Modes that stretch nothing (in-plane shapes with no out-of-plane part): C = 0, whose factor has
+// no rows. Every storage keeps it as the dense zero C, and the membrane adds no energy or force.
+TEST(FeMembraneRom, ModesThatStretchNothingGiveAZeroMembrane) {
+  const ClampedFilm film(0);
+  std::vector<Eigen::Index> in_plane;
+  for (Eigen::Index c = 0; c < film.all_modes.cols() && in_plane.size() < 3; ++c)
+    if (film.outOfPlaneShare(film.all_modes.col(c)) < 0.5) in_plane.push_back(c);
+  ASSERT_EQ(in_plane.size(), 3u);
+  Eigen::MatrixXd shapes(film.fe.dofCount(), 3);
+  for (Eigen::Index j = 0; j < 3; ++j) {
+    shapes.col(j) = film.all_modes.col(in_plane[static_cast<std::size_t>(j)]);
+    for (int n = 0; n < film.mesh.nodeCount(); ++n)
+      for (const int k : {kW, kThetaX, kThetaY}) shapes(globalDof(n, k), j) = 0.0;
+  }
+  const VonKarmanTerms terms(film.vehicle, film.mesh);
+  for (const MembraneStorage storage :
+       {MembraneStorage::kCheaper, MembraneStorage::kDense, MembraneStorage::kFactor}) {
+    SCOPED_TRACE(static_cast<int>(storage));
+    MembraneCondensationOptions options;
+    options.storage = storage;
+    options.mode_amplitude = Eigen::VectorXd::Ones(3);
+    options.rank_tolerance = 1e-10;
+    const ModalMembraneStiffness rom = modalMembraneStiffness(
+        terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, shapes, options);
+    EXPECT_FALSE(rom.factored());
+    ASSERT_EQ(rom.pair_stiffness.rows(), rom.pairCount());
+    EXPECT_EQ(rom.pair_stiffness.cwiseAbs().maxCoeff(), 0.0);
+    ModalMembraneStiffness::Workspace ws(rom);
+    const Eigen::VectorXd q = Eigen::VectorXd::Constant(3, 1e-3);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(3);
+    rom.addForce(q, &ws, &f);
+    EXPECT_EQ(f.cwiseAbs().maxCoeff(), 0.0);
+    EXPECT_EQ(rom.energy(q, &ws), 0.0);
+  }
+}
+
 // With every out-of-plane mode kept, the reduced static solution is the full nonlinear one:
 // a clamped plate (no P3, no members) under a pressure that deflects it ~10 thicknesses.
 TEST(FeMembraneRom, WithAllBendingModesTheReducedStaticIsTheFullOne) {
-  const double a = 0.04, t = 4e-5;
-  VehicleModel v = fe_test::skinVehicle(t, 4e9, 0.3, 1400.0);  // a polyester film
-  WingMesh mesh = fe_test::plateGridMesh(a, a, 6, 6, -a / 2, -a / 2, true);
-  mesh.p2_node = fe_test::gridNode(0, 0, 6);
-  const WingFeModel fe = assembleWingFe(v, mesh);
-  std::vector<int> held;
-  for (int n = 0; n < mesh.nodeCount(); ++n) {
-    const Vec3& x = mesh.nodes_W_m[static_cast<std::size_t>(n)];
-    if (std::abs(std::abs(x.x()) - a / 2) < 1e-12 || std::abs(std::abs(x.y()) - a / 2) < 1e-12)
-      for (int k = 0; k < kDofsPerNode; ++k) held.push_back(globalDof(n, k));
-  }
-  const DofPartition part = makeDofPartition(fe.active, held);
   // Every out-of-plane mode of the interior: 3 DOF x 25 interior nodes.
-  const SparseMatrix k_ii = extractBlock(fe.stiffness, part.interior, part.interior);
-  const SparseMatrix m_ii = extractBlock(fe.mass, part.interior, part.interior);
-  const Eigen::MatrixXd k_dense(k_ii), m_dense(m_ii);
-  const Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> eig(k_dense, m_dense);
-  const Eigen::MatrixXd all = expandRows(eig.eigenvectors(), part.interior, fe.dofCount());
-  std::vector<int> bending;
-  for (Eigen::Index c = 0; c < all.cols(); ++c) {
-    double out = 0.0, in = 0.0;
-    for (int n = 0; n < mesh.nodeCount(); ++n) {
-      out += std::pow(all(globalDof(n, kW), c), 2);
-      in += std::pow(all(globalDof(n, kU), c), 2) + std::pow(all(globalDof(n, kV), c), 2);
-    }
-    if (out > in) bending.push_back(static_cast<int>(c));
-  }
-  Eigen::MatrixXd shapes(fe.dofCount(), static_cast<Eigen::Index>(bending.size()));
-  Eigen::VectorXd omega2(shapes.cols());
-  for (std::size_t j = 0; j < bending.size(); ++j) {
-    shapes.col(static_cast<Eigen::Index>(j)) = all.col(bending[j]);
-    omega2(static_cast<Eigen::Index>(j)) = eig.eigenvalues()(bending[j]);
-  }
-  const VonKarmanTerms terms(v, mesh);
+  const ClampedFilm film(std::numeric_limits<int>::max());
+  ASSERT_EQ(film.shapes.cols(), 75);
+  const double t = ClampedFilm::kThickness_m;
+  const VonKarmanTerms terms(film.vehicle, film.mesh);
   const ModalMembraneStiffness rom =
-      modalMembraneStiffness(terms, fe.stiffness, part, mesh.nodes_W_m, shapes);
-  const Eigen::VectorXd load = pressureLoad(mesh, 40.0);
+      modalMembraneStiffness(terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, film.shapes);
+  const Eigen::VectorXd load = pressureLoad(film.mesh, 40.0);
   NonlinearStaticOptions options;
   options.load_steps = 10;
-  const NonlinearStaticResult full = solveNonlinearStatic(fe.stiffness, terms, part, load, options);
+  const NonlinearStaticResult full =
+      solveNonlinearStatic(film.fe.stiffness, terms, film.part, load, options);
   ASSERT_TRUE(full.converged) << full.message;
   Eigen::VectorXd q;
-  ASSERT_TRUE(solveModalStatic(omega2, rom, shapes.transpose() * load, &q, 10));
-  const Eigen::VectorXd u_rom = shapes * q;
-  const int centre = fe_test::gridNode(3, 3, 6);
+  ASSERT_TRUE(solveModalStatic(film.omega2, rom, film.shapes.transpose() * load, &q, 10));
+  const Eigen::VectorXd u_rom = film.shapes * q;
+  const int centre = film.centre;
   const double w_full = full.displacement(globalDof(centre, kW));
   EXPECT_GT(w_full / t, 5.0);
   // The same energy over the same out-of-plane space; the in-plane relaxation drops only its own
@@ -464,7 +500,8 @@ TEST(FeMembraneRom, WithAllBendingModesTheReducedStaticIsTheFullOne) {
   NonlinearStaticOptions lin = options;
   lin.nonlinear = false;
   const double w_linear =
-      solveNonlinearStatic(fe.stiffness, terms, part, load, lin).displacement(globalDof(centre, kW));
+      solveNonlinearStatic(film.fe.stiffness, terms, film.part, load, lin)
+          .displacement(globalDof(centre, kW));
   EXPECT_GT(w_linear / w_full, 3.0);
 }
 
