@@ -34,6 +34,8 @@ struct PeriodicTrimOptions {
   /// Step control of the integration grid of the period map, (0, 1e-3]. 1e-5 (50 steps per period
   /// on the flexible magpie at 12 Hz): its orbit's cycle means move by 0.0003 deg and 0.0005 m/s,
   /// the tail angle by 0.0003 deg and the leading multiplier by < 1e-6 against 1e-6 (82 steps).
+  /// The strongly damped wing modes' multipliers (|mu| ~0.08) it resolves to 0.01 in modulus only,
+  /// not in argument (docs/theory.md 10.4).
   double rel_tol = 1e-5;
   int max_iterations = 40;      ///< Newton iterations, [1, 1000]
   int history_samples = 200;    ///< samples of the orbit's histories (one period), [8, 100000]

@@ -11,7 +11,9 @@
 //   - the two-stage trim (Eq. (4), then level settled free flight) finds the same orbit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <complex>
 #include <string>
 #include <vector>
@@ -138,6 +140,56 @@ TEST_F(PeriodicTrimEfw, ConvergesToALevelPeriodicOrbitThatIsStable) {
   const double sampled_mean = power_sum / static_cast<double>(s.history.samples.size() - 1);
   ASSERT_GT(s.mean.power_aero_W, 0.0);
   EXPECT_NEAR(sampled_mean / s.mean.power_aero_W, 1.0, 0.01);
+}
+
+// Issue 27's convergence check of the chosen tolerances: the periodic trim at its defaults (period
+// map grid rel_tol 1e-5, periodic residual 1e-8) against a reference with the grid 100 times
+// tighter (1e-7) and the residual at 1e-10. Measured 2026-12-06 (printed below): the trim moves by
+// 2e-4 deg, 7e-4 m/s and 5e-4 deg (the issue's bounds: 0.05 deg, 0.02 m/s), the flight-dynamics
+// multipliers (phugoid, short period) by 3e-6 and 7e-5 (bound 1e-4). The strongly damped wing
+// modes (|mu| ~0.08: 92 % of the motion gone in a cycle) are not resolved by the default grid: their
+// moduli move by 0.002-0.006, their arguments by up to 60 deg, and they converge only slowly with
+// the grid (wing mode 13: 0.0066+0.0716i / -0.0032+0.0708i / -0.0045+0.0705i at 1e-6 / 1e-7 / 1e-8).
+// So the 1e-4 holds for the multipliers that decide the stability margin, and a wing mode's
+// multiplier is good to 0.01 in modulus only (docs/theory.md 10.4).
+TEST_F(PeriodicTrimEfw, DefaultTolerancesAgreeWithATightReference) {
+  const PeriodicTrimSummary& s = *trim_;
+  ASSERT_EQ(s.status, TrimStatus::kOk) << s.message;
+  TrimOptions tight = periodicOptions(*vehicle_);
+  tight.periodic.rel_tol = 1e-7;
+  tight.periodic.residual_tol = 1e-10;
+  const PeriodicTrimSummary ref = solvePeriodicTrim(*model_, tight);
+  ASSERT_EQ(ref.status, TrimStatus::kOk) << ref.message;
+  const double d_theta_deg = (s.solution.theta_rad - ref.solution.theta_rad) * kRadToDeg;
+  const double d_speed_mps = s.solution.speed_mps - ref.solution.speed_mps;
+  const double d_tail_deg = (s.solution.tail_angle_rad - ref.solution.tail_angle_rad) * kRadToDeg;
+  EXPECT_LT(std::abs(d_theta_deg), 0.05);
+  EXPECT_LT(std::abs(d_speed_mps), 0.02);
+  EXPECT_LT(std::abs(d_tail_deg), 0.05);
+
+  ASSERT_TRUE(s.floquet_valid && ref.floquet_valid);
+  ASSERT_EQ(s.floquet.multipliers.size(), ref.floquet.multipliers.size());
+  constexpr double kFlightDynamicsModulus = 0.2;  // phugoid 0.98, short period 0.34; wings < 0.1
+  double d_flight = 0.0, d_wing_modulus = 0.0;
+  int flight_count = 0;
+  for (std::size_t i = 0; i < s.floquet.multipliers.size(); ++i) {
+    const FloquetMultiplier& m = s.floquet.multipliers[i];
+    const FloquetMultiplier& r = ref.floquet.multipliers[i];  // by modulus, pairs adjacent
+    if (r.modulus > kFlightDynamicsModulus) {
+      EXPECT_EQ(m.label, r.label);
+      d_flight = std::max(d_flight, std::abs(m.mu - r.mu));
+      ++flight_count;
+    } else {
+      d_wing_modulus = std::max(d_wing_modulus, std::abs(m.modulus - r.modulus));
+    }
+  }
+  EXPECT_EQ(flight_count, 4);  // the phugoid and short-period pairs
+  EXPECT_LT(d_flight, 1e-4);
+  EXPECT_LT(d_wing_modulus, 0.01);
+  EXPECT_LT(std::abs(s.floquet.margin - ref.floquet.margin), 1e-4);
+  std::printf("default - tight: theta %.2e deg, U %.2e m/s, tail %.2e deg; flight-dynamics "
+              "multipliers %.2e, wing-mode moduli %.2e\n",
+              d_theta_deg, d_speed_mps, d_tail_deg, d_flight, d_wing_modulus);
 }
 
 // The leading 8 multipliers by Arnoldi against the full monodromy matrix (107 period maps) on the
