@@ -38,6 +38,10 @@ class FlexibleTetheredSystem {
   /// The linear modal part for implicit integration (modal_implicit_split.hpp).
   ModalImplicitSplit& split() { return split_; }
   bool nonlinearWing() const { return flex_.nonlinear(); }
+  /// Where rhs() evaluated the membrane force (nonlinear wing; null for the linear one).
+  const structure::ModalMembraneStiffness::Workspace* membraneWorkspace() const {
+    return flex_.nonlinear() ? &membrane_ws_ : nullptr;
+  }
   /// After an accepted step: the nonlinear wing's split re-linearised about y, with the modal
   /// mass at y (no-op for the linear wing).
   void updateSplit(double t_s, const double* y);

@@ -100,6 +100,10 @@ class FreeFlightSystem {
   bool hasModes() const { return mode_count_ > 0; }
   ModalImplicitSplit& split() { return *split_; }
   bool nonlinearWing() const { return model_->flex != nullptr && model_->flex->nonlinear(); }
+  /// Where rhs() evaluated the membrane force (nonlinear wing; null otherwise).
+  const structure::ModalMembraneStiffness::Workspace* membraneWorkspace() const {
+    return nonlinearWing() ? &ws_.membrane_ws : nullptr;
+  }
   /// After an accepted step: the nonlinear wing's split re-linearised about y, with one wing's
   /// effective modal mass at y (the Schur complement of the body rows; no-op for the linear wing).
   void updateSplit(double t_s, const double* y);

@@ -83,20 +83,24 @@ void ModalImplicitSplit::linearise(const Eigen::Ref<const Eigen::VectorXd>& q,
 }
 
 void ModalImplicitSplit::restoring(const Eigen::Ref<const Eigen::VectorXd>& q,
-                                   const Eigen::Ref<const Eigen::VectorXd>& qd) {
+                                   const Eigen::Ref<const Eigen::VectorXd>& qd,
+                                   const structure::ModalMembraneStiffness::Workspace* evaluated) {
   q_ = q;
   qd_ = qd;
   g_ = K_diag_.cwiseProduct(q_) + D_diag_.cwiseProduct(qd_);
-  membrane_->addForce(q_, qd_, membrane_beta_s_, &membrane_ws_, &g_);
+  if (evaluated == nullptr ||
+      !membrane_->addForceEvaluatedIn(*evaluated, q_, qd_, membrane_beta_s_, &g_))
+    membrane_->addForce(q_, qd_, membrane_beta_s_, &membrane_ws_, &g_);
 }
 
-void ModalImplicitSplit::stiffAcceleration(const double* y) {
+void ModalImplicitSplit::stiffAcceleration(
+    const double* y, const structure::ModalMembraneStiffness::Workspace* evaluated) {
   if (membrane_ == nullptr) {
     w_.noalias() = GH_ * Eigen::Map<const Eigen::VectorXd>(y + off_, 2 * mode_count_);
     return;
   }
   restoring(Eigen::Map<const Eigen::VectorXd>(y + off_, mode_count_),
-            Eigen::Map<const Eigen::VectorXd>(y + off_ + mode_count_, mode_count_));
+            Eigen::Map<const Eigen::VectorXd>(y + off_ + mode_count_, mode_count_), evaluated);
   w_.noalias() = A0_inv_ * g_;
 }
 
@@ -109,8 +113,9 @@ void ModalImplicitSplit::apply(const double* y, double* ydot) {
   }
 }
 
-void ModalImplicitSplit::removeFrom(const double* y, double* ydot) {
-  stiffAcceleration(y);
+void ModalImplicitSplit::removeFrom(const double* y, double* ydot,
+                                    const structure::ModalMembraneStiffness::Workspace* evaluated) {
+  stiffAcceleration(y, evaluated);
   for (int i = 0; i < mode_count_; ++i) {
     ydot[off_ + i] -= y[off_ + mode_count_ + i];
     ydot[off_ + mode_count_ + i] += w_[i];

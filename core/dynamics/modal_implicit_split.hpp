@@ -48,8 +48,11 @@ class ModalImplicitSplit {
 
   /// ydot = L y (zero outside the modal rows).
   void apply(const double* y, double* ydot);
-  /// ydot -= L y: turns a full right-hand side into the explicit part.
-  void removeFrom(const double* y, double* ydot);
+  /// ydot -= L y: turns a full right-hand side into the explicit part. `evaluated`: the
+  /// workspace in which that right-hand side evaluated the membrane force (nonlinear wing), whose
+  /// stress is reused when it was at this y (the same bits, one pass over C fewer).
+  void removeFrom(const double* y, double* ydot,
+                  const structure::ModalMembraneStiffness::Workspace* evaluated = nullptr);
   /// x = (I - gamma L)^{-1} b; for the nonlinear wing x - gamma f_I(x) = b by Newton's method.
   /// Returns 0, or 1 when Newton's method did not converge (the step is retried smaller).
   int solve(double gamma, const double* b, double* x);
@@ -61,10 +64,13 @@ class ModalImplicitSplit {
 
  private:
   // w = A0^{-1} (K q + D q-dot) = [A0^{-1} K, A0^{-1} D] (q; q-dot)
-  void stiffAcceleration(const double* y);
-  // g = K q + D q' + f_NL(q, q') of the linear modes and the membrane, into g_.
+  void stiffAcceleration(const double* y,
+                         const structure::ModalMembraneStiffness::Workspace* evaluated = nullptr);
+  // g = K q + D q' + f_NL(q, q') of the linear modes and the membrane, into g_ (f_NL from the
+  // stress in `evaluated` when it was at this state).
   void restoring(const Eigen::Ref<const Eigen::VectorXd>& q,
-                 const Eigen::Ref<const Eigen::VectorXd>& qd);
+                 const Eigen::Ref<const Eigen::VectorXd>& qd,
+                 const structure::ModalMembraneStiffness::Workspace* evaluated = nullptr);
   void factor(double gamma);
   void solveStageMatrix();  // r_ = S^{-1} r_
   // K, D of the Newton matrix: the linear modes plus the membrane's tangent at q.
@@ -119,14 +125,15 @@ class ModalImplicitSplit {
 void modalAbsoluteTolerances(double rel_tol, int mode_count, int offset, std::vector<double>* atol);
 
 /// The IMEX callbacks of a System with rhs(t, y, ydot), stateCount(), a ModalImplicitSplit&
-/// split() and the full right-hand side as System::rhsCallback: explicit part = rhs - L y,
+/// split(), membraneWorkspace() (where rhs evaluated the membrane force, or null) and the full
+/// right-hand side as System::rhsCallback: explicit part = rhs - L y,
 /// implicit part and solve from the split; and the flexible wing's two integrations of them.
 template <class System>
 struct ModalImex {
   static int explicitRhs(double t, const double* y, double* ydot, void* self) {
     auto* s = static_cast<System*>(self);
     s->rhs(t, y, ydot);
-    s->split().removeFrom(y, ydot);
+    s->split().removeFrom(y, ydot, s->membraneWorkspace());
     return 0;
   }
   static int implicitRhs(double, const double* y, double* ydot, void* self) {

@@ -89,6 +89,7 @@ void addPairForce(const ModalMembraneStiffness& m, const Eigen::VectorXd& q,
 
 double ModalMembraneStiffness::energy(const Eigen::VectorXd& q, Workspace* ws) const {
   if (empty()) return 0.0;
+  ws->holds_evaluation = false;  // z is overwritten
   pairProducts(*this, q, &ws->products);
   applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);
   return 0.5 * ws->products.dot(ws->z);
@@ -97,6 +98,7 @@ double ModalMembraneStiffness::energy(const Eigen::VectorXd& q, Workspace* ws) c
 void ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, Workspace* ws,
                                       Eigen::VectorXd* f, double scale) const {
   if (empty()) return;
+  ws->holds_evaluation = false;  // z is overwritten
   pairProducts(*this, q, &ws->products);
   applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);
   addPairForce(*this, q, ws->z, scale, f);
@@ -112,8 +114,24 @@ double ModalMembraneStiffness::addForce(const Eigen::VectorXd& q, const Eigen::V
     ws->products(p) = q(ij[0]) * q(ij[1]) + beta_s * ws->rates(p);  // Q + beta Q'
   }
   applyPairStiffness(*this, ws->products, &ws->strain, &ws->z);  // one pass over C or G
+  ws->evaluated_q = q;
+  ws->evaluated_q_dot = q_dot;
+  ws->evaluated_beta_s = beta_s;
+  ws->holds_evaluation = true;
   addPairForce(*this, q, ws->z, scale, f);
   return ws->rates.dot(ws->z);
+}
+
+bool ModalMembraneStiffness::addForceEvaluatedIn(const Workspace& evaluated,
+                                                 const Eigen::VectorXd& q,
+                                                 const Eigen::VectorXd& q_dot, double beta_s,
+                                                 Eigen::VectorXd* f, double scale) const {
+  if (empty()) return true;
+  if (!evaluated.holds_evaluation || evaluated.evaluated_beta_s != beta_s ||
+      evaluated.evaluated_q != q || evaluated.evaluated_q_dot != q_dot)
+    return false;
+  addPairForce(*this, q, evaluated.z, scale, f);
+  return true;
 }
 
 ModalMembraneStiffness::Rates ModalMembraneStiffness::rates(const Eigen::VectorXd& q,
@@ -121,6 +139,7 @@ ModalMembraneStiffness::Rates ModalMembraneStiffness::rates(const Eigen::VectorX
                                                             double beta_s, Workspace* ws) const {
   Rates r;
   if (empty()) return r;
+  ws->holds_evaluation = false;  // z is overwritten
   for (int p = 0; p < pairCount(); ++p) {
     const auto& ij = pairs[static_cast<std::size_t>(p)];
     ws->rates(p) = q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]);

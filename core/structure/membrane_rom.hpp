@@ -64,16 +64,23 @@ struct ModalMembraneStiffness {
                       : pair_stiffness;
   }
 
-  /// Scratch of one evaluation; no allocation after construction.
+  /// Scratch of one evaluation; no allocation after construction. After the damped addForce it
+  /// also holds what that evaluation was of (q, q', beta) and its stress z = C (Q + beta Q'), so
+  /// that another caller at the same state can reuse z (addForceEvaluatedIn).
   struct Workspace {
     Eigen::VectorXd products, z, rates, strain, strain_rate;  // P, P, P, R, R
+    Eigen::VectorXd evaluated_q, evaluated_q_dot;              // M, M
+    double evaluated_beta_s = 0.0;
+    bool holds_evaluation = false;  ///< z is the damped force's stress at the three above
     Workspace() = default;
     explicit Workspace(const ModalMembraneStiffness& m)
         : products(m.pairCount()),
           z(m.pairCount()),
           rates(m.pairCount()),
           strain(m.rank()),
-          strain_rate(m.rank()) {}
+          strain_rate(m.rank()),
+          evaluated_q(m.mode_count),
+          evaluated_q_dot(m.mode_count) {}
   };
   /// Scratch of the tangent; no allocation after construction.
   struct TangentWorkspace {
@@ -106,6 +113,14 @@ struct ModalMembraneStiffness {
   /// or two over G (2 R P); no allocation.
   double addForce(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
                   Workspace* ws, Eigen::VectorXd* f, double scale = 1.0) const;
+  /// The same force from the stress an earlier damped addForce left in `evaluated`, if that was
+  /// at exactly this (q, q', beta): f += scale J^T z in P multiply-adds, the same bits as
+  /// addForce. Returns false (f untouched) when `evaluated` holds another state. The implicit
+  /// integrator's explicit part asks for the membrane force twice at one state (the right-hand
+  /// side, then the implicit part removed from it): the second is this.
+  bool addForceEvaluatedIn(const Workspace& evaluated, const Eigen::VectorXd& q,
+                           const Eigen::VectorXd& q_dot, double beta_s, Eigen::VectorXd* f,
+                           double scale = 1.0) const;
   /// The two parts of that power separately (for histories and checks).
   Rates rates(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
               Workspace* ws) const;

@@ -11,6 +11,7 @@
 //   modes, and, with enough modes, against the full solution itself.
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <cstdio>
 #include <limits>
 #include <vector>
@@ -433,6 +434,47 @@ TEST(FeMembraneRom, TruncatedFactorOnlySoftensAndKeepsTheLargeDeflection) {
     std::printf("tolerance %g: R = %d of P = %d, centre w %.6e vs %.6e m\n", tolerance,
                 rom.rank(), rom.pairCount(), w_rom, w_dense);
   }
+}
+
+// The damped force from the stress an earlier evaluation left in its workspace: the same bits as
+// a new evaluation at that state, refused at any other state or after the workspace held another
+// evaluation (the explicit part of the implicit integration reuses it, modal_implicit_split.hpp).
+TEST(FeMembraneRom, ForceFromAnEarlierEvaluationIsTheSameBitsAtTheSameStateOnly) {
+  const ClampedFilm film(8);
+  const VonKarmanTerms terms(film.vehicle, film.mesh);
+  const ModalMembraneStiffness rom = modalMembraneStiffness(
+      terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, film.shapes);
+  const auto m = film.shapes.cols();
+  Eigen::VectorXd q(m), qd(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    q(i) = 1e-4 * std::sin(1.3 * static_cast<double>(i) + 0.2);
+    qd(i) = 3e-2 * std::cos(0.7 * static_cast<double>(i) - 0.4);
+  }
+  const double beta_s = 2e-4;
+  ModalMembraneStiffness::Workspace evaluated(rom), fresh(rom);
+  Eigen::VectorXd f_first = Eigen::VectorXd::Zero(m);
+  rom.addForce(q, qd, beta_s, &evaluated, &f_first);
+  // Onto a non-zero vector with a scale, as the split and the free flight add it.
+  const Eigen::VectorXd base = Eigen::VectorXd::LinSpaced(m, -1.0, 2.0);
+  Eigen::VectorXd f_new = base, f_reused = base;
+  rom.addForce(q, qd, beta_s, &fresh, &f_new, -1.0);
+  ASSERT_TRUE(rom.addForceEvaluatedIn(evaluated, q, qd, beta_s, &f_reused, -1.0));
+  EXPECT_EQ(std::memcmp(f_new.data(), f_reused.data(), sizeof(double) * static_cast<std::size_t>(m)),
+            0);
+  EXPECT_GT((f_new - base).norm(), 0.0);
+  // Another state, another damping: refused, f untouched.
+  Eigen::VectorXd untouched = base;
+  Eigen::VectorXd q_other = q;
+  q_other(0) = std::nextafter(q(0), 1.0);
+  EXPECT_FALSE(rom.addForceEvaluatedIn(evaluated, q_other, qd, beta_s, &untouched));
+  Eigen::VectorXd qd_other = qd;
+  qd_other(m - 1) *= 1.0 + 1e-15;
+  EXPECT_FALSE(rom.addForceEvaluatedIn(evaluated, q, qd_other, beta_s, &untouched));
+  EXPECT_FALSE(rom.addForceEvaluatedIn(evaluated, q, qd, 0.0, &untouched));
+  EXPECT_EQ(untouched, base);
+  // The workspace used for something else no longer holds the evaluation.
+  rom.energy(q, &evaluated);
+  EXPECT_FALSE(rom.addForceEvaluatedIn(evaluated, q, qd, beta_s, &untouched));
 }
 
 // Modes that stretch nothing (in-plane shapes with no out-of-plane part): C = 0, whose factor has
