@@ -14,7 +14,7 @@
 
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
-#include "studies/runner/commands/aeromap_figures.hpp"
+#include "studies/runner/plotting/aeromap_figures.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/distributed/farm_schedule.hpp"
 #include "studies/runner/distributed/point_farm.hpp"

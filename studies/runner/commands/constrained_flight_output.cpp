@@ -46,16 +46,6 @@ JsonObject epsilonJson(const EpsilonMetrics& m) {
       .set("max", orNull(m.max));
 }
 
-/// A tic step of 1, 2 or 5 times a power of ten giving about four intervals over `span`.
-double ticStep(double span) {
-  if (!(span > 0.0) || !std::isfinite(span)) return 1.0;
-  const double raw = span / 4.0;
-  const double decade = std::pow(10.0, std::floor(std::log10(raw)));
-  for (const double m : {1.0, 2.0, 5.0})
-    if (m * decade >= raw) return m * decade;
-  return 10.0 * decade;
-}
-
 }  // namespace
 
 std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(
@@ -123,80 +113,6 @@ JsonObject zmpSummary(const ConstrainedFlightTest& test) {
                .set("cycle", epsilonJson(test.cycle))
                .set("upstroke", epsilonJson(test.upstroke))
                .set("downstroke", epsilonJson(test.downstroke)));
-}
-
-std::string zmpFigureScript(const Study& study, const ConstrainedFlightTest& test, int cycle) {
-  using C = ZmpCsvColumns;
-  const double T = 1.0 / study.point.freq_hz;
-  const double t0 = test.samples.front().t_s;
-  const char* kUpColour = "#2471a3";
-  const char* kDownColour = "#c0392b";
-  std::ostringstream g;
-  g << "set multiplot title \"" << study.name
-    << " - constrained flight test (tethered): theta = " << study.point.theta_rad * kRadToDeg
-    << " deg, f = " << study.point.freq_hz << " Hz, U = " << study.point.speed_mps
-    << " m/s";
-  if (study.vehicle.tail.present)
-    g << ", tail = " << study.point.tail_angle_rad * kRadToDeg << " deg";
-  else
-    g << ", no tail (rig)";
-  g << ", cycle " << cycle
-    << "\" noenhanced font ',13'\n";
-  g << "set lmargin 13\nset rmargin 12\nset tmargin 0.5\nset bmargin 0.5\n";
-  // (a) coefficients against time over the cycle, downstroke shaded.
-  g << "set xrange [" << t0 << ":" << t0 + T << "]\n";
-  g << "set object 1 rect from " << t0 + 0.25 * T << ", graph 0 to " << t0 + 0.75 * T
-    << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
-  g << "set format x ''\nset size 1,0.18\n";
-  g << "set origin 0,0.75\nset ylabel 'C_{F,V} (-)'\nset y2label '{/Symbol d}_M (deg)'\n"
-       "set y2tics 20\nset ytics " << ticStep(test.CF_V.max - test.CF_V.min) << " nomirror\n"
-       "set key top right box opaque font ',10'\n"
-       "plot 'zmp.csv' skip 2 using "
-    << C::kT << ":" << C::kCFV
-    << " with lines lw 2 lc rgb '#333333' title 'C_{F,V}', '' skip 2 using " << C::kT << ":"
-    << C::kDelta
-    << " axes x1y2 with lines dt 2 lw 1 lc rgb '#888888' title '{/Symbol d}_M (right axis)'\n";
-  g << "unset y2tics\nunset y2label\nset key off\n";
-  g << "set origin 0,0.57\nset ytics " << ticStep(test.CF_H.max - test.CF_H.min)
-    << " mirror\nset ylabel 'C_{F,H} (-)'\nplot 'zmp.csv' skip 2 using " << C::kT
-    << ":" << C::kCFH << " with lines lw 2 lc rgb '#333333'\n";
-  g << "set origin 0,0.36\nset size 1,0.21\nset bmargin 3\nset format x '%g'\nset ytics "
-    << ticStep(test.CM_CG.max - test.CM_CG.min) << "\n"
-       "set xlabel 'time (s); shaded: downstroke' offset 0,0.5\n"
-       "set ylabel 'C_{M,CG} (-)'\nplot 'zmp.csv' skip 2 using "
-    << C::kT << ":" << C::kCM << " with lines lw 2 lc rgb '#333333'\n";
-  // (b) epsilon against delta_M (paper Fig. 9b).
-  g << "unset object 1\nset size 1,0.36\nset origin 0,0\nset tmargin 1\nset bmargin 6.5\n"
-       "set ytics autofreq\n";
-  const double a_deg = study.vehicle.flapping.amplitude_rad * kRadToDeg;
-  const double x_lim = 10.0 * std::ceil(a_deg / 10.0 + 1e-9);
-  g << "set xrange [" << -x_lim << ":" << x_lim << "]\n"
-       "set xlabel '{/Symbol d}_M (deg)' offset 0,0.3\n"
-       "set ylabel '{/Symbol e} = (x_{ZMP} - x_{CG}) / c_{MEAN} (-)'\n"
-       "set key outside below center horizontal maxrows 2 box font ',10'\n";
-  g << "set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'\n"
-       "set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'\n";
-  // Undefined epsilon (empty cells) and the other stroke become 1/0, which breaks the lines (a
-  // plain $N would make gnuplot skip the row as missing and draw across the gap).
-  g << "set label 3 'gaps: no ZMP where |C_{F,normal}| < " << 100.0 * test.options.singular_fraction
-    << " % of its maximum' at graph 0.99, graph 0.06 right font ',9'\n";
-  g << "plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', "
-       "'zmp.csv' skip 2 using "
-    << C::kDelta << ":(strcol(" << C::kStroke << ") eq 'up' && strcol(" << C::kEpsilon
-    << ") ne '' ? real(strcol(" << C::kEpsilon << ")) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 "
-       "lc rgb '" << kUpColour
-    << "' title 'upstroke', '' skip 2 using " << C::kDelta << ":(strcol(" << C::kStroke
-    << ") eq 'down' && strcol(" << C::kEpsilon << ") ne '' ? real(strcol(" << C::kEpsilon
-    << ")) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '"
-    << kDownColour << "' title 'downstroke'";
-  if (test.upstroke.weighted_mean)
-    g << ", " << *test.upstroke.weighted_mean << " with lines dt 2 lw 1.5 lc rgb '" << kUpColour
-      << "' title 'upstroke mean (|C_{F,normal}|-weighted)'";
-  if (test.downstroke.weighted_mean)
-    g << ", " << *test.downstroke.weighted_mean << " with lines dt 2 lw 1.5 lc rgb '"
-      << kDownColour << "' title 'downstroke mean (|C_{F,normal}|-weighted)'";
-  g << "\nunset label 1\nunset label 2\nunset label 3\nunset multiplot\n";
-  return g.str();
 }
 
 }  // namespace orni::studies

@@ -1,7 +1,8 @@
 // Outputs of the constrained flight test (paper section 4, Fig. 9) of a tethered simulate run:
-// zmp.csv (the last cycle), the "constrained_flight_test" object of summary.json and the figure
+// zmp.csv (the last cycle) and the "constrained_flight_test" object of summary.json; the figure
 // zmp.png/svg (top: C_F,V, C_F,H, C_M,CG over the last cycle; bottom: epsilon against delta_M,
-// upstroke and downstroke). Analysis in core/dynamics/zero_moment_point.hpp.
+// upstroke and downstroke) is plotting/flight_figures.hpp's. Analysis in
+// core/dynamics/zero_moment_point.hpp.
 #pragma once
 
 #include <filesystem>
@@ -34,8 +35,5 @@ CsvTable zmpTable(const ConstrainedFlightTest& test);
 
 /// The "constrained_flight_test" object of summary.json (undefined values are null).
 JsonObject zmpSummary(const ConstrainedFlightTest& test);
-
-/// The gnuplot body of the zmp figure (reads zmp.csv); `cycle` is the 1-based cycle shown.
-std::string zmpFigureScript(const Study& study, const ConstrainedFlightTest& test, int cycle);
 
 }  // namespace orni::studies

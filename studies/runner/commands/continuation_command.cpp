@@ -22,6 +22,7 @@
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "studies/runner/plotting/trim_figures.hpp"
 
 namespace orni::studies {
 
@@ -223,43 +224,6 @@ std::vector<JsonObject> stableStretches(PeriodicControl parameter,
   return out;
 }
 
-std::string branchFigure(const Study& study, PeriodicControl parameter, PeriodicControl control,
-                         const std::string& status) {
-  const std::string x = std::string(continuationParameterName(parameter)) + " (" +
-                        parameterUnit(parameter) + ")";
-  // Columns of continuation.csv: 2 parameter, 4 theta, 5 speed, 6 tail, 3 freq, 7 cg, 8 power,
-  // 9 max |mu|, 10 stable, 19 event (text; events are rows whose point repeats the next one).
-  const int control_col = control == PeriodicControl::kTailAngle   ? 6
-                          : control == PeriodicControl::kFrequency ? 3
-                                                                   : 7;
-  const std::string control_label = control == PeriodicControl::kTailAngle ? "tail angle (deg)"
-                                    : control == PeriodicControl::kFrequency
-                                        ? "frequency (Hz)"
-                                        : "CG shift (m)";
-  std::ostringstream g;
-  g << "set multiplot layout 2,2 title \"" << study.name << ": trimmed flight over "
-    << continuationParameterName(parameter) << " (" << status
-    << "); solid stable, dashed unstable, circles events\" noenhanced font ',12'\n";
-  g << "set grid\nset key off\nset xlabel '" << x << "' noenhanced\n";
-  auto panel = [&](int col, const std::string& ylabel) {
-    g << "set ylabel '" << ylabel << "' noenhanced\n";
-    g << "plot 'continuation.csv' skip 2 using 2:($10 == 1 ? $" << col
-      << " : NaN) with lines lw 2 lc rgb '#1f77b4', "
-      << "'' skip 2 using 2:($10 == 0 ? $" << col
-      << " : NaN) with lines lw 2 dt 2 lc rgb '#d62728', "
-      << "'' skip 2 using 2:(strcol(19) ne '' ? $" << col
-      << " : NaN) with points pt 6 ps 2 lw 2 lc rgb 'black'\n";
-  };
-  panel(control_col, "control: " + control_label);
-  panel(4, "cycle-mean theta (deg)");
-  panel(5, "mean airspeed (m/s)");
-  g << "set ylabel 'max |mu| (1 = stability limit)'\n";
-  g << "plot 'continuation.csv' skip 2 using 2:9 with linespoints lw 2 pt 7 ps 0.6 lc rgb "
-       "'#2ca02c', 1 with lines dt 3 lc rgb '#555555'\n";
-  g << "unset multiplot\n";
-  return g.str();
-}
-
 JsonObject startObject(const PeriodicTrimSummary& s) {
   JsonObject o;
   o.set("converged", s.converged).set("message", s.message);
@@ -375,7 +339,8 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (!points.empty())
     drawFigure(out_dir, "continuation",
-               branchFigure(study, co.parameter, study.trim.periodic.control, toString(s.status)));
+               continuationBranchFigure(study, co.parameter, parameterUnit(co.parameter),
+                                        study.trim.periodic.control, toString(s.status)));
   journal.remove();  // every point is in continuation.csv and the figure is drawn
   consoleOut() << study.name << ": continuation " << toString(s.status) << ": " << regular
             << " points, " << events.size() << " events; " << s.message << "\n  -> "

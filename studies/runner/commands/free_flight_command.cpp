@@ -16,6 +16,7 @@
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/plotting/figure_rows.hpp"
+#include "studies/runner/plotting/flight_figures.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies {
@@ -90,67 +91,6 @@ JsonObject limitCycleJson(const FreeFlightSummary& s) {
   if (s.limit_cycle_first_cycle != s.first_analysed_cycle)
     j.set("window_first_cycle", s.limit_cycle_first_cycle);
   return j;
-}
-
-std::string title(const Study& study) {
-  std::ostringstream s;
-  s << study.name << " (free flight): U0 = " << study.point.speed_mps
-    << " m/s, f = " << study.point.freq_hz << " Hz, theta0 = "
-    << study.point.theta_rad * kRadToDeg << " deg, tail = "
-    << study.point.tail_angle_rad * kRadToDeg << " deg";
-  return s.str();
-}
-
-// Paper Fig. 7 layout: delta_M, theta and h against time (left) and their spectra (right).
-std::string flightFigure(const Study& study, bool with_spectra, const std::string& skip) {
-  std::ostringstream g;
-  g << "set multiplot layout 3," << (with_spectra ? 2 : 1) << " columnsfirst title \""
-    << title(study) << "\" noenhanced font ',12'\n";
-  g << "set key off\nset grid\nset xlabel 'time (s)'\n";
-  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' " << skip
-    << " using 1:2 with lines lc rgb '#333333'\n";
-  g << "set ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' " << skip
-    << " using 1:5 with lines lc rgb '#c0392b'\n";
-  g << "set ylabel 'h (m)'\nplot 'histories.csv' " << skip
-    << " using 1:4 with lines lc rgb '#2471a3'\n";
-  if (with_spectra) {
-    g << "set xlabel 'f (Hz)'\n";
-    g << "set ylabel '|{/Symbol d}_M(f)| (deg)'\nplot 'spectra.csv' skip 2 using 1:2 with "
-         "impulses lw 2 lc rgb '#333333'\n";
-    g << "set ylabel '|{/Symbol q}(f)| (deg)'\nplot 'spectra.csv' skip 2 using 1:3 with impulses "
-         "lw 2 lc rgb '#c0392b'\n";
-    g << "set logscale y\nset yrange [1e-5:1]\nset format y '10^{%L}'\nset ylabel '|h(f)| (m)'\nplot 'spectra.csv' "
-         "skip 2 using 1:($4 > 0 ? $4 : 1/0) with impulses lw 2 lc rgb '#2471a3'\n";
-  }
-  g << "unset multiplot\n";
-  return g.str();
-}
-
-// Paper Fig. 6: the last flapping cycle, delta_M and theta, downstroke shaded.
-std::string cycleFigure(const Study& study, int cycles, const std::string& skip) {
-  const double T = 1.0 / study.point.freq_hz;
-  std::ostringstream g;
-  g << "set multiplot layout 2,1 title \"" << title(study) << ", cycle " << cycles
-    << " (shaded: downstroke)\" noenhanced font ',12'\n";
-  g << "set key off\nset grid\nset xrange [" << (cycles - 1) * T << ":" << cycles * T << "]\n";
-  g << "set object 1 rect from " << (cycles - 0.75) * T << ", graph 0 to " << (cycles - 0.25) * T
-    << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
-  g << "set ylabel '{/Symbol d}_M (deg)'\nplot 'histories.csv' " << skip
-    << " using 1:2 with lines lw 2 lc rgb '#333333'\n";
-  g << "set xlabel 'time (s)'\nset ylabel '{/Symbol q} (deg)'\nplot 'histories.csv' " << skip
-    << " using 1:5 with lines lw 2 lc rgb '#c0392b'\n";
-  g << "unset multiplot\n";
-  return g.str();
-}
-
-// Paper Fig. 8: pitch phase portrait (theta, Q) after the transient.
-std::string phaseFigure(const Study& study, double t_from, const std::string& skip) {
-  std::ostringstream g;
-  g << "set title \"" << title(study) << "\" noenhanced font ',12'\n";
-  g << "set key off\nset grid\nset xlabel '{/Symbol q} (deg)'\nset ylabel 'Q (deg/s)'\n";
-  g << "plot 'histories.csv' " << skip << " using ($1 >= " << t_from
-    << " ? $5 : 1/0):8 with lines lc rgb '#8e44ad'\n";
-  return g.str();
 }
 
 }  // namespace
@@ -247,12 +187,12 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                                   historyRowOf(static_cast<std::size_t>(cycle) * spc, every),
                                   per_cycle);
   };
-  drawFigure(out_dir, "flight", flightFigure(study, s.analysed, skipFrom(0)));
+  drawFigure(out_dir, "flight", freeFlightFigure(study, s.analysed, skipFrom(0)));
   if (s.cycles_run >= 1)
-    drawFigure(out_dir, "cycle", cycleFigure(study, s.cycles_run, skipFrom(s.cycles_run - 1)));
+    drawFigure(out_dir, "cycle", freeFlightCycleFigure(study, s.cycles_run, skipFrom(s.cycles_run - 1)));
   const int first_analysed = s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0;
   const double t_from = first_analysed / study.point.freq_hz;
-  drawFigure(out_dir, "phase", phaseFigure(study, t_from, skipFrom(first_analysed)));
+  drawFigure(out_dir, "phase", freeFlightPhaseFigure(study, t_from, skipFrom(first_analysed)));
   consoleOut() << study.name << ": " << toString(s.status) << ": " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

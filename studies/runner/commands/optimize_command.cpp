@@ -25,6 +25,7 @@
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/optimize_journal.hpp"
 #include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/plotting/design_figures.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies {
@@ -73,22 +74,6 @@ EvaluationRecord journaledRecord(int start, int index, const JournaledEvaluation
 }
 
 std::string cell(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
-
-/// Column numbers (1-based) of history.csv for the figure.
-struct HistoryColumns {
-  int objective, feasible, failed, violation, best;
-};
-
-HistoryColumns historyColumns(const DesignProblem& p) {
-  const int n = p.variableCount(), m = p.constraintCount(), k = p.valueCount();
-  HistoryColumns c{};
-  c.objective = 5 + n;
-  c.feasible = c.objective + 1;
-  c.failed = c.objective + 2;
-  c.violation = c.objective + 3;
-  c.best = c.violation + m + 2 + k + 1;
-  return c;
-}
 
 CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
   const auto& vars = p.space().variables;
@@ -170,43 +155,6 @@ JsonObject resultObject(const DesignProblem& p, const OptimizerSummary& s, int h
     }
   }
   return o;
-}
-
-std::string convergenceFigure(const Study& study, const DesignProblem& p,
-                              const OptimizerSummary& s) {
-  const HistoryColumns c = historyColumns(p);
-  const char* unit = orni::opt::objectiveUnit(p.options().objective);
-  std::ostringstream g;
-  g << "set multiplot layout 2,1 title \"" << study.name << " optimisation ("
-    << orni::opt::toString(study.optimize().optimizer.algorithm) << ", "
-    << s.starts.size() << " start(s)): objective "
-    << orni::opt::toString(p.options().objective) << " per evaluation\" noenhanced font ',13'\n";
-  g << "set lmargin 12\nset rmargin 30\nset tmargin 3\n"
-       "set key outside right top vertical Left reverse noenhanced\n";
-  g << "set xlabel 'evaluation (starts in order)'\nset xrange [-0.5:"
-    << static_cast<double>(s.history.size()) - 0.5 << "]\n";
-  g << "set ylabel 'objective (" << unit << ")'\n";
-  g << "plot 'history.csv' skip 2 using 1:(($" << c.failed << " == 0 && $" << c.feasible
-    << " == 0) ? $" << c.objective
-    << " : 1/0) with points pt 6 ps 1.2 lc rgb '#c0392b' title 'infeasible', "
-       "'' skip 2 using 1:($"
-    << c.feasible << " == 1 ? $" << c.objective
-    << " : 1/0) with points pt 7 ps 1.2 lc rgb '#1e8449' title 'feasible', "
-       "'' skip 2 using 1:"
-    << c.best << " with steps lw 2 lc rgb '#2471a3' title 'best feasible so far'\n";
-  g << "set logscale y\nset format y '10^{%L}'\nset ylabel 'max constraint g (-)'\n";
-  g << "set yrange [1e-4:*]\n";
-  g << "plot 'history.csv' skip 2 using 1:(($" << c.failed << " == 0 && $" << c.feasible
-    << " == 0) ? ($" << c.violation << " > 1e-4 ? $" << c.violation
-    << " : 1e-4) : 1/0) with points pt 6 ps 1.2 lc rgb '#c0392b' title 'infeasible: violation', "
-       "'' skip 2 using 1:($"
-    << c.feasible
-    << " == 1 ? 1e-4 : 1/0) with points pt 7 ps 1.2 lc rgb '#1e8449' title 'feasible (at 1e-4)', "
-       "'' skip 2 using 1:($"
-    << c.failed << " == 1 ? $" << c.violation
-    << " : 1/0) with points pt 2 ps 1.2 lc rgb '#333333' title 'failed (penalty)'\n";
-  g << "unset multiplot\n";
-  return g.str();
 }
 
 }  // namespace
@@ -418,7 +366,7 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   bool figure_missing = false;
   if (run.figures && any_result) {
     try {
-      drawFigure(out_dir, "optimize_convergence", convergenceFigure(study, problem, s));
+      drawFigure(out_dir, "optimize_convergence", optimizeConvergenceFigure(study, problem, s));
     } catch (const std::exception& e) {
       figure_missing = true;
       consoleErr() << "optimize: the convergence figure was not drawn (the journal is kept: the "

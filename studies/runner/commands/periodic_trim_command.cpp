@@ -18,6 +18,7 @@
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "studies/runner/plotting/trim_figures.hpp"
 #include "trim/periodic_trim.hpp"
 
 namespace orni::studies {
@@ -151,59 +152,6 @@ CsvTable floquetTable(const PeriodicTrimSummary& s) {
       .table();
 }
 
-// The multipliers in the complex plane with the unit circle: the whole disc, and a zoom on the
-// leading multiplier (near the circle on a weakly damped vehicle).
-std::string multiplierFigure(const Study& study, const PeriodicTrimSummary& s) {
-  const FloquetAnalysis& f = s.floquet;
-  const FloquetMultiplier& lead = f.multipliers.front();
-  std::ostringstream g;
-  g << "set multiplot layout 1,2 title \"" << study.name << ": Floquet multipliers of the periodic "
-    << "orbit at " << fixed(s.solution.freq_hz, 2) << " Hz, " << (f.stable ? "stable" : "UNSTABLE")
-    << ", max |mu| = " << fixed(f.max_modulus, 5) << " (" << lead.label << ")\\n"
-    << (f.complete ? "all " : "the leading ") << f.multipliers.size() << " of " << f.state_count
-    << " multipliers; altitude and position (ignorable) excluded\" noenhanced font ',12'\n";
-  g << "set size ratio -1\nset grid\nset key bottom left noenhanced\n";
-  g << "set xlabel 'Re {/Symbol m}'\nset ylabel 'Im {/Symbol m}'\n";
-  g << "set parametric\nset trange [0:2*pi]\nset samples 400\n";
-  g << "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\n";
-  g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
-       "'floquet.csv' skip 2 using 2:3 with points pt 7 ps 1.3 lc rgb '#c0392b' "
-       "title 'multipliers'\n";
-  // Zoom: a square on the real axis holding the leading multiplier (and its conjugate) and the
-  // circle's nearest point.
-  const double half = std::max(0.02, 1.5 * std::max(std::abs(lead.mu.imag()),
-                                                     std::abs(1.0 - lead.modulus)));
-  const double cx = lead.mu.real() >= 0.0 ? std::max(lead.mu.real(), 1.0 - half)
-                                          : std::min(lead.mu.real(), -1.0 + half);
-  const double cy = 0.0;
-  g << "set xrange [" << cx - half << ":" << cx + half << "]\nset yrange [" << cy - half << ":"
-    << cy + half << "]\n";
-  g << "set title 'zoom on the leading multiplier' noenhanced\n";
-  g << "set label 1 '" << lead.label << "' at first " << lead.mu.real() << ", first "
-    << std::abs(lead.mu.imag()) << " offset 1,1 noenhanced\n";
-  g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
-       "'floquet.csv' skip 2 using 2:3 with points pt 7 ps 1.5 lc rgb '#c0392b' "
-       "title 'multipliers'\n";
-  g << "unset multiplot\n";
-  return g.str();
-}
-
-// theta, airspeed, W and altitude over one period of the orbit.
-std::string orbitFigure(const Study& study, const PeriodicTrimSummary& s) {
-  std::ostringstream g;
-  g << "set multiplot layout 2,2 title \"" << study.name << ": periodic orbit at "
-    << fixed(s.solution.freq_hz, 2) << " Hz (tail " << fixed(s.solution.tail_angle_rad * kRadToDeg, 3)
-    << " deg), one flapping period from phase 0\" noenhanced font ',12'\n";
-  g << "set grid\nset key off\nset xlabel 'phase t/T (-)'\nset xrange [0:1]\n";
-  g << "set ylabel 'theta (deg)'\nplot 'periodic_orbit.csv' skip 2 using 2:4 with lines lw 2\n";
-  g << "set ylabel 'airspeed (m/s)'\nplot 'periodic_orbit.csv' skip 2 using 2:8 with lines lw 2\n";
-  g << "set ylabel 'W (m/s)'\nplot 'periodic_orbit.csv' skip 2 using 2:6 with lines lw 2\n";
-  g << "set ylabel 'altitude gain h (m)'\nplot 'periodic_orbit.csv' skip 2 using 2:10 with lines "
-       "lw 2\n";
-  g << "unset multiplot\n";
-  return g.str();
-}
-
 }  // namespace
 
 int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_dir,
@@ -308,8 +256,8 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
                          .set("orbit", s.orbit_time_s)
                          .set("floquet", s.floquet_time_s));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  if (have_orbit) drawFigure(out_dir, "periodic_orbit", orbitFigure(study, s));
-  if (s.floquet_valid) drawFigure(out_dir, "floquet_multipliers", multiplierFigure(study, s));
+  if (have_orbit) drawFigure(out_dir, "periodic_orbit", periodicOrbitFigure(study, s));
+  if (s.floquet_valid) drawFigure(out_dir, "floquet_multipliers", floquetMultiplierFigure(study, s));
   consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

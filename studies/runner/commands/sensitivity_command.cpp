@@ -16,7 +16,7 @@
 #include "studies/runner/commands/point_counts.hpp"
 #include "studies/runner/commands/run_info.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
-#include "studies/runner/commands/sensitivity_figures.hpp"
+#include "studies/runner/plotting/sensitivity_figures.hpp"
 #include "studies/runner/commands/sensitivity_point.hpp"
 #include "studies/runner/commands/sensitivity_ranking.hpp"
 #include "studies/runner/config/sensitivity_study.hpp"

@@ -23,6 +23,7 @@
 #include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/plotting/figure_rows.hpp"
+#include "studies/runner/plotting/flight_figures.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 
 namespace orni::studies {
@@ -119,54 +120,6 @@ class TetheredRunFiles : public TetheredRunObserver {
  private:
   CsvStreamWriter histories_, cycles_;
 };
-
-// Figure in the layout of paper Fig. 2: delta_M, FV, FH and M against time over the last (at most
-// three) cycles, i.e. the periodic steady state, with the downstrokes shaded.
-// A long history is read from the first shown row on (figure_rows.hpp).
-std::string loadsFigure(const Study& study, const SimulationSummary& s, std::size_t rows) {
-  const double T = 1.0 / study.point.freq_hz;
-  const int shown = std::min(3, s.cycles_run);
-  const int first = s.cycles_run - shown;
-  const std::size_t spc = static_cast<std::size_t>(study.simulate().options.samples_per_cycle);
-  const std::size_t every = static_cast<std::size_t>(study.simulate().history_every);
-  const std::string skip =
-      "skip 2" + figureEvery(rows, historyRowOf(static_cast<std::size_t>(first) * spc, every),
-                             historyRowsPerCycle(spc, every));
-  std::ostringstream g;
-  g << "set multiplot layout 4,1 title \"" << study.name << " (tethered): U = "
-    << study.point.speed_mps << " m/s, f = " << study.point.freq_hz
-    << " Hz, theta = " << study.point.theta_rad * kRadToDeg << " deg, cycles " << first + 1
-    << "-" << s.cycles_run << " of " << s.cycles_run
-    << " (shaded: downstroke)\" noenhanced font ',13'\n";
-  g << "set lmargin 12\nset rmargin 22\nset key outside right top vertical Left reverse\n";
-  g << "set xrange [" << first * T << ":" << s.cycles_run * T << "]\n";
-  for (int k = first; k < s.cycles_run; ++k)
-    g << "set object " << k + 1 << " rect from " << (k + 0.25) * T << ", graph 0 to "
-      << (k + 0.75) * T << ", graph 1 behind fc rgb '#e8e8f0' fs solid noborder\n";
-  g << "set format x ''\n";
-  // One curve: 'histories.csv' (or '' for the file of the curve before) with its rows.
-  auto curve = [&](const char* file, int column, const char* style) {
-    g << file << " " << skip << " using 1:" << column << " with lines " << style;
-  };
-  g << "set ylabel '{/Symbol d}_M (deg)'\nplot ";
-  curve("'histories.csv'", 2, "lw 2 lc rgb '#333333' title 'flap angle'\n");
-  const char* total = "lw 2 lc rgb '#c0392b' title 'total', ";
-  const char* aero = "dt 2 lw 1.5 lc rgb '#2471a3' title 'wing aero', ";
-  const char* inertia = "dt 3 lw 1.5 lc rgb '#27ae60' title 'wing inertia'\n";
-  const struct {
-    const char* label;
-    int total, aero, inertia;
-  } panels[] = {{"F_V (N)", 3, 8, 11}, {"F_H (N)", 4, 9, 12}, {"M_{CG} (N m)", 5, 10, 13}};
-  for (const auto& p : panels) {
-    if (p.total == 5) g << "set format x '%g'\nset xlabel 'time (s)'\n";
-    g << "set ylabel '" << p.label << "'\nplot ";
-    curve("'histories.csv'", p.total, total);
-    curve("''", p.aero, aero);
-    curve("''", p.inertia, inertia);
-  }
-  g << "unset multiplot\n";
-  return g.str();
-}
 
 }  // namespace
 
@@ -290,7 +243,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
                                              study.simulate().at_trim ? &trim_point : nullptr);
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
   if (failed) return reportFailedRun(study, s.message, out_dir);
-  drawFigure(out_dir, "loads", loadsFigure(study, s, history_rows));
+  drawFigure(out_dir, "loads", tetheredLoadsFigure(study, s, history_rows));
   if (cft) drawFigure(out_dir, "zmp", zmpFigureScript(study, *cft, s.cycles_run));
   consoleOut() << study.name << ": " << s.BriefReport() << "\n  -> " << out_dir.string() << "\n";
   return 0;

@@ -18,6 +18,7 @@
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "studies/runner/plotting/trim_figures.hpp"
 #include "trim/trim_solver.hpp"
 
 namespace orni::studies {
@@ -78,65 +79,6 @@ CsvTable progressTable(const TrimSummary& s) {
       .number("trust_region_radius", [](const R& r) { return r.trust_region_radius; })
       .number("step_successful", [](const R& r) { return r.step_successful ? 1.0 : 0.0; })
       .table();
-}
-
-// Residual norm per iteration (log scale) with every residual run, and the unknowns per iteration.
-std::string convergenceFigure(const Study& study, const TrimSummary& s, double tol) {
-  int last = 0;
-  for (const TrimEvaluationRecord& e : s.evaluation_log) last = std::max(last, e.iteration);
-  // Stage 2 (free-flight refinement) moves the trim point after the last Eq. (4) iteration: shown
-  // as open circles at x = last + 1 in the lower panel, so the figure ends at the reported point.
-  const bool refined = s.refined_in_free_flight && s.converged;
-  const double x2 = last + 1.0;
-  std::ostringstream g;
-  g << "set multiplot layout 2,1 title \"" << study.name << " trim (" << toString(s.status)
-    << "), stage 1: paper Eq. (4) on tethered cycle means, max(|FV-W|, |FH|, |M|/c_mean) / W"
-    << (refined ? "\\nstage 2: level settled free flight moves the trim point (open circles)"
-                : "")
-    << "\" noenhanced font ',13'\n";
-  g << "set lmargin 12\nset rmargin 44\nset tmargin 4\n"
-       "set key outside right top vertical Left reverse noenhanced\n";
-  g << "set xrange [-0.2:" << last + 0.2 << "]\nset xlabel 'iteration'\nset xtics 1\n";
-  g << "set logscale y\nset format y '10^{%L}'\nset ylabel 'scaled residual (-)'\n";
-  double ymin = 0.1 * tol;
-  for (const TrimIterationRecord& r : s.iteration_log)
-    if (r.scaled_max > 0.0) ymin = std::min(ymin, 0.3 * r.scaled_max);
-  g << "set yrange [" << ymin << ":*]\n";
-  g << "plot 'trim_progress.csv' skip 2 using 1:8 with linespoints lw 2 pt 7 lc rgb '#c0392b' "
-       "title 'accepted iterate', "
-       "'trim_iterations.csv' skip 2 using ($3 == 0 && $4 == 1 ? $2 : 1/0):16 with points pt 6 "
-       "ps 1.2 lc rgb '#2471a3' title 'residual runs (trial points)', "
-    << tol << " with lines dt 2 lc rgb '#333333' title 'tolerance'\n";
-  g << "unset logscale y\nset format y '%g'\nset yrange [*:*]\n";
-  g << "set ylabel 'unknowns (deg, m/s, Hz)'\n";
-  if (refined) {
-    g << "set xrange [-0.2:" << x2 + 0.3 << "]\nset xtics add ('stage 2' " << x2 << ")\n";
-    g << "set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'\n";
-  }
-  const char* kColours[3] = {"#9400d3", "#009e73", "#56b4e9"};  // gnuplot's first three
-  g << "plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '"
-    << kColours[0] << "' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '"
-    << kColours[1] << "' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '"
-    << kColours[2] << "' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 "
-       "lc rgb '#e69f00' title 'frequency (Hz)'";
-  if (refined) {
-    const double v[3] = {s.solution.theta_rad * kRadToDeg, s.solution.speed_mps,
-                         s.solution.tail_angle_rad * kRadToDeg};
-    const char* names[3] = {"theta", "U", "tail"};
-    auto fixed2 = [](double x) {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.2f", x);
-      return std::string(b);
-    };
-    for (int k = 0; k < 3; ++k)
-      g << ", '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '" << kColours[k]
-        << "' title 'stage 2: " << names[k] << " = " << fixed2(v[k]) << "'";
-    g << "\n";
-    for (int k = 0; k < 3; ++k) g << x2 << "," << formatShortest(v[k]) << "\ne\n";
-  }
-  g << "\n";
-  g << "unset multiplot\n";
-  return g.str();
 }
 
 // Stage 1 (paper Eq. 4, tethered means): its solution, residual and means, named as such.
@@ -238,7 +180,7 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
                              .set("max_cycles", study.trim.simulation.cycles)
                              .set("derivative_cycles", study.trim.derivative_cycles));
   writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
-  drawFigure(out_dir, "trim_convergence", convergenceFigure(study, s, study.trim.residual_tol));
+  drawFigure(out_dir, "trim_convergence", trimConvergenceFigure(study, s, study.trim.residual_tol));
   consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

@@ -1,4 +1,4 @@
-// The figures of a sensitivity study (commands/sensitivity_figures.hpp) on a hand-made ranking:
+// The figures of a sensitivity study (plotting/sensitivity_figures.hpp) on a hand-made ranking:
 // the tornado draws an element only for what has a point (gnuplot 5.4 fails on a plot element
 // without a valid point and crashes on such a `with labels` beside others), labels each parameter
 // with its range and says which end has no value; tornado.csv has one row per prediction and
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sensitivity_figures.hpp"
+#include "studies/runner/plotting/sensitivity_figures.hpp"
 
 namespace orni::studies {
 namespace {

@@ -29,8 +29,8 @@ VehicleModel magpie() {
 }
 
 // The design-problem machinery on a frozen rigid-wing fixture (the magpie of commit 70ab58e, before
-// issue 13's honest vehicle; tests/data/sensitivity/magpie_rigid_fixture.toml): a contract test
-// that must not move with the paper vehicle's physics. At 12 Hz its Eq. (4) trim exists (theta
+// the honest vehicle, Table 1's wing; tests/data/sensitivity/magpie_rigid_fixture.toml): a contract
+// test that must not move with the paper vehicle's physics. At 12 Hz its Eq. (4) trim exists (theta
 // 5.44 deg, U 12.25 m/s, tail 10.2 deg; no free-flight refinement here), at 6 Hz it does not.
 VehicleModel rigidMagpie() {
   VehicleModel v = studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +

@@ -142,11 +142,12 @@ TEST_F(PeriodicTrimEfw, ConvergesToALevelPeriodicOrbitThatIsStable) {
   EXPECT_NEAR(sampled_mean / s.mean.power_aero_W, 1.0, 0.01);
 }
 
-// Issue 27's convergence check of the chosen tolerances: the periodic trim at its defaults (period
+// Convergence check of the chosen tolerances: the periodic trim at its defaults (period
 // map grid rel_tol 1e-5, periodic residual 1e-8) against a reference with the grid 100 times
 // tighter (1e-7) and the residual at 1e-10. Measured 2026-12-06 (printed below): the trim moves by
-// 2e-4 deg, 7e-4 m/s and 5e-4 deg (the issue's bounds: 0.05 deg, 0.02 m/s), the flight-dynamics
-// multipliers (phugoid, short period) by 3e-6 and 7e-5 (bound 1e-4). The strongly damped wing
+// 2e-4 deg, 7e-4 m/s and 5e-4 deg (bounds: 0.05 deg, 0.02 m/s, a tenth of the tolerances we
+// hold Table 3 to), the flight-dynamics multipliers (phugoid, short period) by 3e-6 and 7e-5
+// (bound 1e-4). The strongly damped wing
 // modes (|mu| ~0.08: 92 % of the motion gone in a cycle) are not resolved by the default grid: their
 // moduli move by 0.002-0.006, their arguments by up to 60 deg, and they converge only slowly with
 // the grid (wing mode 13: 0.0066+0.0716i / -0.0032+0.0708i / -0.0045+0.0705i at 1e-6 / 1e-7 / 1e-8).

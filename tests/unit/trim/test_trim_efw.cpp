@@ -33,15 +33,15 @@ constexpr double kSameTrimSpeed = 0.02;
 constexpr double kTrimFreqHz = 12.0;
 // The honest vehicle's committed 12 Hz trim (results/paper/trim_magpie/summary.json) and how far a
 // change may move it before this regression fails: a few times the multi-start spread above, far
-// below any physical change (0.5 deg, 0.3 m/s, 0.5 deg are issue 13's bounds for Table 3). It is
+// below any physical change (0.5 deg, 0.3 m/s, 0.5 deg: the tolerances we hold Table 3 to). It is
 // the periodic orbit of test_periodic_trim.cpp (13.558 deg, 18.022 m/s, 16.584 deg; measured here
 // 13.562 deg, 18.017 m/s, 16.588 deg). With the strip loads at the quarter chord spread as a flat
 // plate's consistent nodal loads it moved from 16.21 deg, 16.50 m/s, 19.74 deg (the old coupling:
-// 2/3 of the lift on the leading edge, 1/3 on the trailing-edge skin node); before the free
-// flights were flown until settled it was 16.35 deg, 16.32 m/s, 19.98 deg, an unsettled phugoid.
+// 2/3 of the lift on the leading edge, 1/3 on the trailing-edge skin node); before the free flights
+// were flown until settled it was 16.35 deg, 16.32 m/s, 19.98 deg, an unsettled phugoid.
 constexpr double kCommittedThetaDeg = 13.56, kCommittedSpeed = 18.02, kCommittedTailDeg = 16.59;
 constexpr double kThetaTolDeg = 0.1, kSpeedTol = 0.05, kTailTolDeg = 0.1;
-// Paper Table 3, which the honest vehicle does not reach (issue 13's tolerances).
+// Paper Table 3, which the honest vehicle does not reach (within 0.5 deg and 0.3 m/s).
 constexpr double kPaperThetaDeg = 9.2, kPaperSpeed = 10.8;
 
 VehicleModel efw() { return testing::magpieVehicle(); }
@@ -89,7 +89,7 @@ TEST(TrimEfw, TrimsAtItsCommittedPointAndFliesBounded) {
   EXPECT_NEAR(s.solution.theta_rad * kRadToDeg, kCommittedThetaDeg, kThetaTolDeg);
   EXPECT_NEAR(s.solution.speed_mps, kCommittedSpeed, kSpeedTol);
   EXPECT_NEAR(s.solution.tail_angle_rad * kRadToDeg, kCommittedTailDeg, kTailTolDeg);
-  // The finding, pinned: not the paper's point (more than issue 13's 0.5 deg and 0.3 m/s away).
+  // The finding, pinned: not the paper's point (more than 0.5 deg and 0.3 m/s away).
   EXPECT_GT(std::abs(s.solution.theta_rad * kRadToDeg - kPaperThetaDeg), 0.5);
   EXPECT_GT(std::abs(s.solution.speed_mps - kPaperSpeed), 0.3);
   EXPECT_EQ(s.free_flight.status, FreeFlightStatus::kBounded) << s.free_flight.message;
@@ -111,14 +111,14 @@ TEST(TrimEfw, TrimsAtItsCommittedPointAndFliesBounded) {
   EXPECT_LT(std::abs(check.mean.M_Nm) / model.mean_chord_m, kEquilibriumFraction * W);
 }
 
-// Issue 27's convergence check of the two-stage trim's tolerances: solveTrim at its defaults
+// Convergence check of the two-stage trim's tolerances: solveTrim at its defaults
 // (Eq. (4): integrator rel_tol 1e-6, steady_tol 1e-5, equilibrium 1e-4 W; the free-flight
 // refinement: settled flights at rel_tol 1e-4, settled within 0.005 deg, level within 0.01 deg)
 // against a reference built from the same two stages with every one of those 100 times tighter
 // (the refinement's integrator tolerance is not an option of solveTrim: the reference calls the
-// stage itself, as solveTrim does). The bound is the issue's (0.05 deg, 0.02 m/s; the tail as
-// theta). Measured 2026-12-06: 0.002 deg, 0.0006 m/s, 0.0003 deg (the reference flew 9 settled
-// flights; 24 s in all).
+// stage itself, as solveTrim does). The bound: 0.05 deg and 0.02 m/s (the tail as theta), a tenth
+// of the tolerances we hold Table 3 to. Measured 2026-12-06: 0.002 deg, 0.0006 m/s, 0.0003 deg
+// (the reference flew 9 settled flights; 24 s in all).
 TEST(TrimEfw, DefaultTolerancesAgreeWithATightReference) {
   const VehicleModel v = efw();
   const FlightCoreModel model(v);

@@ -1,4 +1,4 @@
-#include "studies/runner/commands/aeromap_figures.hpp"
+#include "studies/runner/plotting/aeromap_figures.hpp"
 
 #include <algorithm>
 #include <cmath>

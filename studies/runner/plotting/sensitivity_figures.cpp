@@ -1,4 +1,4 @@
-#include "studies/runner/commands/sensitivity_figures.hpp"
+#include "studies/runner/plotting/sensitivity_figures.hpp"
 
 #include <cmath>
 #include <sstream>
