@@ -59,6 +59,31 @@ double orbitCheck(const FlightCoreModel& model, const std::vector<double>& x,
   return worst;
 }
 
+// PeriodicTrimOptions::multiplier_check: the full monodromy again at the orbit start on a grid
+// kMultiplierCheckTolFactor times finer, and each multiplier paired with its counterpart there.
+void checkMultipliers(const FlightCoreModel& model, FreeFlightPeriodMapOptions mo,
+                      const FreeFlightPeriodMap& map, const std::vector<double>& x,
+                      const std::vector<double>& p, double fd_step, PeriodicTrimSummary* s) {
+  mo.rel_tol *= kMultiplierCheckTolFactor;
+  mo.friction_speed_mps = map.frictionSpeed_mps();
+  FreeFlightPeriodMap fine(model, mo);
+  Eigen::MatrixXd M;
+  long used = 0;
+  std::string why;
+  if (!fine.refreshDiscretisation(x.data(), p.data(), &why) ||
+      !monodromyByDifferences(fine, x, p, fd_step, &M, &used, &why)) {
+    s->floquet.check_method = "not checked: the finer grid's monodromy failed: " + why;
+  } else {
+    char how[200];
+    std::snprintf(how, sizeof how,
+                  "each multiplier against the full monodromy on a grid at rel_tol %g (%d steps "
+                  "a period, against %d)",
+                  mo.rel_tol, fine.gridSteps(), map.gridSteps());
+    compareWithRefined(&s->floquet, eigenOfMonodromy(M), how);
+  }
+  s->floquet_maps += used;
+}
+
 }  // namespace
 
 std::string PeriodicTrimSummary::BriefReport() const {
@@ -267,6 +292,7 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
     if (eigen.ok) {
       s.floquet = analyseFloquet(eigen, T, map.stateInfo());
       s.floquet_valid = true;
+      if (options.periodic.multiplier_check) checkMultipliers(model, mo, map, x, p, so.fd_step, &s);
     } else {
       s.floquet_message = eigen.message;
     }

@@ -26,6 +26,12 @@ const char* toString(PeriodicControl c);
 /// From those names or the short ones "tail", "freq", "cg".
 std::optional<PeriodicControl> parsePeriodicControl(std::string_view text);
 
+/// The multiplier check's grid: the period map's rel_tol times this (PeriodicTrimOptions::
+/// multiplier_check). Ten times finer moved the magpie's wing-mode multipliers by as much as
+/// their error against a 100 times finer reference (0.06 of 0.07, tests/unit/trim), so the change
+/// is a fair estimate of the error.
+constexpr double kMultiplierCheckTolFactor = 0.1;
+
 struct PeriodicTrimOptions {
   PeriodicControl control = PeriodicControl::kTailAngle;
   /// Converged when every state returns to its start within this many of its scales (and the
@@ -44,6 +50,11 @@ struct PeriodicTrimOptions {
   /// them from the full monodromy matrix (one period map per state: 107 on the flexible magpie
   /// against about 20 for the leading 8).
   int multipliers = 8;
+  /// Check every multiplier against a second full monodromy on a grid kMultiplierCheckTolFactor
+  /// times finer (one period map per state): its change there, and whether it is resolved
+  /// (core/analysis/floquet.hpp). `stability` turns it on: the strongly damped wing
+  /// modes' multipliers are not resolved at the default grid (docs/theory.md 10.4).
+  bool multiplier_check = false;
 
   /// True when every field is inside the range of its [trim.periodic] key in the field table
   /// (core/model/field_table.hpp); otherwise false with the reason in *why.

@@ -5,7 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
+#include <vector>
 
 #include "core/model/frames.hpp"
 
@@ -96,7 +98,15 @@ std::string FloquetAnalysis::BriefReport() const {
                 stable ? "stable" : "unstable", max_modulus, m.label.c_str(),
                 m.argument_rad * 180.0 / kPi, margin, complete ? "" : "leading ",
                 multipliers.size(), state_count);
-  return buf;
+  std::string out = buf;
+  if (checked) {
+    const auto resolved = std::count_if(multipliers.begin(), multipliers.end(),
+                                        [](const FloquetMultiplier& x) { return x.resolved(); });
+    std::snprintf(buf, sizeof buf, ", %td resolved (a finer grid moves them by <= %.0f %%)",
+                  resolved, 100.0 * kResolvedChangeFraction);
+    out += buf;
+  }
+  return out;
 }
 
 FloquetAnalysis analyseFloquet(const Eigen::MatrixXd& monodromy, double period_s,
@@ -158,6 +168,32 @@ FloquetAnalysis analyseFloquet(const MonodromyEigen& eigen, double period_s,
   a.stable = a.max_modulus < 1.0;
   a.margin = 1.0 - a.max_modulus;
   return a;
+}
+
+bool FloquetMultiplier::resolved() const {
+  return modulus >= kResolvedModulusFloor &&
+         refinement_change <= kResolvedChangeFraction * modulus;  // false for NaN
+}
+
+void compareWithRefined(FloquetAnalysis* analysis, const MonodromyEigen& refined,
+                        const std::string& how) {
+  if (!refined.ok) throw std::invalid_argument("compareWithRefined: the refined analysis failed");
+  std::vector<bool> used(static_cast<std::size_t>(refined.multipliers.size()), false);
+  for (FloquetMultiplier& m : analysis->multipliers) {  // largest first
+    double best = std::numeric_limits<double>::infinity();
+    Eigen::Index at = -1;
+    for (Eigen::Index k = 0; k < refined.multipliers.size(); ++k) {
+      const double d = std::abs(m.mu - refined.multipliers(k));
+      if (!used[static_cast<std::size_t>(k)] && d < best) {
+        best = d;
+        at = k;
+      }
+    }
+    if (at >= 0) used[static_cast<std::size_t>(at)] = true;
+    m.refinement_change = best;
+  }
+  analysis->checked = true;
+  analysis->check_method = how;
 }
 
 }  // namespace orni

@@ -388,6 +388,9 @@ std::vector<FieldSpec> makeTable() {
       boolean("trim.periodic.floquet", "true", "the monodromy at the orbit and its multipliers"),
       integer("trim.periodic.multipliers", R::closed(0, 100), "8",
               "leading multipliers by Arnoldi; 0 = all, from the full monodromy"),
+      boolean("trim.periodic.multiplier_check", "false",
+              "check each multiplier against a monodromy on a 10 times finer grid (resolved or "
+              "not); `stability` turns it on"),
 
       // ---- [optimize] ---------------------------------------------------------------------------
       choice("optimize.algorithm", "cobyla | bobyqa | isres", "\"cobyla\"", "NLopt algorithm"),

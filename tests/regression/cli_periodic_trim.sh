@@ -43,7 +43,7 @@ check "max_modulus $mu in (0.9, 1)" awk_true "$mu > 0.9 && $mu < 1"
 theta=$(json "$out/summary.json" theta_mean_deg); tail=$(json "$out/summary.json" tail_angle_deg)
 check "theta $theta = 13.56 +- 0.05 deg" awk_true "($theta - 13.558) ^ 2 <= 0.0025"
 check "tail $tail = 16.58 +- 0.05 deg" awk_true "($tail - 16.584) ^ 2 <= 0.0025"
-check "floquet CSV names row" bash -c "head -1 '$out/floquet.csv' | grep -q '^rank,mu_real,mu_imag,modulus,argument,exponent_real,exponent_imag,damping_ratio,period,inside_unit_circle,label,dominant_states$'"
+check "floquet CSV names row" bash -c "head -1 '$out/floquet.csv' | grep -q '^rank,mu_real,mu_imag,modulus,argument,exponent_real,exponent_imag,damping_ratio,period,inside_unit_circle,label,dominant_states,refinement_change,resolved$'"
 check "floquet CSV units row" bash -c "sed -n 2p '$out/floquet.csv' | grep -q '^-,-,-,-,deg,1/s,rad/s,-,'"
 check "orbit CSV names row" bash -c "head -1 '$out/periodic_orbit.csv' | grep -q '^t,phase,delta_M,theta,U,W,Q,airspeed,x,h,FV,FH,M,power_aero$'"
 check "orbit CSV has one period (201 rows)" test "$(( $(wc -l < "$out/periodic_orbit.csv") - 2 ))" -eq 201
@@ -79,6 +79,17 @@ check "stability: complete" grep -q '"complete": true' "$scratch/stability/summa
 mu_all=$(json "$scratch/stability/summary.json" max_modulus)
 check "stability max_modulus $mu_all equals the trim's $mu (1e-6)" awk_true "($mu_all - $mu) ^ 2 < 1e-12"
 check "stability draws the multipliers" test -s "$scratch/stability/floquet_multipliers.png"
+# The multiplier check (on in stability, off in trim): the phugoid pair resolved, the tiny aero-lag
+# multipliers not; the trim's rows have empty check cells.
+check "stability: multipliers checked" grep -q '"checked": true' "$scratch/stability/summary.json"
+check "stability: the phugoid pair is resolved" bash -c \
+  "sed -n '3,4p' '$scratch/stability/floquet.csv' | awk -F, '{ if (\$NF != 1) bad = 1 } END { exit bad }'"
+check "stability: the smallest multiplier is not resolved" bash -c \
+  "tail -1 '$scratch/stability/floquet.csv' | grep -q ',0$'"
+check "stability: the console says how many are resolved" bash -c \
+  "'$bin' stability '$efw' --freq 12 -o '$scratch/stability2' --no-figures | grep -q 'resolved'"
+check "trim: not checked, empty check cells" bash -c \
+  "grep -q '\"checked\": false' '$out/summary.json' && sed -n 3p '$out/floquet.csv' | grep -q ',,$'"
 # Their outputs are in the output table (studies/runner/output/output_schema_table.cpp).
 "$bin" keys --outputs --check "$out" "$scratch/stability" > "$scratch/outputs_check.txt" 2>&1
 check "keys --outputs --check: every value and column of the periodic trim and stability described" \

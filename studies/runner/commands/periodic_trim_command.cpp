@@ -39,6 +39,8 @@ std::string dominantText(const FloquetMultiplier& m) {
   return s;
 }
 
+std::string cellOrEmpty(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
+
 JsonObject multiplierObject(const FloquetMultiplier& m) {
   std::vector<std::string> names;
   std::vector<double> shares;
@@ -46,8 +48,8 @@ JsonObject multiplierObject(const FloquetMultiplier& m) {
     names.push_back(name);
     shares.push_back(share);
   }
-  return JsonObject()
-      .set("modulus", m.modulus)
+  JsonObject o;
+  o.set("modulus", m.modulus)
       .set("argument_deg", m.argument_rad * kRadToDeg)
       .set("real", m.mu.real())
       .set("imag", m.mu.imag())
@@ -58,11 +60,18 @@ JsonObject multiplierObject(const FloquetMultiplier& m) {
       .set("period_s", m.oscillatory ? m.period_s : 0.0)
       .set("label", m.label)
       .setStrings("dominant_states", names)
-      .set("dominant_shares", shares);
+      .set("dominant_shares", shares)
+      .set("refinement_change", m.refinement_change);  // null when not checked
+  if (std::isnan(m.refinement_change))
+    o.setNull("resolved");
+  else
+    o.set("resolved", m.resolved());
+  return o;
 }
 
 JsonObject floquetObject(const PeriodicTrimSummary& s) {
   JsonObject o;
+  const FloquetAnalysis& f = s.floquet;
   if (!s.floquet_valid) {
     o.set("valid", false).set("message", s.floquet_message.empty()
                                              ? std::string("no Floquet analysis (floquet = false "
@@ -71,7 +80,6 @@ JsonObject floquetObject(const PeriodicTrimSummary& s) {
     o.setObjects("multipliers", {}).setNull("stable").setNull("max_modulus").setNull("margin");
     return o;
   }
-  const FloquetAnalysis& f = s.floquet;
   std::vector<JsonObject> list;
   for (const FloquetMultiplier& m : f.multipliers) list.push_back(multiplierObject(m));
   o.set("valid", true)
@@ -85,6 +93,8 @@ JsonObject floquetObject(const PeriodicTrimSummary& s) {
       .set("complete", f.complete)
       .set("method", f.method)
       .set("period_maps", s.floquet_maps)
+      .set("checked", f.checked)
+      .set("check_method", f.check_method.empty() ? std::string("not checked") : f.check_method)
       .set("note",
            "multipliers of the monodromy matrix of the orbit's states (body theta, U, W, Q; wing "
            "modes and rates; MST-TD states), altitude and horizontal position excluded (they are "
@@ -149,6 +159,11 @@ CsvTable floquetTable(const PeriodicTrimSummary& s) {
       .number("inside_unit_circle", [&](std::size_t k) { return ms[k].modulus < 1.0 ? 1.0 : 0.0; })
       .text("label", [&](std::size_t k) { return ms[k].label; })
       .text("dominant_states", [&](std::size_t k) { return dominantText(ms[k]); })
+      .text("refinement_change",  // empty when not checked (trim.periodic.multiplier_check)
+            [&](std::size_t k) { return cellOrEmpty(ms[k].refinement_change); })
+      .text("resolved", [&](std::size_t k) {
+        return s.floquet.checked ? std::string(ms[k].resolved() ? "1" : "0") : std::string();
+      })
       .table();
 }
 

@@ -97,6 +97,7 @@ Study stabilityStudy(Study study) {
   TrimOptions& o = study.trim;
   usePeriodicMethod(&o);
   o.periodic.multipliers = 0;    // all of them: the full monodromy matrix
+  o.periodic.multiplier_check = true;  // and whether each is resolved (a finer grid's monodromy)
   o.verify_free_flight = false;  // the verdict is Floquet's; `trim` runs the Eq. (5) check
   std::string why;
   if (!o.IsValid(&why))

@@ -159,6 +159,8 @@ const std::vector<AnalysisField> kTrimFields = {
        return static_cast<long long>(s.trim.periodic.multipliers);
      },
      periodic},
+    {"trim.periodic.multiplier_check",
+     [](const Study& s) -> AnalysisValue { return s.trim.periodic.multiplier_check; }, periodic},
     {"trim.bounds.theta_mean_deg", boundsValue<TrimUnknown::kThetaMean>, always},
     {"trim.bounds.speed_mps", boundsValue<TrimUnknown::kSpeed>, always},
     {"trim.bounds.tail_angle_deg", boundsValue<TrimUnknown::kTailAngle>, always},

@@ -95,12 +95,14 @@ void readPeriodicTable(TableReader& t, orni::PeriodicTrimOptions* o) {
   o->history_samples = t.optionalInt(field("trim.periodic.history_samples"), o->history_samples);
   o->floquet = t.optionalBool("floquet", o->floquet);
   o->multipliers = t.optionalInt(field("trim.periodic.multipliers"), o->multipliers);
+  o->multiplier_check = t.optionalBool("multiplier_check", o->multiplier_check);
   t.finish();
 }
 
 const std::vector<std::string> kPeriodicKeys = {"control",         "residual_tol", "rel_tol",
                                                 "max_iterations",  "history_samples",
-                                                "floquet",         "multipliers"};
+                                                "floquet",         "multipliers",
+                                                "multiplier_check"};
 
 }  // namespace
 
@@ -277,6 +279,8 @@ void writeTrimSection(const orni::TrimOptions& o, TomlWriter& out,
     out.integer("history_samples", p.history_samples);
     out.boolean("floquet", p.floquet);
     out.integer("multipliers", p.multipliers, "leading multipliers by Arnoldi; 0 = all");
+    if (p.multiplier_check)  // written only when on: earlier runs' resolved files stay as they were
+      out.boolean("multiplier_check", true, "each multiplier against a 10 times finer grid");
   }
   out.header(sub("bounds"));
   for (TrimUnknown u : orni::kAllTrimUnknowns) {

@@ -95,9 +95,17 @@ std::string floquetMultiplierFigure(const Study& study, const PeriodicTrimSummar
   g << "set xlabel 'Re {/Symbol m}'\nset ylabel 'Im {/Symbol m}'\n";
   g << "set parametric\nset trange [0:2*pi]\nset samples 400\n";
   g << "set xrange [-1.2:1.2]\nset yrange [-1.2:1.2]\n";
-  g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
-       "'floquet.csv' skip 2 using 2:3 with points pt 7 ps 1.3 lc rgb '#c0392b' "
-       "title 'multipliers'\n";
+  if (f.checked) {  // resolved filled, the others open (column 14 of floquet.csv: resolved)
+    g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
+         "'floquet.csv' skip 2 using 2:(strcol(14) eq '1' ? $3 : 1/0) with points pt 7 ps 1.3 "
+         "lc rgb '#c0392b' title 'resolved', "
+         "'' skip 2 using 2:(strcol(14) eq '1' ? 1/0 : $3) with points pt 6 ps 1.3 "
+         "lc rgb '#c0392b' title 'not resolved'\n";
+  } else {
+    g << "plot cos(t), sin(t) with lines lw 2 lc rgb '#555555' title 'unit circle', "
+         "'floquet.csv' skip 2 using 2:3 with points pt 7 ps 1.3 lc rgb '#c0392b' "
+         "title 'multipliers'\n";
+  }
   // Zoom: a square on the real axis holding the leading multiplier (and its conjugate) and the
   // circle's nearest point.
   const double half = std::max(0.02, 1.5 * std::max(std::abs(lead.mu.imag()),

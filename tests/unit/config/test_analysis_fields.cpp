@@ -155,6 +155,8 @@ const std::map<std::string, Change>& changes() {
       {"trim.periodic.floquet",
        [](Study& s) { s.trim.periodic.floquet = !s.trim.periodic.floquet; }},
       {"trim.periodic.multipliers", [](Study& s) { s.trim.periodic.multipliers += 1; }},
+      {"trim.periodic.multiplier_check",
+       [](Study& s) { s.trim.periodic.multiplier_check = !s.trim.periodic.multiplier_check; }},
   };
   return kChanges;
 }
