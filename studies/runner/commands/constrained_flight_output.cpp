@@ -15,14 +15,6 @@ namespace {
 
 std::string cell(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
 
-template <typename Getter>
-std::vector<std::string> cells(const ConstrainedFlightTest& test, Getter get) {
-  std::vector<std::string> c;
-  c.reserve(test.samples.size());
-  for (const ZmpSample& s : test.samples) c.push_back(get(s));
-  return c;
-}
-
 /// NaN (written as null by JsonObject) for an undefined value.
 double orNull(const std::optional<double>& v) {
   return v ? *v : std::numeric_limits<double>::quiet_NaN();
@@ -71,23 +63,17 @@ std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(
 }
 
 CsvTable zmpTable(const ConstrainedFlightTest& test) {
-  CsvTable t("zmp.csv");
-  t.addTextColumn("t", cells(test, [](const ZmpSample& s) { return cell(s.t_s); }));
-  t.addTextColumn("delta_M",
-                  cells(test, [](const ZmpSample& s) { return cell(s.delta_rad * kRadToDeg); }));
-  t.addTextColumn("stroke",
-                  cells(test, [](const ZmpSample& s) { return std::string(toString(s.stroke)); }));
-  t.addTextColumn("CF_V",
-                  cells(test, [](const ZmpSample& s) { return cell(s.coefficients.CF_V); }));
-  t.addTextColumn("CF_H",
-                  cells(test, [](const ZmpSample& s) { return cell(s.coefficients.CF_H); }));
-  t.addTextColumn("CM_CG",
-                  cells(test, [](const ZmpSample& s) { return cell(s.coefficients.CM_CG); }));
-  t.addTextColumn("epsilon", cells(test, [](const ZmpSample& s) {
-                    return s.epsilon ? cell(*s.epsilon) : std::string();
-                  }));
-  t.addTextColumn("CF_normal", cells(test, [](const ZmpSample& s) { return cell(s.denominator); }));
-  return t;
+  using S = ZmpSample;
+  return RowTable("zmp.csv", test.samples)
+      .text("t", [](const S& s) { return cell(s.t_s); })
+      .text("delta_M", [](const S& s) { return cell(s.delta_rad * kRadToDeg); })
+      .text("stroke", [](const S& s) { return std::string(toString(s.stroke)); })
+      .text("CF_V", [](const S& s) { return cell(s.coefficients.CF_V); })
+      .text("CF_H", [](const S& s) { return cell(s.coefficients.CF_H); })
+      .text("CM_CG", [](const S& s) { return cell(s.coefficients.CM_CG); })
+      .text("epsilon", [](const S& s) { return s.epsilon ? cell(*s.epsilon) : std::string(); })
+      .text("CF_normal", [](const S& s) { return cell(s.denominator); })
+      .table();
 }
 
 JsonObject zmpSummary(const ConstrainedFlightTest& test) {

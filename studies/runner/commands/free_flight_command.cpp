@@ -67,15 +67,14 @@ class FreeFlightFiles : public FreeFlightObserver {
 };
 
 CsvTable spectrumTable(const LimitCycleMetrics& m) {
-  CsvTable t("spectra.csv");
-  std::vector<double> d, th;
-  for (double a : m.spectrum_delta.amplitude) d.push_back(a * kRadToDeg);
-  for (double a : m.spectrum_theta.amplitude) th.push_back(a * kRadToDeg);
-  t.addColumn("freq", m.spectrum_delta.freq_hz);
-  t.addColumn("delta_M_amplitude", d);
-  t.addColumn("theta_amplitude", th);
-  t.addColumn("h_amplitude", m.spectrum_h.amplitude);
-  return t;
+  return RowTable("spectra.csv", rowIndices(m.spectrum_delta.freq_hz.size()))
+      .number("freq", [&](std::size_t k) { return m.spectrum_delta.freq_hz[k]; })
+      .number("delta_M_amplitude",
+              [&](std::size_t k) { return m.spectrum_delta.amplitude[k] * kRadToDeg; })
+      .number("theta_amplitude",
+              [&](std::size_t k) { return m.spectrum_theta.amplitude[k] * kRadToDeg; })
+      .number("h_amplitude", [&](std::size_t k) { return m.spectrum_h.amplitude[k]; })
+      .table();
 }
 
 // The limit-cycle metrics but the theta extremes; a long run's are over its last cycles only

@@ -78,49 +78,42 @@ std::string cell(double v) { return std::isfinite(v) ? formatShortest(v) : std::
 CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
   const auto& vars = p.space().variables;
   const std::vector<DesignValueInfo>& info = p.valueInfo();
-  const std::size_t n = vars.size(), m = p.constraintNames().size(), k = info.size();
-  std::vector<double> evaluation, start, index, objective, feasible, failed, violation;
-  std::vector<std::string> stage, status, repeat, best_col, message;
-  std::vector<std::vector<double>> x(n), g(m);
-  std::vector<std::vector<std::string>> values(k);
+  const std::string objective_unit = orni::opt::objectiveUnit(p.options().objective);
+  std::vector<std::string> best_so_far;  // the best feasible objective up to each evaluation
   double best = kNaN;
-  for (std::size_t i = 0; i < s.history.size(); ++i) {
-    const EvaluationRecord& r = s.history[i];
-    evaluation.push_back(static_cast<double>(i));
-    start.push_back(r.start);
-    index.push_back(r.index);
-    stage.push_back(orni::opt::toString(r.stage));
-    for (std::size_t j = 0; j < n; ++j) x[j].push_back(r.x[j]);
-    objective.push_back(r.result.objective);
-    feasible.push_back(r.feasible ? 1.0 : 0.0);
-    failed.push_back(r.result.status == EvaluationStatus::kFailed ? 1.0 : 0.0);
-    violation.push_back(r.violation);
-    for (std::size_t j = 0; j < m; ++j) g[j].push_back(r.result.constraints[j]);
-    status.push_back(statusText(r));
-    repeat.push_back(r.repeat_of >= 0 ? std::to_string(r.repeat_of) : std::string());
-    for (std::size_t j = 0; j < k; ++j)
-      values[j].push_back(cell(r.result.values[j] / info[j].si_per_unit));
+  for (const EvaluationRecord& r : s.history) {
     if (r.feasible && !(r.result.objective >= best)) best = r.result.objective;
-    best_col.push_back(cell(best));
-    message.push_back(oneLine(r.result.message));
+    best_so_far.push_back(cell(best));
   }
-  CsvTable t("history.csv");
-  t.addColumn("evaluation", evaluation);
-  t.addColumn("start", start);
-  t.addColumn("start_evaluation", index);
-  t.addTextColumn("stage", stage);
-  for (std::size_t j = 0; j < n; ++j) t.addColumn(vars[j].name, variableUnit(vars[j]), x[j]);
-  t.addColumn("objective", orni::opt::objectiveUnit(p.options().objective), objective);
-  t.addColumn("feasible", feasible);
-  t.addColumn("failed", failed);
-  t.addColumn("violation", violation);
-  for (std::size_t j = 0; j < m; ++j) t.addColumn("g_" + p.constraintNames()[j], "-", g[j]);
-  t.addTextColumn("status", status);
-  t.addTextColumn("repeat_of", repeat);
-  for (std::size_t j = 0; j < k; ++j) t.addTextColumn(info[j].name, info[j].unit, values[j]);
-  t.addTextColumn("best_objective", orni::opt::objectiveUnit(p.options().objective), best_col);
-  t.addTextColumn("message", message);
-  return t;
+  auto rec = [&s](std::size_t i) -> const EvaluationRecord& { return s.history[i]; };
+  RowTable<std::size_t> t("history.csv", rowIndices(s.history.size()));
+  t.number("evaluation", [](std::size_t i) { return i; })
+      .number("start", [&](std::size_t i) { return rec(i).start; })
+      .number("start_evaluation", [&](std::size_t i) { return rec(i).index; })
+      .text("stage", [&](std::size_t i) { return std::string(orni::opt::toString(rec(i).stage)); });
+  for (std::size_t j = 0; j < vars.size(); ++j)
+    t.number(vars[j].name, variableUnit(vars[j]), [&, j](std::size_t i) { return rec(i).x[j]; });
+  t.number("objective", objective_unit, [&](std::size_t i) { return rec(i).result.objective; })
+      .number("feasible", [&](std::size_t i) { return rec(i).feasible ? 1.0 : 0.0; })
+      .number("failed",
+              [&](std::size_t i) {
+                return rec(i).result.status == EvaluationStatus::kFailed ? 1.0 : 0.0;
+              })
+      .number("violation", [&](std::size_t i) { return rec(i).violation; });
+  for (std::size_t j = 0; j < p.constraintNames().size(); ++j)
+    t.number("g_" + p.constraintNames()[j], "-",
+             [&, j](std::size_t i) { return rec(i).result.constraints[j]; });
+  t.text("status", [&](std::size_t i) { return std::string(statusText(rec(i))); })
+      .text("repeat_of", [&](std::size_t i) {
+        return rec(i).repeat_of >= 0 ? std::to_string(rec(i).repeat_of) : std::string();
+      });
+  for (std::size_t j = 0; j < info.size(); ++j)
+    t.text(info[j].name, info[j].unit, [&, j](std::size_t i) {
+      return cell(rec(i).result.values[j] / info[j].si_per_unit);
+    });
+  return t.text("best_objective", objective_unit, [&](std::size_t i) { return best_so_far[i]; })
+      .text("message", [&](std::size_t i) { return oneLine(rec(i).result.message); })
+      .table();
 }
 
 JsonObject designObject(const DesignProblem& p, const std::vector<double>& x) {
