@@ -67,8 +67,8 @@ struct PeriodicTrimSummary {
   FloquetAnalysis floquet;
   std::string floquet_message;       ///< why there is no Floquet analysis (floquet_valid false)
   long floquet_maps = 0;             ///< period maps of the Floquet analysis (Arnoldi or the
-                                     ///< fallback; the full matrix of multipliers = 0 is in
-                                     ///< shooting.period_maps)
+                                     ///< fallback, and the multiplier check's; the full matrix
+                                     ///< of multipliers = 0 is in shooting.period_maps)
   OrbitHistory history;              ///< one period from orbit_start
   /// One period from orbit_start with ARKODE (the free-flight integrator, adaptive, at
   /// periodic.rel_tol): max |x(T) - x(0)| in scales. The orbit's integration error, independent of

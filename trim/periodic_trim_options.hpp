@@ -27,9 +27,9 @@ const char* toString(PeriodicControl c);
 std::optional<PeriodicControl> parsePeriodicControl(std::string_view text);
 
 /// The multiplier check's grid: the period map's rel_tol times this (PeriodicTrimOptions::
-/// multiplier_check). Ten times finer moved the magpie's wing-mode multipliers by as much as
-/// their error against a 100 times finer reference (0.06 of 0.07, tests/unit/trim), so the change
-/// is a fair estimate of the error.
+/// multiplier_check). Measured on the magpie against a 100 times finer reference
+/// (tests/unit/trim/test_periodic_trim.cpp): every multiplier the check resolved is within 10 % of
+/// |mu| of it, and 82 of the 89 it did not resolve are off by more than 5 %.
 constexpr double kMultiplierCheckTolFactor = 0.1;
 
 struct PeriodicTrimOptions {

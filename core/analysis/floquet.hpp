@@ -110,9 +110,12 @@ FloquetAnalysis analyseFloquet(const MonodromyEigen& eigen, double period_s,
 /// Pairs each multiplier of `analysis` with one of `refined` (the same orbit's multipliers on a
 /// finer discretisation; all of them or the leading ones), leading multipliers first, each with
 /// the nearest one not yet paired, and sets its refinement_change (the distance; infinity when
-/// `refined` has none left); `how` is kept as check_method. A wrong pairing can only make a
-/// change larger than the multiplier's error (its true partner was nearer), so a multiplier
-/// reported resolved is. Throws std::invalid_argument when refined.ok is false.
+/// `refined` has none left); `how` is kept as check_method. The change estimates the error, it
+/// does not bound it: a multiplier can be paired with another's partner that happens to lie
+/// nearer than its own (in a cluster), and two grids can share an error (the modulus floor). How
+/// far the flag can be trusted is measured against a tight reference on the magpie
+/// (tests/unit/trim/test_periodic_trim.cpp). Throws std::invalid_argument when refined.ok is
+/// false.
 void compareWithRefined(FloquetAnalysis* analysis, const MonodromyEigen& refined,
                         const std::string& how);
 

@@ -299,7 +299,7 @@ const std::vector<OutputSpec>& outputTable() {
     {"summary.json", "trim,stability", "floquet.note", "-",
      "fixed text: which states the multipliers cover (altitude, position excluded), what stable and margin mean"},
     {"summary.json", "trim,stability", "floquet.period_maps", "-",
-     "period maps made by the Floquet analysis (Arnoldi, fallback); 0 when the monodromy came from the shooting"},
+     "period maps made by the Floquet analysis (Arnoldi, fallback, multiplier check); 0 when the monodromy came from the shooting and unchecked"},
     {"summary.json", "trim,stability", "floquet.stable", "-",
      "true when every multiplier is inside the unit circle (max_modulus < 1); null if not valid"},
     {"summary.json", "trim,stability", "floquet.state_count", "-",
