@@ -25,17 +25,11 @@ namespace orni::studies {
 
 namespace {
 
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
 // "U 0.61; theta 0.30; W 0.05": the states carrying most of the eigenvector (shares of |v|^2).
 std::string dominantText(const FloquetMultiplier& m) {
   std::string s;
   for (const auto& [name, share] : m.dominant_states)
-    s += (s.empty() ? "" : "; ") + name + " " + fixed(share, 3);
+    s += (s.empty() ? "" : "; ") + name + " " + formatFixed(share, 3);
   return s;
 }
 

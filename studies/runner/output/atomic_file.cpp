@@ -74,6 +74,12 @@ void writeFileAtomic(const std::filesystem::path& path, const std::string& conte
   w.commit();
 }
 
+std::string formatFixed(double value, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, value);
+  return buf;
+}
+
 std::string formatShortest(double value) {
   std::string s;
   appendShortest(&s, value);

@@ -47,4 +47,7 @@ std::string formatShortest(double value);
 /// Appends formatShortest(value) to *out (no temporary string).
 void appendShortest(std::string* out, double value);
 
+/// printf's "%.*f": `digits` digits after the point (labels and titles, not data).
+std::string formatFixed(double value, int digits);
+
 }  // namespace orni::studies

@@ -11,16 +11,6 @@
 
 namespace orni::studies {
 
-namespace {
-
-std::string fixed(double v, int digits) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", digits, v);
-  return buf;
-}
-
-}  // namespace
-
 // Residual norm per iteration (log scale) with every residual run, and the unknowns per iteration.
 std::string trimConvergenceFigure(const Study& study, const TrimSummary& s, double tol) {
   int last = 0;
@@ -64,14 +54,9 @@ std::string trimConvergenceFigure(const Study& study, const TrimSummary& s, doub
     const double v[3] = {s.solution.theta_rad * kRadToDeg, s.solution.speed_mps,
                          s.solution.tail_angle_rad * kRadToDeg};
     const char* names[3] = {"theta", "U", "tail"};
-    auto fixed2 = [](double x) {
-      char b[32];
-      std::snprintf(b, sizeof b, "%.2f", x);
-      return std::string(b);
-    };
     for (int k = 0; k < 3; ++k)
       g << ", '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '" << kColours[k]
-        << "' title 'stage 2: " << names[k] << " = " << fixed2(v[k]) << "'";
+        << "' title 'stage 2: " << names[k] << " = " << formatFixed(v[k], 2) << "'";
     g << "\n";
     for (int k = 0; k < 3; ++k) g << x2 << "," << formatShortest(v[k]) << "\ne\n";
   }
@@ -87,8 +72,9 @@ std::string floquetMultiplierFigure(const Study& study, const PeriodicTrimSummar
   const FloquetMultiplier& lead = f.multipliers.front();
   std::ostringstream g;
   g << "set multiplot layout 1,2 title \"" << study.name << ": Floquet multipliers of the periodic "
-    << "orbit at " << fixed(s.solution.freq_hz, 2) << " Hz, " << (f.stable ? "stable" : "UNSTABLE")
-    << ", max |mu| = " << fixed(f.max_modulus, 5) << " (" << lead.label << ")\\n"
+    << "orbit at " << formatFixed(s.solution.freq_hz, 2) << " Hz, "
+    << (f.stable ? "stable" : "UNSTABLE")
+    << ", max |mu| = " << formatFixed(f.max_modulus, 5) << " (" << lead.label << ")\\n"
     << (f.complete ? "all " : "the leading ") << f.multipliers.size() << " of " << f.state_count
     << " multipliers; altitude and position (ignorable) excluded\" noenhanced font ',12'\n";
   g << "set size ratio -1\nset grid\nset key bottom left noenhanced\n";
@@ -129,7 +115,8 @@ std::string floquetMultiplierFigure(const Study& study, const PeriodicTrimSummar
 std::string periodicOrbitFigure(const Study& study, const PeriodicTrimSummary& s) {
   std::ostringstream g;
   g << "set multiplot layout 2,2 title \"" << study.name << ": periodic orbit at "
-    << fixed(s.solution.freq_hz, 2) << " Hz (tail " << fixed(s.solution.tail_angle_rad * kRadToDeg, 3)
+    << formatFixed(s.solution.freq_hz, 2) << " Hz (tail "
+    << formatFixed(s.solution.tail_angle_rad * kRadToDeg, 3)
     << " deg), one flapping period from phase 0\" noenhanced font ',12'\n";
   g << "set grid\nset key off\nset xlabel 'phase t/T (-)'\nset xrange [0:1]\n";
   g << "set ylabel 'theta (deg)'\nplot 'periodic_orbit.csv' skip 2 using 2:4 with lines lw 2\n";
