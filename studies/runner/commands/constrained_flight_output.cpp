@@ -13,8 +13,6 @@ namespace orni::studies {
 
 namespace {
 
-std::string cell(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
-
 /// NaN (written as null by JsonObject) for an undefined value.
 double orNull(const std::optional<double>& v) {
   return v ? *v : std::numeric_limits<double>::quiet_NaN();
@@ -65,14 +63,15 @@ std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(
 CsvTable zmpTable(const ConstrainedFlightTest& test) {
   using S = ZmpSample;
   return RowTable("zmp.csv", test.samples)
-      .text("t", [](const S& s) { return cell(s.t_s); })
-      .text("delta_M", [](const S& s) { return cell(s.delta_rad * kRadToDeg); })
+      .text("t", [](const S& s) { return formatCell(s.t_s); })
+      .text("delta_M", [](const S& s) { return formatCell(s.delta_rad * kRadToDeg); })
       .text("stroke", [](const S& s) { return std::string(toString(s.stroke)); })
-      .text("CF_V", [](const S& s) { return cell(s.coefficients.CF_V); })
-      .text("CF_H", [](const S& s) { return cell(s.coefficients.CF_H); })
-      .text("CM_CG", [](const S& s) { return cell(s.coefficients.CM_CG); })
-      .text("epsilon", [](const S& s) { return s.epsilon ? cell(*s.epsilon) : std::string(); })
-      .text("CF_normal", [](const S& s) { return cell(s.denominator); })
+      .text("CF_V", [](const S& s) { return formatCell(s.coefficients.CF_V); })
+      .text("CF_H", [](const S& s) { return formatCell(s.coefficients.CF_H); })
+      .text("CM_CG", [](const S& s) { return formatCell(s.coefficients.CM_CG); })
+      .text("epsilon",
+            [](const S& s) { return s.epsilon ? formatCell(*s.epsilon) : std::string(); })
+      .text("CF_normal", [](const S& s) { return formatCell(s.denominator); })
       .table();
 }
 

@@ -73,8 +73,6 @@ EvaluationRecord journaledRecord(int start, int index, const JournaledEvaluation
   return r;
 }
 
-std::string cell(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
-
 CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
   const auto& vars = p.space().variables;
   const std::vector<DesignValueInfo>& info = p.valueInfo();
@@ -83,7 +81,7 @@ CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
   double best = kNaN;
   for (const EvaluationRecord& r : s.history) {
     if (r.feasible && !(r.result.objective >= best)) best = r.result.objective;
-    best_so_far.push_back(cell(best));
+    best_so_far.push_back(formatCell(best));
   }
   auto rec = [&s](std::size_t i) -> const EvaluationRecord& { return s.history[i]; };
   RowTable<std::size_t> t("history.csv", rowIndices(s.history.size()));
@@ -109,7 +107,7 @@ CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
       });
   for (std::size_t j = 0; j < info.size(); ++j)
     t.text(info[j].name, info[j].unit, [&, j](std::size_t i) {
-      return cell(rec(i).result.values[j] / info[j].si_per_unit);
+      return formatCell(rec(i).result.values[j] / info[j].si_per_unit);
     });
   return t.text("best_objective", objective_unit, [&](std::size_t i) { return best_so_far[i]; })
       .text("message", [&](std::size_t i) { return oneLine(rec(i).result.message); })

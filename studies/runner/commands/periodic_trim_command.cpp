@@ -33,8 +33,6 @@ std::string dominantText(const FloquetMultiplier& m) {
   return s;
 }
 
-std::string cellOrEmpty(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
-
 JsonObject multiplierObject(const FloquetMultiplier& m) {
   std::vector<std::string> names;
   std::vector<double> shares;
@@ -154,7 +152,7 @@ CsvTable floquetTable(const PeriodicTrimSummary& s) {
       .text("label", [&](std::size_t k) { return ms[k].label; })
       .text("dominant_states", [&](std::size_t k) { return dominantText(ms[k]); })
       .text("refinement_change",  // empty when not checked (trim.periodic.multiplier_check)
-            [&](std::size_t k) { return cellOrEmpty(ms[k].refinement_change); })
+            [&](std::size_t k) { return formatCell(ms[k].refinement_change); })
       .text("resolved", [&](std::size_t k) {
         return s.floquet.checked ? std::string(ms[k].resolved() ? "1" : "0") : std::string();
       })

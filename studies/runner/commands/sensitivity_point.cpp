@@ -46,8 +46,6 @@ enum Cell : std::size_t {
 };
 
 /// A number cell: shortest round-trip text, "" for a non-finite value (never NaN).
-std::string num(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
-
 /// One line: control characters become spaces.
 std::string oneLine(std::string s) {
   for (char& c : s)
@@ -81,10 +79,10 @@ SweepPointResult runPoint(const Study& point, const SensitivitySettings& setting
   r.message = "trim: " + s.message;
   if (!s.converged) return r;
   const OperatingPoint& at = s.solution;
-  r.cells[kTheta] = num(at.theta_rad * kRadToDeg);
-  r.cells[kSpeed] = num(at.speed_mps);
-  r.cells[kTail] = num(at.tail_angle_rad * kRadToDeg);
-  r.cells[kHingePowerEq4] = num(s.mean.power_hinge_W);
+  r.cells[kTheta] = formatCell(at.theta_rad * kRadToDeg);
+  r.cells[kSpeed] = formatCell(at.speed_mps);
+  r.cells[kTail] = formatCell(at.tail_angle_rad * kRadToDeg);
+  r.cells[kHingePowerEq4] = formatCell(s.mean.power_hinge_W);
 
   // Free flight from the trim point (paper Eq. 5, Figs. 6-8).
   SimulationOptions free_options;
@@ -101,14 +99,14 @@ SweepPointResult runPoint(const Study& point, const SensitivitySettings& setting
     r.cells[kBounded] = "0";
   } else {
     const LimitCycleMetrics& m = f.limit_cycle;
-    r.cells[kPitchSwing] = num((m.theta_max_rad - m.theta_min_rad) * kRadToDeg);
-    r.cells[kAltitudeFlap] = num(m.altitude_p2p_fast_m);
-    r.cells[kAltitudeSlow] = num(m.altitude_p2p_slow_m);
-    r.cells[kNormRatio] = num(f.verdict.norm_ratio_max);
+    r.cells[kPitchSwing] = formatCell((m.theta_max_rad - m.theta_min_rad) * kRadToDeg);
+    r.cells[kAltitudeFlap] = formatCell(m.altitude_p2p_fast_m);
+    r.cells[kAltitudeSlow] = formatCell(m.altitude_p2p_slow_m);
+    r.cells[kNormRatio] = formatCell(f.verdict.norm_ratio_max);
     r.cells[kBounded] = f.verdict.bounded ? "1" : "0";
-    r.cells[kThetaMin] = num(m.theta_min_rad * kRadToDeg);
-    r.cells[kThetaMax] = num(m.theta_max_rad * kRadToDeg);
-    r.cells[kClimbRate] = num(m.climb_rate_mps);
+    r.cells[kThetaMin] = formatCell(m.theta_min_rad * kRadToDeg);
+    r.cells[kThetaMax] = formatCell(m.theta_max_rad * kRadToDeg);
+    r.cells[kClimbRate] = formatCell(m.climb_rate_mps);
   }
 
   // Tethered at the trim point: the constrained flight test of the last cycle (paper Fig. 9).
@@ -122,15 +120,15 @@ SweepPointResult runPoint(const Study& point, const SensitivitySettings& setting
     held.point = at;
     const std::optional<ConstrainedFlightTest> cft =
         lastCycleConstrainedFlightTest(held, model, history, tethered_options.samples_per_cycle);
-    r.cells[kHingePower] = num(t.mean.power_hinge_W);
-    r.cells[kAeroPower] = num(t.mean.power_aero_W);
+    r.cells[kHingePower] = formatCell(t.mean.power_hinge_W);
+    r.cells[kAeroPower] = formatCell(t.mean.power_aero_W);
     if (cft) {
-      r.cells[kCFVMin] = num(cft->CF_V.min);
-      r.cells[kCFVMax] = num(cft->CF_V.max);
-      r.cells[kCFHMin] = num(cft->CF_H.min);
-      r.cells[kCFHMax] = num(cft->CF_H.max);
-      r.cells[kCMMin] = num(cft->CM_CG.min);
-      r.cells[kCMMax] = num(cft->CM_CG.max);
+      r.cells[kCFVMin] = formatCell(cft->CF_V.min);
+      r.cells[kCFVMax] = formatCell(cft->CF_V.max);
+      r.cells[kCFHMin] = formatCell(cft->CF_H.min);
+      r.cells[kCFHMax] = formatCell(cft->CF_H.max);
+      r.cells[kCMMin] = formatCell(cft->CM_CG.min);
+      r.cells[kCMMax] = formatCell(cft->CM_CG.max);
     }
     if (t.status == SimulationStatus::kNotConverged) {
       worsen(r, "not_converged");

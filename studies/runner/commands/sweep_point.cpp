@@ -80,8 +80,6 @@ const std::vector<SweepColumn>& pointColumns(const Study& point, StudyKind run) 
 }
 
 /// A number cell: shortest round-trip text, "" for a non-finite value (never NaN).
-std::string num(double v) { return std::isfinite(v) ? formatShortest(v) : std::string(); }
-
 /// One line: control characters become spaces.
 std::string oneLine(std::string s) {
   for (char& c : s)
@@ -95,9 +93,9 @@ void appendFreeFlightCells(const FreeFlightVerification& f, std::vector<std::str
       f.status == FreeFlightStatus::kBounded || f.status == FreeFlightStatus::kUnbounded;
   for (std::string c : {std::string(toString(f.status)),
                         std::string(verdict ? (f.bounded ? "1" : "0") : ""),
-                        num(f.norm_ratio_max), num(f.theta_min_rad * kRadToDeg),
-                        num(f.theta_max_rad * kRadToDeg), num(f.altitude_p2p_m),
-                        num(f.dominant_freq_hz)})
+                        formatCell(f.norm_ratio_max), formatCell(f.theta_min_rad * kRadToDeg),
+                        formatCell(f.theta_max_rad * kRadToDeg), formatCell(f.altitude_p2p_m),
+                        formatCell(f.dominant_freq_hz)})
     cells->push_back(std::move(c));
 }
 
@@ -110,16 +108,16 @@ SweepPointResult trimPoint(const Study& point, ModalWingCache* modal_wings) {
   r.cells.assign(trimColumns().size(), std::string());
   if (!s.converged) return r;
   const FreeFlightVerification& f = s.free_flight;
-  r.cells = {num(s.solution.theta_rad * kRadToDeg),
-             num(s.solution.speed_mps),
-             num(s.solution.tail_angle_rad * kRadToDeg),
-             num(s.solution.freq_hz),
-             num(s.mean.power_aero_W),
-             num(s.mean.power_hinge_W),
-             num(s.residual.FV_N),
-             num(s.residual.FH_N),
-             num(s.residual.M_Nm),
-             num(s.scaled_residual_max),
+  r.cells = {formatCell(s.solution.theta_rad * kRadToDeg),
+             formatCell(s.solution.speed_mps),
+             formatCell(s.solution.tail_angle_rad * kRadToDeg),
+             formatCell(s.solution.freq_hz),
+             formatCell(s.mean.power_aero_W),
+             formatCell(s.mean.power_hinge_W),
+             formatCell(s.residual.FV_N),
+             formatCell(s.residual.FH_N),
+             formatCell(s.residual.M_Nm),
+             formatCell(s.scaled_residual_max),
              std::to_string(s.iterations),
              std::to_string(s.evaluations),
 };
@@ -138,20 +136,20 @@ SweepPointResult periodicTrimPoint(const Study& point, ModalWingCache* modal_win
   if (!s.converged) return r;
   const FreeFlightVerification& f = s.free_flight;
   const double W = point.vehicle.body.mass_kg * point.vehicle.air.gravity_mps2;
-  r.cells = {num(s.solution.theta_rad * kRadToDeg),
-             num(s.solution.speed_mps),
-             num(s.solution.tail_angle_rad * kRadToDeg),
-             num(s.solution.freq_hz),
-             num(s.mean.power_aero_W),
+  r.cells = {formatCell(s.solution.theta_rad * kRadToDeg),
+             formatCell(s.solution.speed_mps),
+             formatCell(s.solution.tail_angle_rad * kRadToDeg),
+             formatCell(s.solution.freq_hz),
+             formatCell(s.mean.power_aero_W),
              "",
-             num(s.mean.FV_N - W),
-             num(s.mean.FH_N),
-             num(s.mean.M_Nm),
-             num(s.shooting.residual_max),
+             formatCell(s.mean.FV_N - W),
+             formatCell(s.mean.FH_N),
+             formatCell(s.mean.M_Nm),
+             formatCell(s.shooting.residual_max),
              std::to_string(s.shooting.iterations),
              std::to_string(s.shooting.period_maps)};
   appendFreeFlightCells(f, &r.cells);
-  r.cells.push_back(s.floquet_valid ? num(s.floquet.max_modulus) : "");
+  r.cells.push_back(s.floquet_valid ? formatCell(s.floquet.max_modulus) : "");
   r.cells.push_back(s.floquet_valid ? (s.floquet.stable ? "1" : "0") : "");
   if (s.floquet_valid) r.message += "; Floquet: " + s.floquet.BriefReport();
   if (f.status != FreeFlightStatus::kSkipped) r.message += "; free flight: " + f.message;
@@ -172,14 +170,14 @@ SweepPointResult tetheredPoint(const Study& point, ModalWingCache* modal_wings) 
   r.message = s.message;
   r.cells.assign(tetheredColumns().size(), std::string());
   if (s.status != SimulationStatus::kOk && s.status != SimulationStatus::kNotConverged) return r;
-  r.cells = {num(s.mean.FV_N),
-             num(s.mean.FH_N),
-             num(s.mean.M_Nm),
-             num(s.mean.power_aero_W),
-             num(s.mean.power_hinge_W),
+  r.cells = {formatCell(s.mean.FV_N),
+             formatCell(s.mean.FH_N),
+             formatCell(s.mean.M_Nm),
+             formatCell(s.mean.power_aero_W),
+             formatCell(s.mean.power_hinge_W),
              std::to_string(s.cycles_run),
              s.steady_state_cycle > 0 ? std::to_string(s.steady_state_cycle) : "",
-             s.cycles_run > 1 ? num(s.last_cycle_change) : ""};
+             s.cycles_run > 1 ? formatCell(s.last_cycle_change) : ""};
   return r;
 }
 
@@ -198,17 +196,17 @@ SweepPointResult freePoint(const Study& point, ModalWingCache* modal_wings) {
   }
   if (s.status != SimulationStatus::kOk || !s.analysed) return r;
   const LimitCycleMetrics& m = s.limit_cycle;
-  r.cells = {num(s.mean.FV_N),
-             num(s.mean.FH_N),
-             num(s.mean.M_Nm),
-             num(s.mean.power_aero_W),
+  r.cells = {formatCell(s.mean.FV_N),
+             formatCell(s.mean.FH_N),
+             formatCell(s.mean.M_Nm),
+             formatCell(s.mean.power_aero_W),
              std::to_string(s.cycles_run),
              s.verdict.bounded ? "1" : "0",
-             num(s.verdict.norm_ratio_max),
-             num(m.theta_min_rad * kRadToDeg),
-             num(m.theta_max_rad * kRadToDeg),
-             num(m.altitude_p2p_fast_m),
-             num(m.dominant_freq_theta_hz)};
+             formatCell(s.verdict.norm_ratio_max),
+             formatCell(m.theta_min_rad * kRadToDeg),
+             formatCell(m.theta_max_rad * kRadToDeg),
+             formatCell(m.altitude_p2p_fast_m),
+             formatCell(m.dominant_freq_theta_hz)};
   return r;
 }
 

@@ -74,6 +74,10 @@ void writeFileAtomic(const std::filesystem::path& path, const std::string& conte
   w.commit();
 }
 
+std::string formatCell(double value) {
+  return std::isfinite(value) ? formatShortest(value) : std::string();
+}
+
 std::string formatFixed(double value, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*f", digits, value);

@@ -47,6 +47,9 @@ std::string formatShortest(double value);
 /// Appends formatShortest(value) to *out (no temporary string).
 void appendShortest(std::string* out, double value);
 
+/// formatShortest(value) for a finite value, "" (an empty CSV cell: no value) otherwise.
+std::string formatCell(double value);
+
 /// printf's "%.*f": `digits` digits after the point (labels and titles, not data).
 std::string formatFixed(double value, int digits);
 
