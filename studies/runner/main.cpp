@@ -15,7 +15,7 @@
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/distributed/point_farm.hpp"

@@ -15,7 +15,7 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/plotting/aeromap_figures.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/distributed/farm_schedule.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
@@ -232,7 +232,7 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
       .set("aero_model",
            study.vehicle.aero.model == AeroModelKind::kMstTd ? "mst-td" : "delaurier1993")
       .set("structure", model.flexible ? "flexible" : "rigid");
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
 
   // gnuplot reads aeromap.csv once per curve and keeps what it reads (its `stats` every value):
   // a map larger than kFigureRows points is left to the user's own plotting.

@@ -6,7 +6,7 @@
 
 #include "core/model/frames.hpp"
 #include "trim/calibration.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -119,7 +119,7 @@ int runCalibrateStudy(const Study& study, const std::filesystem::path& out_dir) 
       .set("iterations", s.iterations)
       .set("evaluations", s.evaluations)
       .set("ceres_report", s.ceres_report);
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   consoleOut() << study.name << ": " << s.message << "\n  -> " << out_dir.string() << "\n";
   return 0;
 }

@@ -4,8 +4,6 @@
 #include <complex>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -15,9 +13,10 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/cancellation.hpp"
 #include "core/model/frames.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/config/continuation_section.hpp"
 #include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/continuation_journal.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
@@ -29,135 +28,6 @@ namespace orni::studies {
 namespace fs = std::filesystem;
 
 namespace {
-
-// ---- journal payload: every number of a point, exactly (%.17g), the label last ----------------
-
-void put(std::string* s, double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, " %.17g", v);
-  *s += buf;
-}
-void putVector(std::string* s, const Eigen::VectorXd& v) {
-  put(s, static_cast<double>(v.size()));
-  for (Eigen::Index i = 0; i < v.size(); ++i) put(s, v[i]);
-}
-void putVector(std::string* s, const std::vector<double>& v) {
-  putVector(s, Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size())));
-}
-
-std::string encodePoint(const TrimContinuationPoint& p) {
-  const ContinuationPoint& o = p.orbit;
-  std::string s = o.event.empty() ? "-" : o.event;
-  for (double v : {static_cast<double>(o.index), o.lambda, o.arclength, o.residual_max,
-                   static_cast<double>(o.corrector_iterations), o.max_modulus,
-                   o.stable ? 1.0 : 0.0, o.tangent_lambda, o.step, o.step_scale,
-                   p.friction_speed_mps, p.grid_friction_speed_mps,
-                   p.cg_shift_m, p.solution.theta_rad, p.solution.speed_mps,
-                   p.solution.tail_angle_rad, p.solution.freq_hz, p.mean.theta_rad,
-                   p.mean.airspeed_mps, p.mean.U_mps, p.mean.W_mps, p.mean.Q_radps,
-                   p.mean.power_aero_W, p.mean.FV_N, p.mean.FH_N, p.mean.M_Nm,
-                   p.mean.theta_min_rad, p.mean.theta_max_rad, p.mean.altitude_p2p_m})
-    put(&s, v);
-  putVector(&s, o.x);
-  putVector(&s, o.p);
-  putVector(&s, o.y);
-  putVector(&s, o.tangent);
-  putVector(&s, o.grid_origin);
-  put(&s, static_cast<double>(o.multipliers.size()));
-  for (Eigen::Index i = 0; i < o.multipliers.size(); ++i) {
-    put(&s, o.multipliers[i].real());
-    put(&s, o.multipliers[i].imag());
-  }
-  return s + " |" + p.leading_label;
-}
-
-class Reader {
- public:
-  explicit Reader(std::string_view text) : text_(text) {}
-  bool number(double* v) {
-    while (pos_ < text_.size() && text_[pos_] == ' ') ++pos_;
-    if (pos_ >= text_.size() || text_[pos_] == '|') return false;
-    const std::string token(text_.substr(pos_, text_.find(' ', pos_) - pos_));
-    char* end = nullptr;
-    *v = std::strtod(token.c_str(), &end);
-    pos_ += token.size();
-    return end && *end == '\0' && !token.empty();
-  }
-  bool count(std::size_t* n) {
-    double v = 0.0;
-    if (!number(&v) || !(v >= 0.0 && v <= 1e6) || v != std::floor(v)) return false;
-    *n = static_cast<std::size_t>(v);
-    return true;
-  }
-  bool vector(Eigen::VectorXd* out) {
-    std::size_t n = 0;
-    if (!count(&n)) return false;
-    out->resize(static_cast<Eigen::Index>(n));
-    for (std::size_t i = 0; i < n; ++i)
-      if (!number(&(*out)[static_cast<Eigen::Index>(i)])) return false;
-    return true;
-  }
-  bool vector(std::vector<double>* out) {
-    Eigen::VectorXd v;
-    if (!vector(&v)) return false;
-    out->assign(v.data(), v.data() + v.size());
-    return true;
-  }
-  bool label(std::string* out) {
-    const std::size_t bar = text_.find(" |", pos_);
-    if (bar == std::string_view::npos) return false;
-    for (std::size_t i = pos_; i < bar; ++i)
-      if (text_[i] != ' ') return false;
-    *out = std::string(text_.substr(bar + 2));
-    return true;
-  }
-
- private:
-  std::string_view text_;
-  std::size_t pos_ = 0;
-};
-
-bool decodePoint(std::string_view payload, TrimContinuationPoint* p) {
-  const std::size_t space = payload.find(' ');
-  if (space == std::string_view::npos) return false;
-  ContinuationPoint& o = p->orbit;
-  const std::string event(payload.substr(0, space));
-  o.event = event == "-" ? std::string() : event;
-  Reader r(payload.substr(space));
-  double index = 0.0, iterations = 0.0, stable = 0.0;
-  double* scalars[] = {&index, &o.lambda, &o.arclength, &o.residual_max, &iterations,
-                       &o.max_modulus, &stable, &o.tangent_lambda, &o.step, &o.step_scale,
-                       &p->friction_speed_mps, &p->grid_friction_speed_mps, &p->cg_shift_m, &p->solution.theta_rad,
-                       &p->solution.speed_mps, &p->solution.tail_angle_rad, &p->solution.freq_hz,
-                       &p->mean.theta_rad, &p->mean.airspeed_mps, &p->mean.U_mps, &p->mean.W_mps,
-                       &p->mean.Q_radps, &p->mean.power_aero_W, &p->mean.FV_N, &p->mean.FH_N,
-                       &p->mean.M_Nm, &p->mean.theta_min_rad, &p->mean.theta_max_rad,
-                       &p->mean.altitude_p2p_m};
-  for (double* v : scalars)
-    if (!r.number(v)) return false;
-  o.index = static_cast<int>(index);
-  o.corrector_iterations = static_cast<int>(iterations);
-  o.stable = stable != 0.0;
-  if (!r.vector(&o.x) || !r.vector(&o.p) || !r.vector(&o.y) || !r.vector(&o.tangent) ||
-      !r.vector(&o.grid_origin))
-    return false;
-  std::size_t m = 0;
-  if (!r.count(&m)) return false;
-  o.multipliers.resize(static_cast<Eigen::Index>(m));
-  for (std::size_t i = 0; i < m; ++i) {
-    double re = 0.0, im = 0.0;
-    if (!r.number(&re) || !r.number(&im)) return false;
-    o.multipliers[static_cast<Eigen::Index>(i)] = {re, im};
-  }
-  const std::size_t N = static_cast<std::size_t>(o.y.size());
-  if (o.x.empty() || m != o.x.size() || N < o.x.size() + 1 ||
-      static_cast<std::size_t>(o.tangent.size()) != N ||
-      static_cast<std::size_t>(o.grid_origin.size()) != N)
-    return false;
-  return r.label(&p->leading_label);
-}
-
-// ---- outputs ----------------------------------------------------------------------------------
 
 double parameterFileValue(PeriodicControl parameter, const TrimContinuationPoint& p) {
   const double v = continuationParameterValue(parameter, p.solution, p.cg_shift_m);
@@ -255,7 +125,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
       out_dir / kContinuationJournalName, "continuation", fingerprint, capacity,
       [](std::size_t, std::string_view payload) {
         TrimContinuationPoint p;
-        return decodePoint(payload, &p);
+        return decodeContinuationPoint(payload, &p);
       },
       &resume);
   // The recorded branch: the longest run of records from the first, cut after its last regular
@@ -263,7 +133,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
   std::vector<TrimContinuationPoint> done;
   for (std::size_t i = 0; i < capacity && resume.payloads[i]; ++i) {
     TrimContinuationPoint p;
-    decodePoint(*resume.payloads[i], &p);
+    decodeContinuationPoint(*resume.payloads[i], &p);
     done.push_back(p);
   }
   while (!done.empty() && !done.back().orbit.event.empty()) done.pop_back();
@@ -278,11 +148,11 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
   const TrimContinuationSummary s = continueTrim(
       model, study.trim, co,
       [&](const TrimContinuationPoint& p) {
-        journal.append(points.size(), encodePoint(p));
+        journal.append(points.size(), encodeContinuationPoint(p));
         throwIfCancelled();  // a cancellation point per point, after it is journaled
         // The point as the journal holds it, so that a resumed run writes the same bytes.
         TrimContinuationPoint exact;
-        decodePoint(encodePoint(p), &exact);
+        decodeContinuationPoint(encodeContinuationPoint(p), &exact);
         points.push_back(exact);
         consoleErr() << "continuation: " << (p.orbit.event.empty() ? "point " : p.orbit.event + " ")
                   << p.orbit.index << ": " << continuationParameterName(co.parameter) << " "
@@ -336,7 +206,7 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
            "states; altitude and position excluded) inside the unit circle; all multipliers from "
            "the full monodromy matrix at every point")
       .set("period_maps", s.period_maps);
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   if (!points.empty())
     drawFigure(out_dir, "continuation",
                continuationBranchFigure(study, co.parameter, parameterUnit(co.parameter),

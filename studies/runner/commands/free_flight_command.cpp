@@ -10,7 +10,7 @@
 #include "core/dynamics/free_flight.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/failed_run.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -175,7 +175,7 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
                              .set("rel_tol", study.simulate().options.rel_tol)
                              .set("steps", s.steps)
                              .set("rhs_evaluations", s.rhs_evaluations));
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   if (failed) return reportFailedRun(study, s.message, out_dir);
   // A long history is read in part (figure_rows.hpp): from the rows a figure shows on, every k-th.
   const std::size_t spc = static_cast<std::size_t>(study.simulate().options.samples_per_cycle);

@@ -18,7 +18,7 @@
 #include "core/structure/calculix_deck.hpp"
 #include "core/structure/modal_wing.hpp"
 #include "core/structure/wing_mesh.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -126,7 +126,7 @@ CsvTable modeShapeTable(const structure::ModalWing& wing) {
 
 void writeFailedSummary(const fs::path& out_dir, const std::string& message, double wall_s) {
   JsonObject summary = summaryHeader("modes", "failed", message, wall_s);
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
 }
 
 }  // namespace
@@ -247,7 +247,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
                             .set("effective_mass_met", wing.selection.effective_mass_met))
       .set("build_time_s", JsonObject().set("mesh", mesh_s).set("modal", modal_s));
   if (!export_ccx_path.empty()) summary.set("calculix_deck", export_ccx_path.string());
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   if (figure_modes > 0) drawFigure(out_dir, "modes", modesFigure(study, wing, figure_modes));
 
   std::ostringstream brief;

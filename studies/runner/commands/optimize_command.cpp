@@ -16,7 +16,7 @@
 
 #include "core/model/frames.hpp"
 #include "optimize/design_problem.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
@@ -349,7 +349,7 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
       .set("start_best_objective", start_best)
       .set("structure", study.vehicle.wing.structure == StructureLevel::kFlexible ? "flexible"
                                                                                   : "rigid");
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
 
   bool any_result = false;
   for (const EvaluationRecord& r : s.history)

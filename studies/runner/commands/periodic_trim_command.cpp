@@ -12,7 +12,7 @@
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/failed_run.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
@@ -262,7 +262,7 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
                          .set("equation4_start", s.stage1_time_s)
                          .set("orbit", s.orbit_time_s)
                          .set("floquet", s.floquet_time_s));
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   if (have_orbit) drawFigure(out_dir, "periodic_orbit", periodicOrbitFigure(study, s));
   if (s.floquet_valid) drawFigure(out_dir, "floquet_multipliers", floquetMultiplierFigure(study, s));
   consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "

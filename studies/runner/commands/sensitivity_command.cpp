@@ -14,7 +14,7 @@
 
 #include "studies/runner/commands/journaled_points.hpp"
 #include "studies/runner/commands/point_counts.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/plotting/sensitivity_figures.hpp"
 #include "studies/runner/commands/sensitivity_point.hpp"
@@ -173,7 +173,7 @@ int runSensitivityStudy(const Study& study, const fs::path& out_dir,
       .set("parameters", parametersJson(s))
       .set("base", baseJson(rows[0]))
       .set("predictions", predictionsJson(s, rankings));
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   done->journal->remove();  // every result is in sensitivity.csv now
 
   int drawn = 0;

@@ -18,7 +18,7 @@
 #include "studies/runner/commands/cycle_means_json.hpp"
 #include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/commands/free_flight_command.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/json_writer.hpp"
@@ -199,7 +199,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
       // Nothing was flown: the outputs of an earlier run must not pass for this one's.
       removeRunOutputs(out_dir, {"histories.csv", "cycles.csv", "zmp.csv", "spectra.csv"},
                        {"loads", "zmp", "flight", "cycle", "phase"});
-      writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+      writeSummary(out_dir, summary);
       consoleOut() << study.name << ": not_converged: no trim to fly at: " << t.message << "\n";
       return 0;
     }
@@ -241,7 +241,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
 
   const JsonObject summary = tetheredSummary(study, model, s, opts, history, cft, wall_s,
                                              study.simulate().at_trim ? &trim_point : nullptr);
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   if (failed) return reportFailedRun(study, s.message, out_dir);
   drawFigure(out_dir, "loads", tetheredLoadsFigure(study, s, history_rows));
   if (cft) drawFigure(out_dir, "zmp", zmpFigureScript(study, *cft, s.cycles_run));

@@ -17,7 +17,7 @@
 #include "core/grid/sweep_grid.hpp"
 #include "studies/runner/commands/journaled_points.hpp"
 #include "studies/runner/commands/point_counts.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
@@ -99,7 +99,7 @@ int runSweepStudy(const Study& study, const fs::path& out_dir, const SweepRunOpt
       .set("points_resumed", static_cast<long>(done->resumed))
       .set("threads", run.threads)
       .set("axes", axes);
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
 
   if (run.figures) {
     const std::string figure = sweepFigure(study, grid, columns, rows);

@@ -13,7 +13,7 @@
 #include "core/model/frames.hpp"
 #include "studies/runner/commands/cycle_means_json.hpp"
 #include "studies/runner/commands/periodic_trim_command.hpp"
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
@@ -179,7 +179,7 @@ int runTrimStudy(const Study& study, const std::filesystem::path& out_dir) {
                              .set("steady_tol", study.trim.simulation.steady_tol)
                              .set("max_cycles", study.trim.simulation.cycles)
                              .set("derivative_cycles", study.trim.derivative_cycles));
-  writeFileAtomic(out_dir / "summary.json", summary.toString() + "\n");
+  writeSummary(out_dir, summary);
   drawFigure(out_dir, "trim_convergence", trimConvergenceFigure(study, s, study.trim.residual_tol));
   consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
             << out_dir.string() << "\n";

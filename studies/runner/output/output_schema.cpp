@@ -75,9 +75,26 @@ std::vector<std::string_view> filesInOrder() {
   return files;
 }
 
+/// The entry of a summary object or array of objects (path a proper prefix of its path) that a run
+/// writes as null or [] when it does not exist for it (a failed simulation's mean, a failed
+/// periodic trim's multipliers), or nullptr.
+const OutputSpec* findObjectOutput(std::string_view path) {
+  const std::vector<std::string_view> concrete = split(path, '.');
+  for (const OutputSpec& o : outputTable()) {
+    if (o.file != "summary.json") continue;
+    const std::vector<std::string_view> pattern = split(o.path, '.');
+    for (std::size_t n = 1; n < pattern.size(); ++n)
+      if (matchFrom({pattern.begin(), pattern.begin() + static_cast<std::ptrdiff_t>(n)}, 0,
+                    concrete, 0))
+        return &o;
+  }
+  return nullptr;
+}
+
 void checkOne(OutputCheck& check, const std::string& file, const std::string& path,
-              const std::string* unit) {
+              const std::string* unit, bool no_value = false) {
   const OutputSpec* o = findOutput(file, path);
+  if (o == nullptr && no_value) o = findObjectOutput(path);
   if (o == nullptr) {
     check.findings.push_back(file + " " + path + ": not in the output table");
     return;
@@ -105,14 +122,25 @@ void checkSummary(OutputCheck& check, const JsonValue& v, const std::string& pat
       }
     if (nested) return;
     ++check.summary_values;
-    checkOne(check, "summary.json", path + "[]", nullptr);
+    checkOne(check, "summary.json", path + "[]", nullptr, v.items.empty());
     return;
   }
   ++check.summary_values;
-  checkOne(check, "summary.json", path, nullptr);
+  checkOne(check, "summary.json", path, nullptr, v.type == JsonValue::Type::kNull);
 }
 
 }  // namespace
+
+OutputCheck checkSummaryText(const std::string& json_text) {
+  const JsonValue summary = parseJson(json_text);
+  const JsonValue* kind = summary.find("kind");
+  if (kind == nullptr || kind->type != JsonValue::Type::kString)
+    throw std::runtime_error("no \"kind\"");
+  OutputCheck check;
+  check.kind = kind->text;
+  checkSummary(check, summary, "");
+  return check;
+}
 
 OutputCheck checkRunFolder(const std::string& run_dir) {
   namespace fs = std::filesystem;
@@ -121,13 +149,12 @@ OutputCheck checkRunFolder(const std::string& run_dir) {
   if (!in) throw std::runtime_error(run_dir + ": no summary.json (not a finished run folder)");
   std::ostringstream text;
   text << in.rdbuf();
-  const JsonValue summary = parseJson(text.str());
-  const JsonValue* kind = summary.find("kind");
-  if (kind == nullptr || kind->type != JsonValue::Type::kString)
-    throw std::runtime_error(run_dir + "/summary.json: no \"kind\"");
   OutputCheck check;
-  check.kind = kind->text;
-  checkSummary(check, summary, "");
+  try {
+    check = checkSummaryText(text.str());
+  } catch (const std::runtime_error& e) {
+    throw std::runtime_error(run_dir + "/summary.json: " + e.what());
+  }
   std::vector<fs::path> csvs;
   for (const auto& e : fs::directory_iterator(dir))
     if (e.is_regular_file() && e.path().extension() == ".csv") csvs.push_back(e.path());

@@ -48,6 +48,10 @@ struct OutputCheck {
   std::set<const OutputSpec*> used;     ///< the entries that described something
 };
 
+/// Checks the text of a summary.json against the table, as checkRunFolder does (summary values
+/// only). Throws std::runtime_error when it is not JSON or names no kind.
+OutputCheck checkSummaryText(const std::string& json_text);
+
 /// Checks a finished run folder against the table: every summary.json value and every column of
 /// every *.csv must have an entry whose kinds include the run's kind, and a CSV's units row must
 /// agree with the entry (except "per key" / "per variable"). Throws std::runtime_error when the

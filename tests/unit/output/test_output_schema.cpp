@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "studies/runner/output/output_schema.hpp"
+#include "studies/runner/output/summary_file.hpp"
 
 namespace orni::studies {
 namespace {
@@ -90,6 +91,46 @@ TEST(OutputSchema, CheckNamesAnUndescribedValueAndAWrongUnit) {
   EXPECT_NE(c.findings[0].find("bogus_value: not in the output table"), std::string::npos);
   EXPECT_NE(c.findings[1].find("freq_hz: units row 'rad/s', the table 'Hz'"), std::string::npos);
   EXPECT_THROW(checkRunFolder((dir / "missing").string()), std::runtime_error);
+}
+
+// The one summary writer refuses what the table does not declare for the run's kind, and writes
+// nothing then; a null or [] where the table declares an object's or the elements' values (a
+// failed run's mean, a failed periodic trim's multipliers) passes.
+TEST(OutputSchema, SummaryWriterRefusesAnUndeclaredValueAndWritesNothing) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("orni_summary_writer_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  JsonObject undeclared = summaryHeader("simulate", "ok", "m", 0.1);
+  undeclared.set("speed_mps", 10.0).set("speed_kmh", 36.0);
+  try {
+    writeSummary(dir, undeclared);
+    ADD_FAILURE() << "an undeclared value was written";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("speed_kmh: not in the output table"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+
+  JsonObject other_kind = summaryHeader("modes", "ok", "m", 0.1);
+  other_kind.set("speed_mps", 10.0);  // a simulate/trim value, not a modes one
+  EXPECT_THROW(writeSummary(dir, other_kind), std::logic_error);
+  JsonObject unknown_null = summaryHeader("simulate", "failed", "m", 0.1);
+  unknown_null.setNull("averages");
+  EXPECT_THROW(writeSummary(dir, unknown_null), std::logic_error);
+  EXPECT_FALSE(fs::exists(dir / "summary.json"));
+
+  JsonObject failed = summaryHeader("simulate", "failed", "the run threw", 0.1);
+  failed.set("mode", "tethered").setNull("mean");
+  writeSummary(dir, failed);
+  EXPECT_TRUE(checkRunFolder(dir.string()).findings.empty());
+  JsonObject no_orbit = summaryHeader("trim", "not_converged", "no orbit", 0.1);
+  no_orbit.set("floquet", JsonObject().set("valid", false).setObjects("multipliers", {}));
+  writeSummary(dir, no_orbit);  // [] where the table declares the elements' values
+  JsonObject empty_unknown = summaryHeader("trim", "not_converged", "no orbit", 0.1);
+  empty_unknown.setObjects("orbits", {});
+  EXPECT_THROW(writeSummary(dir, empty_unknown), std::logic_error);
+  fs::remove_all(dir);
 }
 
 }  // namespace

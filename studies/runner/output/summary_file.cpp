@@ -1,7 +1,11 @@
-#include "studies/runner/commands/run_info.hpp"
+#include "studies/runner/output/summary_file.hpp"
+
+#include <stdexcept>
 
 #include "core/model/frames.hpp"
 #include "core/version.hpp"
+#include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/output_schema.hpp"
 
 namespace orni::studies {
 
@@ -25,6 +29,19 @@ JsonObject& setOperatingPoint(JsonObject& o, const OperatingPoint& point) {
       .set("theta_mean_deg", point.theta_rad * kRadToDeg)
       .set("speed_mps", point.speed_mps)
       .set("tail_angle_deg", point.tail_angle_rad * kRadToDeg);
+}
+
+void writeSummary(const std::filesystem::path& dir, const JsonObject& summary) {
+  const std::string text = summary.toString() + "\n";
+  const OutputCheck check = checkSummaryText(text);
+  if (!check.findings.empty()) {
+    std::string list;
+    for (const std::string& f : check.findings) list += "\n  " + f;
+    throw std::logic_error("summary.json of a " + check.kind +
+                           " run: values the output table does not declare "
+                           "(studies/runner/output/output_schema_table.cpp):" + list);
+  }
+  writeFileAtomic(dir / "summary.json", text);
 }
 
 }  // namespace orni::studies
