@@ -70,6 +70,11 @@ cycles = 20
 TOML
 check "free-flight sweep exits 0" "$bin" run "$scratch/free.toml" -j 2 -o "$scratch/free"
 check "free-flight columns" bash -c "head -1 '$scratch/free/sweep.csv' | grep -q ',cycles_run,bounded,norm_ratio_max,theta_min_deg,theta_max_deg,altitude_p2p_m,dominant_freq_hz,message$'"
+# The paper sweeps only trims: the tethered and free simulate columns are checked here.
+"$bin" keys --outputs --check "$a" "$scratch/free" > "$scratch/outputs_check.txt" 2>&1
+check "keys --outputs --check: every value and column of the simulate sweeps described" \
+  test $? -eq 0
+grep -v ' 0 findings$' "$scratch/outputs_check.txt" | head -20
 check "free-flight summary mode free" test "$(json "$scratch/free/summary.json" mode)" = free
 check "free-flight summary counts bounded points" grep -q '"points_bounded":' "$scratch/free/summary.json"
 check "no NaN in the free-flight table" no_nan "$scratch/free/sweep.csv"

@@ -17,6 +17,7 @@
 #include "core/model/frames.hpp"
 #include "optimize/design_problem.hpp"
 #include "studies/runner/output/summary_file.hpp"
+#include "studies/runner/distributed/optimize_starts.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
@@ -61,16 +62,6 @@ std::string oneLine(std::string s) {
 const char* statusText(const EvaluationRecord& r) {
   if (r.result.status == EvaluationStatus::kFailed) return "failed";
   return r.feasible ? "feasible" : "infeasible";
-}
-
-/// A journaled evaluation as the record optimizeJournalRecord() writes.
-EvaluationRecord journaledRecord(int start, int index, const JournaledEvaluation& e) {
-  EvaluationRecord r;
-  r.start = start;
-  r.index = index;
-  r.x = e.x;
-  r.result = e.result;
-  return r;
 }
 
 CsvTable historyTable(const DesignProblem& p, const OptimizerSummary& s) {
@@ -159,34 +150,8 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
 
   const OptimizeJournalShape shape{problem.variableCount(), problem.constraintCount(),
                                    problem.valueCount()};
-  if (!farmWriter()) {
-    // A worker rank of a distributed run: runs the starts rank 0 hands out (replaying the
-    // journaled evaluations it sends along) and returns the computed evaluations as journal
-    // records; writes nothing.
-    FarmJob job;
-    job.threads = run.threads;
-    job.work = [&](std::size_t start, const std::string& journaled) {
-      OptimizeJournalResume replayed;
-      std::string_view rest(journaled);
-      for (std::size_t eol; (eol = rest.find('\n')) != std::string_view::npos;
-           rest.remove_prefix(eol + 1)) {
-        int st = 0, index = 0;
-        JournaledEvaluation e;
-        if (parseOptimizeJournalRecord(rest.substr(0, eol), shape, &st, &index, &e))
-          replayed.evaluations[{st, index}] = std::move(e);
-      }
-      orni::opt::OptimizerHooks hooks;
-      hooks.replay = [&replayed](int st, int index, const std::vector<double>& x) {
-        return replayed.replay(st, index, x);
-      };
-      std::string computed;
-      hooks.on_evaluation = [&computed](const EvaluationRecord& r) {
-        if (r.source == orni::opt::EvaluationSource::kComputed) computed += optimizeJournalRecord(r);
-      };
-      orni::opt::runStart(problem, problem.box(), options, hooks, static_cast<int>(start));
-      return computed;
-    };
-    runFarm(job);
+  if (!farmWriter()) {  // a worker rank of a distributed run: runs the starts rank 0 hands out
+    serveOptimizeStarts(problem, options, shape, run.threads);
     return 0;
   }
   const std::string resolved = resolvedStudyToml(study);
@@ -205,50 +170,11 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
                                         : std::string())
               << "\n";
 
-  // Rank 0 of a distributed run: the starts run on the worker ranks, each with its journaled
-  // evaluations to replay; their computed evaluations come back as journal records, are journaled
-  // and join the replay set. minimize() below then replays every evaluation, as a resumed run
-  // does from a complete journal: the outputs are the bytes of a single-process run.
-  int farm_computed = 0;
-  double farm_s = 0.0;
-  if (farmDistributed()) {
-    const auto t_farm = std::chrono::steady_clock::now();
-    std::optional<ProgressLine> starts_done;
-    if (run.progress)
-      starts_done.emplace("optimize starts", static_cast<std::size_t>(options.starts), 0);
-    FarmJob job;
-    for (int k = 0; k < options.starts; ++k) job.todo.push_back(static_cast<std::size_t>(k));
-    job.threads = run.threads;
-    job.task_input = [&](std::size_t start) {
-      std::string lines;
-      for (const auto& [key, e] : resume.evaluations)
-        if (key.first == static_cast<int>(start))
-          lines += optimizeJournalRecord(journaledRecord(key.first, key.second, e));
-      return lines;
-    };
-    job.on_result = [&](std::size_t start, std::string records) {
-      std::string_view rest(records);
-      for (std::size_t eol; (eol = rest.find('\n')) != std::string_view::npos;
-           rest.remove_prefix(eol + 1)) {
-        int st = 0, index = 0;
-        JournaledEvaluation e;
-        if (!parseOptimizeJournalRecord(rest.substr(0, eol), shape, &st, &index, &e) ||
-            st != static_cast<int>(start))
-          throw std::runtime_error("optimize: start " + std::to_string(start) +
-                                   ": a worker rank returned an invalid evaluation record");
-        journal.append(journaledRecord(st, index, e));
-        resume.evaluations[{st, index}] = std::move(e);
-        ++farm_computed;
-      }
-      if (!rest.empty())
-        throw std::runtime_error("optimize: start " + std::to_string(start) +
-                                 ": a worker rank returned a torn evaluation record");
-      if (starts_done) starts_done->pointDone();
-    };
-    runFarm(job);
-    if (starts_done) starts_done->finish();
-    farm_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_farm).count();
-  }
+  // Rank 0 of a distributed run: the starts run on the worker ranks (optimize_starts.hpp), then
+  // minimize() below replays every evaluation: the bytes of a single-process run.
+  FarmedStarts farmed;
+  if (farmDistributed())
+    farmed = farmOptimizeStarts(options, shape, run.threads, run.progress, &journal, &resume);
 
   std::mutex progress_mutex;
   std::optional<ProgressLine> progress;
@@ -271,9 +197,9 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   };
   OptimizerSummary s = orni::opt::minimize(problem, problem.box(), options, hooks);
   if (progress) progress->finish();
-  s.computed += farm_computed;  // computed by the worker ranks of this run, replayed here
-  s.replayed -= farm_computed;
-  s.wall_time_s += farm_s;
+  s.computed += farmed.computed;  // computed by the worker ranks of this run, replayed here
+  s.replayed -= farmed.computed;
+  s.wall_time_s += farmed.seconds;
 
   const EvaluationRecord* best = s.bestRecord();
   if (!best) throw std::runtime_error("optimize: no evaluation was made");

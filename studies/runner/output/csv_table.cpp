@@ -45,6 +45,7 @@ std::vector<std::string> csvLineCells(const std::string& line) {
 void CsvTable::add(std::string name, std::string unit, std::vector<std::string> cells) {
   if (!columns_.empty() && cells.size() != columns_.front().size())
     throw std::logic_error("CsvTable: column '" + name + "' has a different length");
+  if (!file_.empty()) demandDeclaredColumn(file_, name, unit);  // output_schema.hpp
   // Names and units are cells too: a comma or quote in them must not shift the header rows.
   std::string name_cell = csvTextCell(name), unit_cell = csvTextCell(unit);
   names_.push_back(std::move(name_cell));

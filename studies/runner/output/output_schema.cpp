@@ -196,6 +196,17 @@ std::string declaredColumnUnit(std::string_view file, std::string_view column) {
   return std::string(o->unit);
 }
 
+void demandDeclaredColumn(std::string_view file, std::string_view column, std::string_view unit) {
+  const OutputSpec* o = findOutput(file, column);
+  if (o == nullptr)
+    throw std::logic_error("output table: no entry for column '" + std::string(column) + "' of " +
+                           std::string(file) + " (studies/runner/output/output_schema_table.cpp)");
+  if (o->unit != "per key" && o->unit != "per variable" && o->unit != unit)
+    throw std::logic_error("output table: column '" + std::string(column) + "' of " +
+                           std::string(file) + " is declared in " + std::string(o->unit) +
+                           ", written in " + std::string(unit));
+}
+
 bool outputKindListed(std::string_view kinds, std::string_view kind) {
   for (const std::string_view k : split(kinds, ','))
     if (k == kind) return true;

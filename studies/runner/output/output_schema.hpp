@@ -37,6 +37,12 @@ const OutputSpec* findOutput(std::string_view file, std::string_view path);
 /// "per variable" one.
 std::string declaredColumnUnit(std::string_view file, std::string_view column);
 
+/// The check every CSV writer (CsvTable, CsvStreamWriter) makes of each column it writes: throws
+/// std::logic_error (a programming error) when the table has no entry for column `column` of the
+/// file `file` or declares another unit than `unit` ("per key" / "per variable" entries take the
+/// writer's).
+void demandDeclaredColumn(std::string_view file, std::string_view column, std::string_view unit);
+
 /// True when `kinds` (an OutputSpec's list) names `kind`.
 bool outputKindListed(std::string_view kinds, std::string_view kind);
 
