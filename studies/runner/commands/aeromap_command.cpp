@@ -157,16 +157,10 @@ int runAeromapStudy(const Study& study, const fs::path& out_dir,
   fs::create_directories(out_dir);
   JournalResume resume;
   AeroMapJournal journal(out_dir / kAeromapJournalName, fingerprint, grid.size(), &resume);
-  if (resume.existed && !resume.fingerprint_matched)
-    consoleErr() << "aeromap: " << journal.path().string()
-              << " discarded: starting afresh\n";
-  else if (resume.existed)
-    consoleErr() << "aeromap: resuming from " << journal.path().string() << ": " << resume.records
-              << " of " << grid.size() << " points already done"
-              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
-                                              " torn or corrupt line(s) dropped)"
-                                        : std::string())
-              << "\n";
+  noteJournalResume("aeromap", journal.path(), resume.existed, resume.fingerprint_matched,
+                    std::to_string(resume.records) + " of " + std::to_string(grid.size()) +
+                        " points already done",
+                    resume.rejected_lines);
 
   std::optional<ProgressLine> progress;
   if (run.progress) progress.emplace("aeromap", grid.size(), resume.records);

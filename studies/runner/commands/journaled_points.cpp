@@ -44,16 +44,10 @@ std::optional<JournaledPoints> runJournaledPoints(const JournaledPointsJob& job)
       },
       &resume);
   PointJournal& journal = *out.journal;
-  if (resume.existed && !resume.fingerprint_matched)
-    consoleErr() << job.kind << ": " << journal.path().string()
-              << " discarded: starting afresh\n";
-  else if (resume.existed)
-    consoleErr() << job.kind << ": resuming from " << journal.path().string() << ": "
-              << resume.records << " of " << job.points << " points already done"
-              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
-                                              " torn or corrupt line(s) dropped)"
-                                        : std::string())
-              << "\n";
+  noteJournalResume(job.kind, journal.path(), resume.existed, resume.fingerprint_matched,
+                    std::to_string(resume.records) + " of " + std::to_string(job.points) +
+                        " points already done",
+                    resume.rejected_lines);
 
   out.rows.resize(job.points);
   out.resumed = resume.records;

@@ -159,16 +159,9 @@ int runOptimizeStudy(const Study& study, const fs::path& out_dir, const Optimize
   fs::create_directories(out_dir);
   OptimizeJournalResume resume;
   OptimizeJournal journal(out_dir / kOptimizeJournalName, fingerprint, shape, &resume);
-  if (resume.existed && !resume.fingerprint_matched)
-    consoleErr() << "optimize: " << journal.path().string()
-              << " discarded: starting afresh\n";
-  else if (resume.existed)
-    consoleErr() << "optimize: resuming from " << journal.path().string() << ": " << resume.records
-              << " evaluation(s) journaled"
-              << (resume.rejected_lines ? " (" + std::to_string(resume.rejected_lines) +
-                                              " torn or corrupt line(s) dropped)"
-                                        : std::string())
-              << "\n";
+  noteJournalResume("optimize", journal.path(), resume.existed, resume.fingerprint_matched,
+                    std::to_string(resume.records) + " evaluation(s) journaled",
+                    resume.rejected_lines);
 
   // Rank 0 of a distributed run: the starts run on the worker ranks (optimize_starts.hpp), then
   // minimize() below replays every evaluation: the bytes of a single-process run.

@@ -1,5 +1,7 @@
 #include "studies/runner/output/journal_file.hpp"
 
+#include "studies/runner/output/console.hpp"
+
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -145,6 +147,21 @@ void JournalFile::remove() {
   close();
   std::error_code ec;
   std::filesystem::remove(file_, ec);
+}
+
+void noteJournalResume(std::string_view kind, const std::filesystem::path& path, bool existed,
+                       bool fingerprint_matched, const std::string& done,
+                       std::size_t rejected_lines) {
+  if (!existed) return;
+  if (!fingerprint_matched) {
+    consoleErr() << kind << ": " << path.string() << " discarded: starting afresh\n";
+    return;
+  }
+  consoleErr() << kind << ": resuming from " << path.string() << ": " << done
+               << (rejected_lines ? " (" + std::to_string(rejected_lines) +
+                                        " torn or corrupt line(s) dropped)"
+                                  : std::string())
+               << "\n";
 }
 
 }  // namespace orni::studies

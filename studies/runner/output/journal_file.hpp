@@ -39,6 +39,14 @@ class ForeignJournalError : public std::runtime_error {
 void setFreshRun(bool fresh) noexcept;
 bool freshRun() noexcept;
 
+/// The console note (stderr) of a run that reopened its journal at `path`: "KIND: PATH discarded:
+/// starting afresh" when it belonged to another run (!fingerprint_matched), "KIND: resuming from
+/// PATH: DONE" (and how many torn or corrupt lines were dropped) when it is resumed; nothing when
+/// there was none. `done` says what the journal held ("12 of 180 points already done").
+void noteJournalResume(std::string_view kind, const std::filesystem::path& path, bool existed,
+                       bool fingerprint_matched, const std::string& done,
+                       std::size_t rejected_lines);
+
 class JournalFile {
  public:
   /// What opening found.
