@@ -2,7 +2,6 @@
 #include "studies/runner/output/console.hpp"
 
 #include <cmath>
-#include <iostream>
 
 #include "core/model/frames.hpp"
 #include "trim/calibration.hpp"

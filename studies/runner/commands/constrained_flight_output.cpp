@@ -1,9 +1,7 @@
 #include "studies/runner/commands/constrained_flight_output.hpp"
 
-#include <cmath>
 #include <limits>
 #include <optional>
-#include <sstream>
 
 #include "core/dynamics/flapping.hpp"
 #include "core/model/frames.hpp"

@@ -3,9 +3,6 @@
 
 #include <complex>
 #include <chrono>
-#include <cmath>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>

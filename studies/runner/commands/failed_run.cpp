@@ -1,7 +1,6 @@
 #include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/output/console.hpp"
 
-#include <iostream>
 #include <system_error>
 
 namespace orni::studies {

@@ -3,9 +3,7 @@
 
 #include <chrono>
 #include <cmath>
-#include <iostream>
 #include <optional>
-#include <sstream>
 
 #include "core/dynamics/free_flight.hpp"
 #include "core/model/frames.hpp"

@@ -1,7 +1,6 @@
 #include "studies/runner/commands/journaled_points.hpp"
 #include "studies/runner/output/console.hpp"
 
-#include <iostream>
 #include <stdexcept>
 #include <string_view>
 

@@ -6,11 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <iostream>
-#include <limits>
 #include <sstream>
 #include <stdexcept>
-#include <utility>
 #include <vector>
 
 #include "core/model/wing_geometry.hpp"

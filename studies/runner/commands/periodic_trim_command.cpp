@@ -1,11 +1,7 @@
 #include "studies/runner/commands/periodic_trim_command.hpp"
 #include "studies/runner/output/console.hpp"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <iostream>
-#include <sstream>
 #include <string>
 #include <vector>
 

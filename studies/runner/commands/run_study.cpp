@@ -1,6 +1,5 @@
 #include "studies/runner/commands/run_study.hpp"
 
-#include <iostream>
 #include <optional>
 #include <stdexcept>
 #include <system_error>

@@ -3,9 +3,6 @@
 
 #include <chrono>
 #include <cmath>
-#include <cstdint>
-#include <cstdio>
-#include <iostream>
 #include <limits>
 #include <optional>
 #include <stdexcept>

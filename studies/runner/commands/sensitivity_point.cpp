@@ -1,6 +1,5 @@
 #include "studies/runner/commands/sensitivity_point.hpp"
 
-#include <cmath>
 #include <exception>
 #include <optional>
 #include <stdexcept>

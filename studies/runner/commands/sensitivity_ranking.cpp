@@ -4,7 +4,6 @@
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
-#include <system_error>
 
 #include "studies/runner/config/sensitivity_study.hpp"
 

@@ -3,11 +3,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdio>
-#include <iostream>
 #include <iterator>
 #include <optional>
-#include <sstream>
 
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/last_cycle_harmonics.hpp"

@@ -1,15 +1,9 @@
 #include "studies/runner/commands/sweep_command.hpp"
 #include "studies/runner/output/console.hpp"
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
-#include <cstdint>
-#include <cstdio>
-#include <iostream>
 #include <limits>
 #include <optional>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>

@@ -1,6 +1,5 @@
 #include "studies/runner/commands/sweep_point.hpp"
 
-#include <cmath>
 #include <exception>
 #include <stdexcept>
 #include <utility>

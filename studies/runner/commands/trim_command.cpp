@@ -1,11 +1,7 @@
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/output/console.hpp"
 
-#include <algorithm>
-#include <cstdio>
-#include <iostream>
 #include <limits>
-#include <sstream>
 #include <string>
 #include <vector>
 
