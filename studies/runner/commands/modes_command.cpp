@@ -48,47 +48,6 @@ double seconds(Clock::time_point since) {
   return std::chrono::duration<double>(Clock::now() - since).count();
 }
 
-/// The file that bad [wing.fe] or wing values came from (the study, or the vehicle file).
-std::string inputFile(const Study& study) {
-  const fs::path& p = study.study_path.empty() ? study.vehicle_path : study.study_path;
-  return p.empty() ? std::string("vehicle") : displayPath(p);
-}
-
-/// Where wing.fe.element_size_m was written: the study's [override] or the vehicle file, with
-/// its line; InputError for a value that only this command can judge (the mesh size).
-InputError elementSizeError(const Study& study, const std::string& expected,
-                            const std::string& got) {
-  const std::string key = "wing.fe.element_size_m";
-  auto lineIn = [](const fs::path& file, const std::vector<std::string>& path) -> int {
-    try {
-      const toml::table root = parseTomlFile(file);
-      const toml::node* node = &root;
-      for (const std::string& part : path) {
-        const toml::table* t = node->as_table();
-        node = t != nullptr ? t->get(part) : nullptr;
-        if (node == nullptr) return -1;
-      }
-      return static_cast<int>(node->source().begin.line);
-    } catch (const InputError&) {
-      return -1;
-    }
-  };
-  if (!study.study_path.empty()) {
-    const int line = lineIn(study.study_path, {"override", "wing", "fe", "element_size_m"});
-    if (line >= 0)
-      return InputError::wrongValue(displayPath(study.study_path), line, "override." + key,
-                                    expected, got);
-  }
-  if (!study.vehicle_path.empty()) {
-    const fs::path vehicle = study.study_path.empty()
-                                 ? study.vehicle_path
-                                 : study.study_path.parent_path() / study.vehicle_path;
-    const int line = lineIn(vehicle, {"wing", "fe", "element_size_m"});
-    if (line >= 0) return InputError::wrongValue(displayPath(vehicle), line, key, expected, got);
-  }
-  return InputError::wrongValue(inputFile(study), 0, key, expected, got);
-}
-
 std::vector<double> toVector(const Eigen::VectorXd& v) {
   return std::vector<double>(v.data(), v.data() + v.size());
 }
@@ -142,7 +101,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   // meshes rigid ones too).
   const double estimated_nodes = estimatedMeshNodes(vehicle.wing);
   if (!(estimated_nodes <= kMaxWingMeshNodes))
-    throw elementSizeError(study,
+    throw vehicleKeyError(study, "wing.fe.element_size_m",
                            "an element size giving at most " + displayNumber(kMaxWingMeshNodes) +
                                " mesh nodes",
                            displayNumber(fe.element_size_m) + " (about " +
@@ -152,7 +111,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   try {
     mesh = structure::buildWingMesh(vehicle, fe.element_size_m);
   } catch (const std::invalid_argument& e) {
-    throw InputError(inputFile(study), 0, "wing",
+    throw InputError(inputFileOf(study), 0, "wing",
                      std::string("the wing cannot be meshed: ") + e.what());
   }
   const double mesh_s = seconds(t0);
@@ -187,7 +146,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
   try {
     wing = structure::buildModalWing(vehicle, mesh, options);
   } catch (const std::invalid_argument& e) {
-    throw InputError(inputFile(study), 0, "wing", std::string("bad wing model: ") + e.what());
+    throw InputError(inputFileOf(study), 0, "wing", std::string("bad wing model: ") + e.what());
   } catch (const std::runtime_error& e) {
     writeFailedSummary(out_dir, e.what(), seconds(t0));
     consoleErr() << "ornithopter: modes failed: " << e.what() << "\n";

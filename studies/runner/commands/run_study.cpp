@@ -28,10 +28,6 @@ namespace fs = std::filesystem;
 
 namespace orni::studies {
 
-std::string inputFileOf(const Study& study) {
-  return displayPath(study.study_path.empty() ? study.vehicle_path : study.study_path);
-}
-
 namespace {
 
 /// The kinds whose points a distributed run spreads over the ranks (point_farm.hpp).

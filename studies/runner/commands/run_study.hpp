@@ -9,9 +9,6 @@
 
 namespace orni::studies {
 
-/// The file a study came from, for messages: the study file, or the vehicle file it was made of.
-std::string inputFileOf(const Study& study);
-
 /// Runs `study` into `out_dir`, which the caller holds locked; `jobs` threads for the kinds that
 /// use them (aeromap, sweep, sensitivity, optimize). Returns the exit code: 0 finished (whatever
 /// the physics verdict, which is in summary.json), 1 failed. Bad input throws InputError; a model

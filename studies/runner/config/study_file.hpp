@@ -304,4 +304,15 @@ Study aeromapStudyFromVehicle(const std::filesystem::path& vehicle_file, GridAxi
 /// sensitivity study's points are the same (loadStudyFile checks this when it loads one).
 std::string resolvedStudyToml(const Study& study);
 
+/// The file a study came from, for messages: the study file, or the vehicle file it was made of
+/// ("vehicle" for a study built in memory).
+std::string inputFileOf(const Study& study);
+
+/// The error for vehicle key `key` (e.g. "wing.fe.element_size_m") of `study` that only a later
+/// stage can judge (the mesh a value gives, say), at the line where the value was written: the
+/// study's [override] ("override." + key), else the vehicle file; the study's file at line 0 when
+/// neither holds it (a default).
+InputError vehicleKeyError(const Study& study, const std::string& key,
+                           const std::string& expected, const std::string& got);
+
 }  // namespace orni::studies

@@ -5,6 +5,7 @@
 #include <string>
 #include <system_error>
 #include <utility>
+#include <vector>
 
 #include "studies/runner/config/study_sections.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
@@ -103,6 +104,51 @@ void readStudyVehicle(StudyDocument doc, const fs::path& study_file, Study& stud
   study.vehicle = std::move(definition.model);
   study.design_point = definition.design_point;
   study.point = study.design_point;
+}
+
+std::string inputFileOf(const Study& study) {
+  const fs::path& p = study.study_path.empty() ? study.vehicle_path : study.study_path;
+  return p.empty() ? std::string("vehicle") : displayPath(p);
+}
+
+InputError vehicleKeyError(const Study& study, const std::string& key,
+                           const std::string& expected, const std::string& got) {
+  std::vector<std::string> path;  // the key's tables and name
+  for (std::size_t start = 0, dot;; start = dot + 1) {
+    dot = key.find('.', start);
+    path.push_back(key.substr(start, dot == std::string::npos ? std::string::npos : dot - start));
+    if (dot == std::string::npos) break;
+  }
+  auto lineIn = [](const fs::path& file, const std::vector<std::string>& parts) -> int {
+    try {
+      const toml::table root = parseTomlFile(file);
+      const toml::node* node = &root;
+      for (const std::string& part : parts) {
+        const toml::table* t = node->as_table();
+        node = t != nullptr ? t->get(part) : nullptr;
+        if (node == nullptr) return -1;
+      }
+      return static_cast<int>(node->source().begin.line);
+    } catch (const InputError&) {
+      return -1;
+    }
+  };
+  if (!study.study_path.empty()) {
+    std::vector<std::string> in_override = {"override"};
+    in_override.insert(in_override.end(), path.begin(), path.end());
+    const int line = lineIn(study.study_path, in_override);
+    if (line >= 0)
+      return InputError::wrongValue(displayPath(study.study_path), line, "override." + key,
+                                    expected, got);
+  }
+  if (!study.vehicle_path.empty()) {
+    const fs::path vehicle = study.study_path.empty()
+                                 ? study.vehicle_path
+                                 : study.study_path.parent_path() / study.vehicle_path;
+    const int line = lineIn(vehicle, path);
+    if (line >= 0) return InputError::wrongValue(displayPath(vehicle), line, key, expected, got);
+  }
+  return InputError::wrongValue(inputFileOf(study), 0, key, expected, got);
 }
 
 }  // namespace orni::studies

@@ -563,5 +563,29 @@ TEST_F(ConfigStudyFile, ResolvedStudyContents) {
   EXPECT_EQ(text.find("[vehicle.body]"), std::string::npos);
 }
 
+// An error a later stage finds in a vehicle value points at the line that wrote it: the study's
+// [override] when it sets the key, else the vehicle file; a default has no line.
+TEST_F(ConfigStudyFile, VehicleKeyErrorNamesTheLineThatWroteTheValue) {
+  const fs::path overridden = writeStudy(
+      "o.toml", "kind = \"modes\"\nvehicle = \"" + efw() +
+                    "\"\n[override]\nwing.fe.element_size_m = 6e-3\n");
+  const InputError in_override =
+      vehicleKeyError(loadStudyFile(overridden), "wing.fe.element_size_m", "coarser", "6e-3");
+  EXPECT_EQ(in_override.file(), overridden.generic_string());
+  EXPECT_EQ(in_override.line(), 4);
+  EXPECT_EQ(in_override.key(), "override.wing.fe.element_size_m");
+
+  const fs::path plain = writeStudy("p.toml", "kind = \"modes\"\nvehicle = \"" + efw() + "\"\n");
+  const Study study = loadStudyFile(plain);
+  const InputError in_vehicle = vehicleKeyError(study, "wing.semispan_m", "shorter", "0.35");
+  EXPECT_EQ(in_vehicle.file(), efw());
+  EXPECT_GT(in_vehicle.line(), 0);
+  EXPECT_EQ(in_vehicle.key(), "wing.semispan_m");
+
+  const InputError defaulted = vehicleKeyError(study, "wing.skin.pretension_N_per_m", "-", "0");
+  EXPECT_EQ(defaulted.line(), 0);
+  EXPECT_EQ(inputFileOf(study), plain.generic_string());
+}
+
 }  // namespace
 }  // namespace orni::studies
