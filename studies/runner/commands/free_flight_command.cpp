@@ -186,7 +186,8 @@ int runFreeFlightStudy(const Study& study, const std::filesystem::path& out_dir,
   };
   drawFigure(out_dir, "flight", freeFlightFigure(study, s.analysed, skipFrom(0)));
   if (s.cycles_run >= 1)
-    drawFigure(out_dir, "cycle", freeFlightCycleFigure(study, s.cycles_run, skipFrom(s.cycles_run - 1)));
+    drawFigure(out_dir, "cycle",
+               freeFlightCycleFigure(study, s.cycles_run, skipFrom(s.cycles_run - 1)));
   const int first_analysed = s.first_analysed_cycle > 0 ? s.first_analysed_cycle - 1 : 0;
   const double t_from = first_analysed / study.point.freq_hz;
   drawFigure(out_dir, "phase", freeFlightPhaseFigure(study, t_from, skipFrom(first_analysed)));

@@ -260,7 +260,8 @@ int runPeriodicTrimStudy(const Study& study, const std::filesystem::path& out_di
                          .set("floquet", s.floquet_time_s));
   writeSummary(out_dir, summary);
   if (have_orbit) drawFigure(out_dir, "periodic_orbit", periodicOrbitFigure(study, s));
-  if (s.floquet_valid) drawFigure(out_dir, "floquet_multipliers", floquetMultiplierFigure(study, s));
+  if (s.floquet_valid)
+    drawFigure(out_dir, "floquet_multipliers", floquetMultiplierFigure(study, s));
   consoleOut() << study.name << ": " << s.BriefReport() << "\n  " << s.message << "\n  -> "
             << out_dir.string() << "\n";
   return 0;

@@ -106,8 +106,9 @@ bool decodeContinuationPoint(std::string_view payload, TrimContinuationPoint* p)
   double index = 0.0, iterations = 0.0, stable = 0.0;
   double* scalars[] = {&index, &o.lambda, &o.arclength, &o.residual_max, &iterations,
                        &o.max_modulus, &stable, &o.tangent_lambda, &o.step, &o.step_scale,
-                       &p->friction_speed_mps, &p->grid_friction_speed_mps, &p->cg_shift_m, &p->solution.theta_rad,
-                       &p->solution.speed_mps, &p->solution.tail_angle_rad, &p->solution.freq_hz,
+                       &p->friction_speed_mps, &p->grid_friction_speed_mps, &p->cg_shift_m,
+                       &p->solution.theta_rad, &p->solution.speed_mps, &p->solution.tail_angle_rad,
+                       &p->solution.freq_hz,
                        &p->mean.theta_rad, &p->mean.airspeed_mps, &p->mean.U_mps, &p->mean.W_mps,
                        &p->mean.Q_radps, &p->mean.power_aero_W, &p->mean.FV_N, &p->mean.FH_N,
                        &p->mean.M_Nm, &p->mean.theta_min_rad, &p->mean.theta_max_rad,

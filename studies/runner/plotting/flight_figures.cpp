@@ -51,7 +51,8 @@ std::string freeFlightFigure(const Study& study, bool with_spectra, const std::s
          "impulses lw 2 lc rgb '#333333'\n";
     g << "set ylabel '|{/Symbol q}(f)| (deg)'\nplot 'spectra.csv' skip 2 using 1:3 with impulses "
          "lw 2 lc rgb '#c0392b'\n";
-    g << "set logscale y\nset yrange [1e-5:1]\nset format y '10^{%L}'\nset ylabel '|h(f)| (m)'\nplot 'spectra.csv' "
+    g << "set logscale y\nset yrange [1e-5:1]\nset format y '10^{%L}'\nset ylabel '|h(f)| "
+         "(m)'\nplot 'spectra.csv' "
          "skip 2 using 1:($4 > 0 ? $4 : 1/0) with impulses lw 2 lc rgb '#2471a3'\n";
   }
   g << "unset multiplot\n";

@@ -89,7 +89,8 @@ std::vector<double> modeShapeW(const structure::ModalWing& wing, int k) {
 /// lines): columns y_W (mm), x_W (mm), then w / max|w| of the first `modes` modes, interpolated
 /// from the mesh onto kFigureStations x kFigureChordPoints points that follow the planform. A
 /// coarse grid keeps modes.svg small (the full mesh would be ~10 MB of SVG).
-std::string modesFigureData(const structure::ModalWing& wing, const WingModel& planform, int modes) {
+std::string modesFigureData(const structure::ModalWing& wing, const WingModel& planform,
+                            int modes) {
   std::vector<std::vector<double>> w;
   for (int k = 0; k < modes; ++k) {
     std::vector<double> v = modeShapeW(wing, k);

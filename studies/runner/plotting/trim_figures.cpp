@@ -46,9 +46,12 @@ std::string trimConvergenceFigure(const Study& study, const TrimSummary& s, doub
   }
   const char* kColours[3] = {"#9400d3", "#009e73", "#56b4e9"};  // gnuplot's first three
   g << "plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '"
-    << kColours[0] << "' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '"
-    << kColours[1] << "' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '"
-    << kColours[2] << "' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 "
+    << kColours[0]
+    << "' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '"
+    << kColours[1]
+    << "' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '"
+    << kColours[2]
+    << "' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 "
        "lc rgb '#e69f00' title 'frequency (Hz)'";
   if (refined) {
     const double v[3] = {s.solution.theta_rad * kRadToDeg, s.solution.speed_mps,

@@ -40,7 +40,8 @@ TEST(OutputSchema, DescribesEveryValueAndColumnThePaperStudiesWrite) {
     used.insert(c.used.begin(), c.used.end());
     values += c.summary_values;
     columns += c.csv_columns;
-    for (const std::string& f : c.findings) report += "  " + folder.filename().string() + ": " + f + "\n";
+    for (const std::string& f : c.findings)
+      report += "  " + folder.filename().string() + ": " + f + "\n";
   }
   EXPECT_TRUE(report.empty()) << report;
   // Stale entries: an entry of a file the paper's runs write that no committed file holds.
@@ -66,11 +67,13 @@ TEST(OutputSchema, DescribesEveryValueAndColumnThePaperStudiesWrite) {
 
 TEST(OutputSchema, PlaceholdersMatchFieldKeysAndOneName) {
   // <key> spans the dots of a field-table key, with a wildcard material name; <output> is one name.
-  const OutputSpec* k = findOutput("summary.json", "parameters.materials.LE1.youngs_modulus_gpa.low");
+  const OutputSpec* k =
+      findOutput("summary.json", "parameters.materials.LE1.youngs_modulus_gpa.low");
   ASSERT_NE(k, nullptr);
   EXPECT_EQ(k->path, "parameters.<key>.low");
   EXPECT_EQ(findOutput("summary.json", "parameters.not.a.key.low"), nullptr);
-  const OutputSpec* o = findOutput("summary.json", "predictions.speed_mps.effects.tail.area_m2.swing");
+  const OutputSpec* o =
+      findOutput("summary.json", "predictions.speed_mps.effects.tail.area_m2.swing");
   ASSERT_NE(o, nullptr);
   EXPECT_EQ(o->path, "predictions.<output>.effects.<key>.swing");
   EXPECT_EQ(findOutput("aeromap.csv", "no_such_column"), nullptr);
@@ -87,10 +90,12 @@ TEST(OutputSchema, ListingHasEveryEntryAndFiltersByKind) {
 }
 
 TEST(OutputSchema, CheckNamesAnUndescribedValueAndAWrongUnit) {
-  const fs::path dir = fs::temp_directory_path() / ("orni_output_check_" + std::to_string(::getpid()));
+  const fs::path dir =
+      fs::temp_directory_path() / ("orni_output_check_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   {
-    std::ofstream(dir / "summary.json") << R"({"kind": "aeromap", "status": "ok", "bogus_value": 1})";
+    std::ofstream(dir / "summary.json")
+        << R"({"kind": "aeromap", "status": "ok", "bogus_value": 1})";
     std::ofstream(dir / "aeromap.csv") << "speed_mps,freq_hz\nm/s,rad/s\n1,2\n";
   }
   const OutputCheck c = checkRunFolder(dir.string());
