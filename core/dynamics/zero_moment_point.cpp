@@ -4,6 +4,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/dynamics/flapping.hpp"
+
 namespace orni {
 
 namespace {
@@ -142,6 +144,29 @@ ConstrainedFlightTest analyseConstrainedFlightTest(const std::vector<double>& t_
   r.downstroke =
       epsilonMetrics(r.samples, th, [](const ZmpSample& s) { return s.stroke == Stroke::kDown; });
   return r;
+}
+
+std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(const FlightCoreModel& model,
+                                                                    const OperatingPoint& point,
+                                                                    const TimeHistory& history,
+                                                                    int samples_per_cycle) {
+  const std::size_t spc = static_cast<std::size_t>(samples_per_cycle);
+  const std::size_t size = history.loads.size();
+  if (spc == 0 || size < spc + 1 || (size - 1) % spc != 0) return std::nullopt;
+  const std::size_t start = size - 1 - spc;
+  std::vector<double> t(history.t_s.begin() + static_cast<std::ptrdiff_t>(start),
+                        history.t_s.end() - 1);
+  std::vector<double> delta(history.delta_M_rad.begin() + static_cast<std::ptrdiff_t>(start),
+                            history.delta_M_rad.end() - 1);
+  std::vector<LoadSample> loads(history.loads.begin() + static_cast<std::ptrdiff_t>(start),
+                                history.loads.end() - 1);
+  std::vector<double> delta_dot;
+  delta_dot.reserve(t.size());
+  for (const double ti : t)
+    delta_dot.push_back(
+        flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, ti).delta_dot_radps);
+  return analyseConstrainedFlightTest(t, delta, delta_dot, loads,
+                                      coefficientReference(model, point));
 }
 
 }  // namespace orni

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "core/dynamics/flight_core.hpp"
+#include "core/dynamics/simulation_result.hpp"
 
 namespace orni {
 
@@ -132,5 +133,13 @@ ConstrainedFlightTest analyseConstrainedFlightTest(const std::vector<double>& t_
                                                    const std::vector<LoadSample>& loads,
                                                    const CoefficientReference& reference,
                                                    const ZmpOptions& options = {});
+
+/// The constrained flight test of the last whole cycle of a tethered run's `history` at `point`
+/// (samples_per_cycle samples a cycle, endpoint excluded; the flap rate from the vehicle's
+/// flapping at point.freq_hz); nullopt when the history holds less than one whole cycle.
+std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(const FlightCoreModel& model,
+                                                                    const OperatingPoint& point,
+                                                                    const TimeHistory& history,
+                                                                    int samples_per_cycle);
 
 }  // namespace orni

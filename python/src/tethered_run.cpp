@@ -8,7 +8,6 @@
 #include <vector>
 
 #include "core/dynamics/tethered_simulation.hpp"
-#include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/commands/simulate_command.hpp"
 
 namespace py = pybind11;
@@ -71,8 +70,7 @@ py::tuple simulateTetheredStudy(const VehicleObject& vehicle, const studies::Stu
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       std::optional<ConstrainedFlightTest> cft;
       if (histories && s.status != SimulationStatus::kFailed)
-        cft = studies::lastCycleConstrainedFlightTest(study, model, history,
-                                                      opts.samples_per_cycle);
+        cft = lastCycleConstrainedFlightTest(model, study.point, history, opts.samples_per_cycle);
       summary_text =
           studies::tetheredSummary(study, model, s, opts, history, cft, wall_s, nullptr).toString();
     } catch (const Interrupted&) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The layer check (issue 15): no #include in core/, trim/, optimize/, studies/ or python/ runs up
 # a layer (tests/support/layer_rules.sh: model < aero, integrate, structure, analysis < dynamics
-# < trim < optimize < studies < python; grid beside aero..analysis, below trim). The checker is shown to catch an upward include and a
+# < trim < optimize < studies < python; grid beside aero..analysis, below trim; inside
+# studies/runner config < output < distributed < points < plotting < commands < cli, mpi). The checker is shown to catch an upward include and a
 # cycle in a scratch tree first, so that this test can fail; likewise a private header of a core
 # folder (ORNI_PRIVATE_HEADERS) included from another folder.
 #   usage: bash layers.sh <ornithopter-binary (unused)> <repo-root> <scratch-dir>
@@ -55,6 +56,16 @@ echo '#include <vector>' > "$t/core/dynamics/load_sample.hpp"
 check "a result header on a result header passes" check_layers "$t"
 echo '#include "core/dynamics/free_flight.hpp"' > "$t/core/dynamics/free_flight_recorder.hpp"
 check "a result header including a driver header fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
+rm "$t/core/dynamics/free_flight_recorder.hpp"
+# Inside studies/runner: a command may include a figure, a figure may not include a command.
+mkdir -p "$t/studies/runner/commands" "$t/studies/runner/plotting"
+echo '#include <string>' > "$t/studies/runner/commands/run.hpp"
+echo '#include <string>' > "$t/studies/runner/plotting/fig.hpp"
+echo '#include "studies/runner/plotting/fig.hpp"' > "$t/studies/runner/commands/run.cpp"
+check "a command including a figure passes" check_layers "$t"
+echo '#include "studies/runner/commands/run.hpp"' > "$t/studies/runner/plotting/fig.cpp"
+check "a figure including a command fails" bash -c "! (source '$(dirname "${BASH_SOURCE[0]}")/../support/layer_rules.sh'; check_layers '$t' > /dev/null)"
+rm "$t/studies/runner/plotting/fig.cpp"
 
 # The repository.
 report=$(check_layers "$root")

@@ -6,6 +6,9 @@
 # and core/grid (grid specs, sweep points, the point pool) beside aero..analysis: it includes
 # core/model only; trim and the layers above may include it, core/dynamics (which does not link
 # it) may not.
+# Inside studies/runner the folders are layers too (docs/layout.md):
+#   config < output < distributed < points < plotting < commands < cli, mpi (and main.cpp)
+# so the figures and the writers never include a command, and no command includes the CLI.
 # core/version.hpp (generated) may be included from anywhere; tests/ and examples/ from anything.
 # Private headers: a core folder's internals (no public header of the folder includes them), which
 # only files of the same folder may include (and the unit tests, which are not checked here).
@@ -55,6 +58,21 @@ check_layers() {  # check_layers ROOT
         if (from == "python") return to ~ /^core\// || to == "trim" || to == "optimize" || to == "studies"
         return 1
       }
+      # runner_rank(PATH): the layer of a file or header under studies/runner/ (0: not there)
+      function runner_rank(p,   part) {
+        if (p !~ /^studies\/runner\//) return 0
+        part = substr(p, 16)
+        if (index(part, "/") == 0) return 8  # main.cpp, ornithopter.hpp: the executable
+        part = substr(part, 1, index(part, "/") - 1)
+        if (part == "config") return 1
+        if (part == "output") return 2
+        if (part == "distributed") return 3
+        if (part == "points") return 4
+        if (part == "plotting") return 5
+        if (part == "commands") return 6
+        if (part == "cli" || part == "mpi") return 7
+        return 9  # a new folder: place it in this list
+      }
       # ours(TO): ROOT/TO is a folder (not a library header in quotes); asked once per folder
       function ours(to,   q) {
         if (!(to in is_dir)) {
@@ -74,6 +92,7 @@ check_layers() {  # check_layers ROOT
           if (!allows(from, to)) { print rel " includes " inc ": " from " may not include " to; bad = 1 }
           else if ((inc in private) && from != to) { print rel " includes " inc ": private to " to; bad = 1 }
           else if ((rel in low) && (inc in driver)) { print rel " includes " inc ": a result header runs back up to a driver"; bad = 1 }
+          else if (runner_rank(rel) > 0 && runner_rank(inc) > runner_rank(rel)) { print rel " includes " inc ": a studies/runner folder runs up to a higher one"; bad = 1 }
         }
         close(file)
       }

@@ -36,28 +36,6 @@ JsonObject epsilonJson(const EpsilonMetrics& m) {
 
 }  // namespace
 
-std::optional<ConstrainedFlightTest> lastCycleConstrainedFlightTest(
-    const Study& study, const FlightCoreModel& model, const TimeHistory& history,
-    int samples_per_cycle) {
-  const std::size_t spc = static_cast<std::size_t>(samples_per_cycle);
-  const std::size_t size = history.loads.size();
-  if (spc == 0 || size < spc + 1 || (size - 1) % spc != 0) return std::nullopt;
-  const std::size_t start = size - 1 - spc;
-  std::vector<double> t(history.t_s.begin() + static_cast<std::ptrdiff_t>(start),
-                        history.t_s.end() - 1);
-  std::vector<double> delta(history.delta_M_rad.begin() + static_cast<std::ptrdiff_t>(start),
-                            history.delta_M_rad.end() - 1);
-  std::vector<LoadSample> loads(history.loads.begin() + static_cast<std::ptrdiff_t>(start),
-                                history.loads.end() - 1);
-  std::vector<double> delta_dot;
-  delta_dot.reserve(t.size());
-  for (const double ti : t)
-    delta_dot.push_back(
-        flapStateAt(model.vehicle.flapping.amplitude_rad, study.point.freq_hz, ti).delta_dot_radps);
-  return analyseConstrainedFlightTest(t, delta, delta_dot, loads,
-                                      coefficientReference(model, study.point));
-}
-
 CsvTable zmpTable(const ConstrainedFlightTest& test) {
   using S = ZmpSample;
   return RowTable("zmp.csv", test.samples)

@@ -1,7 +1,7 @@
 // `kind = "sensitivity"` studies (config/sensitivity_study.hpp): the base vehicle and, for each
 // parameter the paper does not give, the vehicle with that value at the low and at the high end of
 // its plausible range, each trimmed, flown freely and held tethered at its trim
-// (commands/sensitivity_point.hpp); how far each end moves each prediction from the base.
+// (points/sensitivity_point.hpp); how far each end moves each prediction from the base.
 //
 // Points run on `threads` threads (core/grid/point_pool.hpp) and are stored by point index, so the
 // outputs do not depend on the thread count. Resumable like a sweep: finished points go to
@@ -31,7 +31,7 @@
 #include <filesystem>
 #include <functional>
 
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {

@@ -232,7 +232,7 @@ int runSimulateStudy(const Study& given, const std::filesystem::path& out_dir) {
     history_rows = files->historyRows();
     files->commit();
     // The constrained flight test (paper Fig. 9) of the last whole cycle.
-    cft = lastCycleConstrainedFlightTest(study, model, history, opts.samples_per_cycle);
+    cft = lastCycleConstrainedFlightTest(model, study.point, history, opts.samples_per_cycle);
     if (cft) writeFileAtomic(out_dir / "zmp.csv", zmpTable(*cft).toString());
   }
 

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "core/grid/sweep_grid.hpp"
-#include "studies/runner/commands/journaled_points.hpp"
-#include "studies/runner/commands/point_counts.hpp"
+#include "studies/runner/points/journaled_points.hpp"
+#include "studies/runner/points/point_counts.hpp"
 #include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"

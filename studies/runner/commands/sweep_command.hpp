@@ -9,7 +9,7 @@
 // Outputs (docs/design.md 4):
 //   sweep.csv           one row per point in point order (first axis outermost): the axis values
 //                       (columns named by their keys, units from the key suffixes), status, the
-//                       run's result columns (commands/sweep_point.hpp: which cells a point of
+//                       run's result columns (points/sweep_point.hpp: which cells a point of
 //                       each status fills; empty = no value, never NaN), message. Its bytes
 //                       depend only on the study (not on -j, nor on a resume).
 //   summary.json        kind "sweep", status (ok when every point is ok, else not_converged),
@@ -24,7 +24,7 @@
 #include <filesystem>
 #include <functional>
 
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {

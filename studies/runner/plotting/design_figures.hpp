@@ -8,7 +8,7 @@
 
 #include "core/grid/sweep_grid.hpp"
 #include "optimize/design_problem.hpp"
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {

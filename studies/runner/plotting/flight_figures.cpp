@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "core/model/frames.hpp"
-#include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/plotting/figure_rows.hpp"
 
 namespace orni::studies {

@@ -25,6 +25,13 @@ std::string freeFlightPhaseFigure(const Study& study, double t_from, const std::
 /// run whose histories.csv has `rows` rows.
 std::string tetheredLoadsFigure(const Study& study, const SimulationSummary& s, std::size_t rows);
 
+/// Column numbers of zmp.csv (1-based, as gnuplot counts), in the order zmpTable writes them
+/// (commands/constrained_flight_output.hpp).
+struct ZmpCsvColumns {
+  static constexpr int kT = 1, kDelta = 2, kStroke = 3, kCFV = 4, kCFH = 5, kCM = 6,
+                       kEpsilon = 7, kCFNormal = 8;
+};
+
 /// The constrained flight test (reads zmp.csv); `cycle` is the 1-based cycle shown.
 std::string zmpFigureScript(const Study& study, const ConstrainedFlightTest& test, int cycle);
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sensitivity_ranking.hpp"
+#include "studies/runner/points/sensitivity_ranking.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 

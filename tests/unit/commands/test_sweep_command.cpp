@@ -19,7 +19,7 @@
 
 #include "studies/runner/commands/simulate_command.hpp"
 #include "studies/runner/commands/sweep_command.hpp"
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
 #include "studies/runner/output/journal_file.hpp"
 #include "studies/runner/output/point_journal.hpp"

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "studies/runner/config/input_error.hpp"
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/dynamics/zero_moment_point.hpp"
@@ -241,6 +242,43 @@ TEST(AnalysisZeroMomentPoint, RejectsBadInput) {
   EXPECT_FALSE(r.cycle.weighted_mean.has_value());
   EXPECT_FALSE(r.cycle.of_mean_loads.has_value());
   EXPECT_FALSE(r.cycle.min.has_value());
+}
+
+// The test of a tethered history's last cycle: the last spc samples before the endpoint, the flap
+// rate of the vehicle's flapping at the point's frequency; no test without one whole cycle.
+TEST(AnalysisZeroMomentPoint, LastCycleOfATetheredHistory) {
+  const FlightCoreModel model(testing::rfwRig());
+  const OperatingPoint point{6.0, 4.0, 20.0 * kDegToRad, 0.0};
+  const int spc = 8;
+  const double T = 1.0 / point.freq_hz;
+  TimeHistory h;
+  for (int i = 0; i <= 2 * spc; ++i) {  // two cycles and the endpoint
+    const double t = i * T / spc;
+    h.t_s.push_back(t);
+    h.delta_M_rad.push_back(flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad);
+    h.loads.push_back(loads(1.0 + i, 0.1, 0.01 * i));  // FV tells which sample it is
+  }
+  const std::optional<ConstrainedFlightTest> r =
+      lastCycleConstrainedFlightTest(model, point, h, spc);
+  ASSERT_TRUE(r.has_value());
+  ASSERT_EQ(r->samples.size(), static_cast<std::size_t>(spc));
+  const CoefficientReference ref = coefficientReference(model, point);
+  const double qS = ref.dynamic_pressure_Pa * ref.wing_area_m2;
+  EXPECT_NEAR(r->CF_V.min, (1.0 + spc) / qS, kTol);          // sample spc starts the last cycle
+  EXPECT_NEAR(r->CF_V.max, (1.0 + 2 * spc - 1) / qS, kTol);  // the endpoint is excluded
+  EXPECT_EQ(r->reference.theta_mean_rad, point.theta_rad);
+
+  TimeHistory short_one = h;  // less than one whole cycle and its endpoint
+  short_one.t_s.resize(spc);
+  short_one.delta_M_rad.resize(spc);
+  short_one.loads.resize(spc);
+  EXPECT_FALSE(lastCycleConstrainedFlightTest(model, point, short_one, spc).has_value());
+  EXPECT_FALSE(lastCycleConstrainedFlightTest(model, point, h, 0).has_value());
+  TimeHistory torn = h;  // not a whole number of cycles
+  torn.t_s.pop_back();
+  torn.delta_M_rad.pop_back();
+  torn.loads.pop_back();
+  EXPECT_FALSE(lastCycleConstrainedFlightTest(model, point, torn, spc).has_value());
 }
 
 }  // namespace

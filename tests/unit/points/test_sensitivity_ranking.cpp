@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sensitivity_point.hpp"
-#include "studies/runner/commands/sensitivity_ranking.hpp"
+#include "studies/runner/points/sensitivity_point.hpp"
+#include "studies/runner/points/sensitivity_ranking.hpp"
 
 namespace orni::studies {
 namespace {

@@ -1,4 +1,4 @@
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 
 #include <exception>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "studies/runner/commands/sensitivity_point.hpp"
+#include "studies/runner/points/sensitivity_point.hpp"
 
 #include <exception>
 #include <optional>
@@ -10,7 +10,6 @@
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
-#include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "trim/trim_solver.hpp"
 #include "core/model/invariant.hpp"
@@ -115,10 +114,8 @@ SweepPointResult runPoint(const Study& point, const SensitivitySettings& setting
   TimeHistory history;
   const SimulationSummary t = simulateTethered(model, at, tethered_options, &history);
   if (t.status == SimulationStatus::kOk || t.status == SimulationStatus::kNotConverged) {
-    Study held = point;
-    held.point = at;
     const std::optional<ConstrainedFlightTest> cft =
-        lastCycleConstrainedFlightTest(held, model, history, tethered_options.samples_per_cycle);
+        lastCycleConstrainedFlightTest(model, at, history, tethered_options.samples_per_cycle);
     r.cells[kHingePower] = formatCell(t.mean.power_hinge_W);
     r.cells[kAeroPower] = formatCell(t.mean.power_aero_W);
     if (cft) {

@@ -1,4 +1,4 @@
-#include "studies/runner/commands/sensitivity_ranking.hpp"
+#include "studies/runner/points/sensitivity_ranking.hpp"
 
 #include <algorithm>
 #include <charconv>

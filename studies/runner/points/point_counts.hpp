@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/output/json_writer.hpp"
 
 namespace orni::studies {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sensitivity_point.hpp"
+#include "studies/runner/points/sensitivity_point.hpp"
 
 namespace orni::studies {
 

@@ -1,4 +1,4 @@
-#include "studies/runner/commands/point_counts.hpp"
+#include "studies/runner/points/point_counts.hpp"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "studies/runner/commands/journaled_points.hpp"
+#include "studies/runner/points/journaled_points.hpp"
 #include "studies/runner/output/console.hpp"
 
 #include <stdexcept>

@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/output/point_journal.hpp"
 
 namespace orni::studies {

@@ -30,7 +30,7 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/commands/sweep_point.hpp"
+#include "studies/runner/points/sweep_point.hpp"
 #include "studies/runner/config/study_file.hpp"
 
 namespace orni::studies {
