@@ -1,6 +1,8 @@
 // The output half of the field table (docs/outputs.md): every summary.json value and every CSV
 // column that a run writes, declared once with its unit and meaning. `ornithopter keys --outputs`
-// lists it; a test (tests/unit/output/test_output_schema.cpp) walks every file the paper studies
+// lists it; the writers hold to it (writeSummary, summary_file.hpp, refuses an undeclared value;
+// CsvTable and declaredColumns an undeclared column or another unit); a test
+// (tests/unit/output/test_output_schema.cpp) walks every file the paper studies
 // committed under results/paper and fails on a value or column the table does not describe, on a
 // CSV unit row that disagrees with it, and on an entry no file holds.
 #pragma once
