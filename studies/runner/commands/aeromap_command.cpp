@@ -13,8 +13,6 @@
 
 #include "core/dynamics/flight_core.hpp"
 #include "core/model/frames.hpp"
-#include "studies/runner/plotting/aeromap_figures.hpp"
-#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/distributed/farm_schedule.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
@@ -22,6 +20,8 @@
 #include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/output/summary_file.hpp"
+#include "studies/runner/plotting/aeromap_figures.hpp"
 #include "studies/runner/plotting/figure_rows.hpp"
 #include "trim/aero_map_stream.hpp"
 

@@ -4,12 +4,12 @@
 #include <cmath>
 
 #include "core/model/frames.hpp"
-#include "trim/calibration.hpp"
-#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/summary_file.hpp"
+#include "trim/calibration.hpp"
 
 namespace orni::studies {
 

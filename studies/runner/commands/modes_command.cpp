@@ -10,17 +10,17 @@
 #include <stdexcept>
 #include <vector>
 
-#include "core/model/wing_geometry.hpp"
 #include "core/model/vehicle_validation.hpp"
+#include "core/model/wing_geometry.hpp"
 #include "core/structure/calculix_deck.hpp"
 #include "core/structure/modal_wing.hpp"
 #include "core/structure/wing_mesh.hpp"
-#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/folder_lock.hpp"
 #include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 #include "studies/runner/plotting/modes_figure.hpp"
 

@@ -13,16 +13,16 @@
 
 #include "core/model/frames.hpp"
 #include "optimize/design_problem.hpp"
-#include "studies/runner/output/summary_file.hpp"
+#include "studies/runner/config/vehicle_file.hpp"
 #include "studies/runner/distributed/optimize_starts.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
-#include "studies/runner/config/vehicle_file.hpp"
 #include "studies/runner/output/aeromap_journal.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/optimize_journal.hpp"
 #include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/plotting/design_figures.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
 

@@ -16,13 +16,13 @@
 #include "studies/runner/commands/sweep_command.hpp"
 #include "studies/runner/commands/trim_command.hpp"
 #include "studies/runner/config/input_error.hpp"
-#include "trim/trim_options.hpp"
 #include "studies/runner/config/toml_access.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/folder_lock.hpp"
 #include "studies/runner/output/heartbeat.hpp"
 #include "studies/runner/output/html_report.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/trim_options.hpp"
 
 namespace fs = std::filesystem;
 

@@ -9,19 +9,19 @@
 #include <string>
 #include <vector>
 
-#include "studies/runner/points/journaled_points.hpp"
-#include "studies/runner/points/point_counts.hpp"
-#include "studies/runner/output/summary_file.hpp"
-#include "studies/runner/distributed/point_farm.hpp"
-#include "studies/runner/plotting/sensitivity_figures.hpp"
-#include "studies/runner/points/sensitivity_point.hpp"
-#include "studies/runner/points/sensitivity_ranking.hpp"
 #include "studies/runner/config/sensitivity_study.hpp"
+#include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "studies/runner/plotting/sensitivity_figures.hpp"
+#include "studies/runner/points/journaled_points.hpp"
+#include "studies/runner/points/point_counts.hpp"
+#include "studies/runner/points/sensitivity_point.hpp"
+#include "studies/runner/points/sensitivity_ranking.hpp"
 
 namespace orni::studies {
 

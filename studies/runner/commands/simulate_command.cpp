@@ -10,18 +10,18 @@
 #include "core/dynamics/last_cycle_harmonics.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
-#include "trim/trim_solver.hpp"
 #include "studies/runner/commands/constrained_flight_output.hpp"
 #include "studies/runner/commands/cycle_means_json.hpp"
 #include "studies/runner/commands/failed_run.hpp"
 #include "studies/runner/commands/free_flight_command.hpp"
-#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_stream.hpp"
 #include "studies/runner/output/json_writer.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/plotting/figure_rows.hpp"
 #include "studies/runner/plotting/flight_figures.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "trim/trim_solver.hpp"
 
 namespace orni::studies {
 

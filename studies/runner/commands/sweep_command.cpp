@@ -9,15 +9,15 @@
 #include <vector>
 
 #include "core/grid/sweep_grid.hpp"
-#include "studies/runner/points/journaled_points.hpp"
-#include "studies/runner/points/point_counts.hpp"
-#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "studies/runner/output/csv_table.hpp"
 #include "studies/runner/output/json_writer.hpp"
 #include "studies/runner/output/point_journal.hpp"
+#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/plotting/design_figures.hpp"
 #include "studies/runner/plotting/gnuplot.hpp"
+#include "studies/runner/points/journaled_points.hpp"
+#include "studies/runner/points/point_counts.hpp"
 
 namespace orni::studies {
 

@@ -1,7 +1,5 @@
 #include "studies/runner/output/journal_file.hpp"
 
-#include "studies/runner/output/console.hpp"
-
 #include <fcntl.h>
 #include <unistd.h>
 
@@ -16,6 +14,7 @@
 #include <utility>
 
 #include "studies/runner/output/atomic_file.hpp"
+#include "studies/runner/output/console.hpp"
 
 namespace orni::studies {
 

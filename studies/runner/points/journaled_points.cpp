@@ -5,9 +5,9 @@
 #include <string_view>
 
 #include "core/grid/point_pool.hpp"
-#include "studies/runner/output/summary_file.hpp"
 #include "studies/runner/distributed/point_farm.hpp"
 #include "studies/runner/output/progress_line.hpp"
+#include "studies/runner/output/summary_file.hpp"
 
 namespace orni::studies {
 

@@ -5,14 +5,14 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/dynamics/zero_moment_point.hpp"
 #include "core/dynamics/flight_core.hpp"
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
+#include "core/dynamics/zero_moment_point.hpp"
 #include "core/model/frames.hpp"
+#include "core/model/invariant.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "trim/trim_solver.hpp"
-#include "core/model/invariant.hpp"
 
 namespace orni::studies {
 

@@ -8,10 +8,10 @@
 #include "core/dynamics/free_flight.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
 #include "core/model/frames.hpp"
+#include "core/model/invariant.hpp"
 #include "studies/runner/output/atomic_file.hpp"
 #include "trim/periodic_trim.hpp"
 #include "trim/trim_solver.hpp"
-#include "core/model/invariant.hpp"
 
 namespace orni::studies {
 
