@@ -74,6 +74,38 @@ void applyPairStiffness(const ModalMembraneStiffness& m, const Eigen::VectorXd& 
   }
 }
 
+// S of ModalMembraneStiffness::hessian_pairs from C. The Hessian of V = 1/2 Q^T C Q is
+//   d2V/dq_a dq_b = sum_p z_p d2Q_p/dq_a dq_b + (J^T C J)_ab,   z = C Q,
+// with d2Q_p/dq_a dq_b = 1 for p = (a, b), a != b, and 2 for p = (a, a), and J_(a,j),a = w q_j
+// (w = 2 for j = a, else 1), so (J^T C J)_ab = sum_j sum_l w_aj w_bl C_(a,j),(b,l) q_j q_l; the
+// coefficient of Q_(k,l) collects (j, l) = (k, l) and, for k != l, (l, k).
+Eigen::MatrixXd pairHessian(const std::vector<std::array<int, 2>>& pairs, int m,
+                            const Eigen::MatrixXd& c) {
+  const auto np = static_cast<int>(pairs.size());
+  std::vector<int> index(static_cast<std::size_t>(m) * m);
+  for (int p = 0; p < np; ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    index[static_cast<std::size_t>(ij[0] * m + ij[1])] = p;
+    index[static_cast<std::size_t>(ij[1] * m + ij[0])] = p;
+  }
+  const auto pair = [&](int i, int j) { return index[static_cast<std::size_t>(i * m + j)]; };
+  const auto w = [](int i, int j) { return i == j ? 2.0 : 1.0; };
+  Eigen::MatrixXd s(np, np);
+  for (int r = 0; r < np; ++r) {
+    const auto& ab = pairs[static_cast<std::size_t>(r)];
+    const int a = ab[0], b = ab[1];
+    for (int t = 0; t < np; ++t) {
+      const auto& kl = pairs[static_cast<std::size_t>(t)];
+      const int k = kl[0], l = kl[1];
+      double v = w(a, b) * c(r, t);
+      v += w(a, k) * w(b, l) * c(pair(a, k), pair(b, l));
+      if (k != l) v += w(a, l) * w(b, k) * c(pair(a, l), pair(b, k));
+      s(r, t) = v;
+    }
+  }
+  return s;
+}
+
 // f_r += scale sum_p z_p dQ_p/dq_r, dQ_p/dq_r = delta_ir q_j + delta_jr q_i.
 void addPairForce(const ModalMembraneStiffness& m, const Eigen::VectorXd& q,
                   const Eigen::VectorXd& z, double scale, Eigen::VectorXd* f) {
@@ -199,6 +231,50 @@ void ModalMembraneStiffness::tangentParts(const Eigen::VectorXd& q, const Eigen:
     }
     (*rest)(ij[0], ij[1]) += ws->z(p);  // sum_p z_p d2Q_p/dq2
     (*rest)(ij[1], ij[0]) += ws->z(p);
+  }
+}
+
+void ModalMembraneStiffness::newtonParts(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot,
+                                         double beta_s, TangentWorkspace* ws,
+                                         Eigen::MatrixXd* stiffness,
+                                         Eigen::MatrixXd* damping,
+                                         Workspace* evaluation) const {
+  if (empty()) {
+    stiffness->setZero();
+    damping->setZero();
+    return;
+  }
+  if (hessian_pairs.size() == 0)
+    throw std::logic_error("ModalMembraneStiffness::newtonParts: no pair Hessian (factored C)");
+  const int np = pairCount();
+  for (int p = 0; p < np; ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    ws->products_and_rates(p, 0) = q(ij[0]) * q(ij[1]);
+    ws->products_and_rates(p, 1) = q_dot(ij[0]) * q(ij[1]) + q(ij[0]) * q_dot(ij[1]);
+  }
+  for (int c = 0; c < 2; ++c) {  // z0 = C Q, z1 = C Q'; S Q, S Q' (matrix-vector products:
+                                 // a product with two columns would pack C and S each time)
+    ws->pair_stress.col(c).noalias() = pair_stiffness * ws->products_and_rates.col(c);
+    ws->pair_hessian.col(c).noalias() = hessian_pairs * ws->products_and_rates.col(c);
+  }
+  const double half_beta = 0.5 * beta_s;
+  for (int p = 0; p < np; ++p) {
+    const auto& ij = pairs[static_cast<std::size_t>(p)];
+    const double diag = ij[0] == ij[1] ? 2.0 : 1.0;  // d2Q_p/dq_i dq_j
+    const double h = ws->pair_hessian(p, 0);
+    const double k = h + half_beta * (ws->pair_hessian(p, 1) + diag * ws->pair_stress(p, 1));
+    const double d = beta_s * (h - diag * ws->pair_stress(p, 0));
+    (*stiffness)(ij[0], ij[1]) = k;
+    (*stiffness)(ij[1], ij[0]) = k;
+    (*damping)(ij[0], ij[1]) = d;
+    (*damping)(ij[1], ij[0]) = d;
+  }
+  if (evaluation != nullptr) {
+    evaluation->z = ws->pair_stress.col(0) + beta_s * ws->pair_stress.col(1);
+    evaluation->evaluated_q = q;
+    evaluation->evaluated_q_dot = q_dot;
+    evaluation->evaluated_beta_s = beta_s;
+    evaluation->holds_evaluation = true;
   }
 }
 
@@ -340,15 +416,17 @@ ModalMembraneStiffness modalMembraneStiffness(const VonKarmanTerms& terms,
   }
   if (options.storage == MembraneStorage::kDense) {
     out.pair_stiffness = std::move(cmat);
+    out.hessian_pairs = pairHessian(out.pairs, m, out.pair_stiffness);
     return out;
   }
   Eigen::MatrixXd factor = pivotedStrainFactor(cmat, pair_amplitude, tolerance);
   // A factor of no rows (C = 0: the modes stretch nothing) is kept as the dense zero C, which
   // factored() can tell from it, whatever the storage asked for.
   if (factor.rows() == 0 ||
-      (options.storage == MembraneStorage::kCheaper && 2 * factor.rows() >= np))
+      (options.storage == MembraneStorage::kCheaper && 2 * factor.rows() >= np)) {
     out.pair_stiffness = std::move(cmat);
-  else
+    out.hessian_pairs = pairHessian(out.pairs, m, out.pair_stiffness);
+  } else
     out.strain_factor = std::move(factor);
   return out;
 }

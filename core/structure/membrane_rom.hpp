@@ -52,6 +52,11 @@ struct ModalMembraneStiffness {
   Eigen::MatrixXd strain_factor;
   Eigen::MatrixXd relaxation;             ///< U (6n x P): in-plane displacement per Q_p (m per
                                           ///< (m sqrt(kg))^2); empty unless asked for
+  /// S (P x P), with the dense C only: the Hessian of V_NL in the pair products,
+  /// d2V/dq_a dq_b = sum_s S_(ab),s Q_s (V_NL is quartic, so its Hessian is quadratic in q and
+  /// S is unique). One pass over S gives the tangent that tangentParts builds from about four
+  /// passes over C (newtonParts).
+  Eigen::MatrixXd hessian_pairs;
 
   bool empty() const { return mode_count == 0; }
   int pairCount() const { return static_cast<int>(pairs.size()); }
@@ -86,13 +91,18 @@ struct ModalMembraneStiffness {
   struct TangentWorkspace {
     Eigen::VectorXd products, z, strain;  // P, P, R
     Eigen::MatrixXd jac, jac_rate;  ///< X J(q), beta X J(q') with X = C (P x M) or G (R x M)
+    /// newtonParts: [Q, Q'], C [Q, Q'] and S [Q, Q'] (P x 2 each)
+    Eigen::MatrixXd products_and_rates, pair_stress, pair_hessian;
     TangentWorkspace() = default;
     explicit TangentWorkspace(const ModalMembraneStiffness& m)
         : products(m.pairCount()),
           z(m.pairCount()),
           strain(m.rank()),
           jac(m.rank(), m.mode_count),
-          jac_rate(m.rank(), m.mode_count) {}
+          jac_rate(m.rank(), m.mode_count),
+          products_and_rates(m.pairCount(), 2),
+          pair_stress(m.pairCount(), 2),
+          pair_hessian(m.pairCount(), 2) {}
   };
   /// Power of the membrane force on the modal rates q' (per wing).
   struct Rates {
@@ -124,6 +134,20 @@ struct ModalMembraneStiffness {
   /// The two parts of that power separately (for histories and checks).
   Rates rates(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
               Workspace* ws) const;
+  /// The Newton matrix of the damped force from S (needs hessian_pairs, i.e. the dense C): two
+  /// passes, over S and C with [Q, Q'], instead of tangentParts' four over C. `damping` =
+  /// d f / dq' = beta J^T C J exactly (= beta (H(q) - sum_p z0_p d2Q_p/dq2), H the Hessian of
+  /// V_NL, z0 = C Q); `stiffness` = d f / dq less the antisymmetric part of the damping force's
+  /// change with q, beta (J^T C J(q') - J(q')^T C J)/2: exact where q' = 0 or beta = 0, and
+  /// symmetric (H(q) + beta/2 (S Q' + sum_p (C Q')_p d2Q_p/dq2), by polarisation of H). What
+  /// is left out changes how fast Newton's method contracts, not what it converges to. M x M
+  /// each, overwritten.
+  /// `evaluation` (optional) receives the damped force's stress at this state, z = C Q + beta
+  /// C Q', as a damped addForce would leave it, for addForceEvaluatedIn: the force at the state
+  /// of a linearisation then costs no further pass over C.
+  void newtonParts(const Eigen::VectorXd& q, const Eigen::VectorXd& q_dot, double beta_s,
+                   TangentWorkspace* ws, Eigen::MatrixXd* stiffness, Eigen::MatrixXd* damping,
+                   Workspace* evaluation = nullptr) const;
   /// d^2 V_NL / dq^2 (M x M): the membrane's tangent stiffness at q.
   Eigen::MatrixXd tangent(const Eigen::VectorXd& q) const;
   /// The Jacobian of the damped force in two parts, without allocation: `gauss_newton` = J^T C J

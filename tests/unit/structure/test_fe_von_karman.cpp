@@ -14,6 +14,7 @@
 #include <cstring>
 #include <cstdio>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -475,6 +476,62 @@ TEST(FeMembraneRom, ForceFromAnEarlierEvaluationIsTheSameBitsAtTheSameStateOnly)
   // The workspace used for something else no longer holds the evaluation.
   rom.energy(q, &evaluated);
   EXPECT_FALSE(rom.addForceEvaluatedIn(evaluated, q, qd, beta_s, &untouched));
+}
+
+// The pair Hessian S (d2V/dq2 = sum_s S_(ab),s Q_s) against the tangent built from C, and the
+// Newton matrix from it (newtonParts) against tangentParts: its damping part is beta J^T C J
+// exactly, its stiffness part the exact d f / dq less the antisymmetric part of the damping
+// force's change with q; the stress it leaves gives the damped force of addForce to round-off.
+TEST(FeMembraneRom, NewtonMatrixFromThePairHessianMatchesTheTangentFromC) {
+  const ClampedFilm film(8);
+  const VonKarmanTerms terms(film.vehicle, film.mesh);
+  const ModalMembraneStiffness rom = modalMembraneStiffness(
+      terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, film.shapes);
+  ASSERT_FALSE(rom.factored());
+  ASSERT_EQ(rom.hessian_pairs.rows(), rom.pairCount());
+  const auto m = film.shapes.cols();
+  Eigen::VectorXd q(m), qd(m);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    q(i) = 1e-4 * std::sin(1.3 * static_cast<double>(i) + 0.2);
+    qd(i) = 3e-2 * std::cos(0.7 * static_cast<double>(i) - 0.4);  // beta q' / q ~ 0.1
+  }
+  const double beta_s = 2e-4;
+  ModalMembraneStiffness::TangentWorkspace tws(rom);
+  Eigen::MatrixXd gn(m, m), rest(m, m), k(m, m), d(m, m);
+  // At rest: both parts exact, stiffness = the tangent of V, damping = beta J^T C J.
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(m);
+  rom.tangentParts(q, zero, beta_s, &tws, &gn, &rest);
+  rom.newtonParts(q, zero, beta_s, &tws, &k, &d);
+  const double k_scale = (gn + rest).cwiseAbs().maxCoeff();
+  EXPECT_LT((k - (gn + rest)).cwiseAbs().maxCoeff(), 1e-12 * k_scale);
+  EXPECT_LT((d - beta_s * gn).cwiseAbs().maxCoeff(), 1e-12 * beta_s * gn.cwiseAbs().maxCoeff());
+  // Moving: the damping part still exact; the stiffness part the symmetric part of d f / dq.
+  rom.tangentParts(q, qd, beta_s, &tws, &gn, &rest);
+  ModalMembraneStiffness::Workspace evaluation(rom);
+  rom.newtonParts(q, qd, beta_s, &tws, &k, &d, &evaluation);
+  const Eigen::MatrixXd exact = gn + rest;
+  const Eigen::MatrixXd symmetric = 0.5 * (exact + exact.transpose());
+  EXPECT_LT((k - symmetric).cwiseAbs().maxCoeff(), 1e-12 * exact.cwiseAbs().maxCoeff());
+  EXPECT_LT((d - beta_s * gn).cwiseAbs().maxCoeff(), 1e-12 * beta_s * gn.cwiseAbs().maxCoeff());
+  // What is left out is small where beta q' is small next to q (here about 0.1 of it), and not
+  // zero: the test would not see a newtonParts that returned the exact matrix by another route.
+  const double left_out = (exact - symmetric).cwiseAbs().maxCoeff();
+  EXPECT_GT(left_out, 1e-6 * exact.cwiseAbs().maxCoeff());
+  EXPECT_LT(left_out, 0.2 * exact.cwiseAbs().maxCoeff());
+  // The stress it leaves: the force of a damped evaluation at this state, to round-off.
+  Eigen::VectorXd f_new = Eigen::VectorXd::Zero(m), f_reused = Eigen::VectorXd::Zero(m);
+  ModalMembraneStiffness::Workspace fresh(rom);
+  rom.addForce(q, qd, beta_s, &fresh, &f_new);
+  ASSERT_TRUE(rom.addForceEvaluatedIn(evaluation, q, qd, beta_s, &f_reused));
+  EXPECT_LT((f_reused - f_new).cwiseAbs().maxCoeff(), 1e-12 * f_new.cwiseAbs().maxCoeff());
+  // A factored C has no pair Hessian: newtonParts refuses it.
+  MembraneCondensationOptions factored;
+  factored.storage = MembraneStorage::kFactor;
+  const ModalMembraneStiffness rom_g = modalMembraneStiffness(
+      terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, film.shapes, factored);
+  ASSERT_TRUE(rom_g.factored());
+  ModalMembraneStiffness::TangentWorkspace tws_g(rom_g);
+  EXPECT_THROW(rom_g.newtonParts(q, qd, beta_s, &tws_g, &k, &d), std::logic_error);
 }
 
 // Modes that stretch nothing (in-plane shapes with no out-of-plane part): C = 0, whose factor has
