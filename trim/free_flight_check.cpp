@@ -10,6 +10,7 @@
 #include "core/analysis/limit_cycle.hpp"
 #include "core/dynamics/free_flight.hpp"
 #include "core/model/frames.hpp"
+#include "trim/free_flight_trim.hpp"
 
 namespace orni {
 
@@ -56,6 +57,12 @@ FreeFlightVerification verifyFreeFlight(const FlightCoreModel& model, const Oper
   FreeFlightVerification v;
   SimulationOptions o;
   o.mode = FlightMode::kFree;
+  // The settled flights' tolerance: 1e-5 for the nonlinear wing (free_flight_trim.hpp). Measured
+  // on the calibrated vehicle released at Table 3's point (fig6_8_free_flight_table3, 60 cycles):
+  // the largest scaled deviation 0.40 / 1.34 (two builds whose membrane iterations differ in
+  // round-off) at rel_tol 1e-4, 0.36 / 0.38 at 1e-5, 0.371 / 0.371 at 1e-6; at 1e-4 the verdict
+  // was round-off.
+  o.rel_tol = settledFlightRelTol(model);
   o.cycles = options.cycles;
   o.free = options.free;
   o.record_history = false;

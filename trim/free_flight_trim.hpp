@@ -125,7 +125,7 @@ struct FreeFlightTrimOptions {
 /// measured on the magpie (P3 35 mm, eta_s 0.001), tethered, cycle-mean FV 1e-3 N at 1e-4, 5e-5 N
 /// at 1e-5, 1e-6 N at 1e-6 (the linear wing: 2e-5 N at 1e-4); free, the fit of the slowest motion
 /// to the cycle means of theta leaves 1 % of it at 1e-4 (at the limit of a clean fit), 0.1 % at
-/// 1e-5; the run costs 25 % more.
+/// 1e-5; the run costs 25 % more. The Eq. 5 check flies at it too (free_flight_check.cpp).
 double settledFlightRelTol(const FlightCoreModel& model);
 
 /// Secant iteration on the tail angle from `start` (an Eq. (4) trim) for level settled flight.

@@ -9,7 +9,7 @@ set lmargin 12
 set rmargin 44
 set tmargin 4
 set key outside right top vertical Left reverse noenhanced
-set xrange [-0.2:22.2]
+set xrange [-0.2:27.2]
 set xlabel 'iteration'
 set xtics 1
 set logscale y
@@ -21,15 +21,15 @@ unset logscale y
 set format y '%g'
 set yrange [*:*]
 set ylabel 'unknowns (deg, m/s, Hz)'
-set xrange [-0.2:23.3]
-set xtics add ('stage 2' 23)
+set xrange [-0.2:28.3]
+set xtics add ('stage 2' 28)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 8.88', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.84', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.77'
-23,8.87829917747194
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 8.88', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.83', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.78'
+28,8.877396590353634
 e
-23,10.836270347417729
+28,10.834312662166864
 e
-23,11.772900102224263
+28,11.780296980139687
 e
 
 unset multiplot
@@ -42,7 +42,7 @@ set lmargin 12
 set rmargin 44
 set tmargin 4
 set key outside right top vertical Left reverse noenhanced
-set xrange [-0.2:22.2]
+set xrange [-0.2:27.2]
 set xlabel 'iteration'
 set xtics 1
 set logscale y
@@ -54,15 +54,15 @@ unset logscale y
 set format y '%g'
 set yrange [*:*]
 set ylabel 'unknowns (deg, m/s, Hz)'
-set xrange [-0.2:23.3]
-set xtics add ('stage 2' 23)
+set xrange [-0.2:28.3]
+set xtics add ('stage 2' 28)
 set xlabel 'iteration (stage 1) / free-flight refinement (stage 2)'
-plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 8.88', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.84', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.77'
-23,8.87829917747194
+plot 'trim_progress.csv' skip 2 using 1:3 with linespoints lw 2 pt 7 lc rgb '#9400d3' title 'theta mean (deg)', '' skip 2 using 1:4 with linespoints lw 2 pt 5 lc rgb '#009e73' title 'speed (m/s)', '' skip 2 using 1:5 with linespoints lw 2 pt 9 lc rgb '#56b4e9' title 'tail angle (deg)', '' skip 2 using 1:6 with linespoints lw 2 pt 11 lc rgb '#e69f00' title 'frequency (Hz)', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#9400d3' title 'stage 2: theta = 8.88', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#009e73' title 'stage 2: U = 10.83', '-' using 1:2 with points pt 6 ps 2.5 lw 2 lc rgb '#56b4e9' title 'stage 2: tail = 11.78'
+28,8.877396590353634
 e
-23,10.836270347417729
+28,10.834312662166864
 e
-23,11.772900102224263
+28,11.780296980139687
 e
 
 unset multiplot
