@@ -205,4 +205,56 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   out->tip_twist_rad = tip.psi_twist.dot(q_);
 }
 
+bool FlexibleTetheredSystem::sampleFromDerivative(double t_s, const double* y, const double* ydot,
+                                                  LoadSample* out) {
+  if (!(model_.aero_context.params->separation_lag_tf0 > 0.0)) return false;
+  const FlapState flap = flapStateAt(model_.vehicle.flapping.amplitude_rad, control_.freq_hz, t_s);
+  R_BW_ = rotX(flap.phi_rad);
+  omega_W_ = Vec3(flap.phi_dot_radps, 0.0, 0.0);
+  alpha_W_ = Vec3(flap.phi_ddot_radps2, 0.0, 0.0);
+  q_ = Eigen::Map<const Eigen::VectorXd>(y, mode_count_);
+  qd_ = Eigen::Map<const Eigen::VectorXd>(y + mode_count_, mode_count_);
+  qdd_ = Eigen::Map<const Eigen::VectorXd>(ydot + mode_count_, mode_count_);
+  // The inertial loads and the hinge power's kinetic and strain terms as in sample().
+  const structure::WingInertialLoads inertial = structure::wingInertialLoads(
+      flex_.modal->lumped_sums, q_, qd_, qdd_, omega_W_, alpha_W_, &inertia_ws_);
+  rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
+  const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
+                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
+  const double* quad = ydot + quadratureOffset();  // rhs(): FV, FH, M (aero + tail), powers
+  LoadSample& o = *out;
+  o = LoadSample{};
+  const Vec3& p2 = model_.p_P1P2_B;
+  const Vec3 Fi = R_BW_ * inertial.force_W_N;
+  const Vec3 Mi = R_BW_ * inertial.moment_W_Nm + p2.cross(Fi);
+  setWingPairLoads(flightPathFrame(body_.v_P1_B), Vec3::Zero(), Vec3::Zero(), Fi, Mi, &o);
+  addTailAndTotals(model_, body_, control_, &o);  // the tail's and the body's (constant here)
+  o.FV_wing_aero_N = quad[0] - o.FV_tail_N;
+  o.FH_wing_aero_N = quad[1] - o.FH_tail_N - o.FH_body_N;
+  o.M_wing_aero_Nm = quad[2] - o.M_tail_Nm;
+  o.FV_N = o.FV_wing_aero_N + o.FV_wing_inertial_N + o.FV_tail_N;
+  o.FH_N = o.FH_wing_aero_N + o.FH_wing_inertial_N + o.FH_tail_N + o.FH_body_N;
+  o.M_Nm = o.M_wing_aero_Nm + o.M_wing_inertial_Nm + o.M_tail_Nm;
+  o.power_aero_W = quad[3];
+  // rhs()'s hinge row is 2 (aero power + modal and membrane damping); sample() adds the rates of
+  // kinetic and strain energy.
+  o.power_hinge_W = quad[4] + 2.0 * (inertial.kinetic_energy_rate_W +
+                                     omega_W_.dot(inertial.rotary_moment_W_Nm) + strain_rate);
+  // The separated area share from the separation states, clamped as the kernel clamps them.
+  const aero::StripBatch& b = data_.batch;
+  const int per = model_.aero_states_per_strip;
+  double separated = 0.0, area = 0.0;
+  for (Eigen::Index j = 0; j < b.chord_m.size(); ++j) {
+    const double f = std::max(std::min(y[aeroOffset() + per * j + per - 1], 1.0), 0.0);
+    const double a = b.chord_m[j] * b.width_m[j];
+    separated += (1.0 - f) * a;
+    area += a;
+  }
+  o.separated_fraction = separated / area;
+  const FlexibleStrip& tip = flex_.strips[static_cast<std::size_t>(flex_.tip_strip)];
+  o.tip_deflection_m = -(tip.phi_L * q_).z();
+  o.tip_twist_rad = tip.psi_twist.dot(q_);
+  return true;
+}
+
 }  // namespace orni

@@ -30,6 +30,15 @@ class FlexibleTetheredSystem {
   /// Full loads at (t, y) for the histories: aerodynamic plus inertial (nodal sums over the FE
   /// mesh with lumped masses), tip deflection and twist.
   void sample(double t_s, const double* y, LoadSample* out);
+  /// The same loads at a sampled instant from the state y and its derivative ydot as the
+  /// integrator's dense output gives them there (OdeIntegrator::derivative), without the strip
+  /// aerodynamics: the wing's aerodynamic loads and powers are the quadrature rows of ydot (less
+  /// the tail, which the tethered body holds constant), q'' its modal rows; the inertial loads,
+  /// the separated area (from the separation states), the tip's deflection and twist are
+  /// evaluated from them as in sample(). About a third of sample()'s cost; the aerodynamic loads
+  /// are then the interpolant's, as accurate as the sampled state (docs/theory.md 9.4). Returns
+  /// false (out untouched) without the separation lag, whose fraction is not a state.
+  bool sampleFromDerivative(double t_s, const double* y, const double* ydot, LoadSample* out);
 
   static int rhsCallback(double t, const double* y, double* ydot, void* self) {
     static_cast<FlexibleTetheredSystem*>(self)->rhs(t, y, ydot);

@@ -138,6 +138,19 @@ class HistoryRecorder {
   std::size_t spc_;
 };
 
+// The loads of a history sample at the integrator's present (t, y). The flexible wing takes them
+// from the dense output's derivative where it can (FlexibleTetheredSystem::sampleFromDerivative:
+// no strip evaluation); every other system, and the start (no step taken yet), evaluates them.
+template <class System>
+void sampleLoads(System& sys, OdeIntegrator&, double t, const double* y, bool, LoadSample* s) {
+  sys.sample(t, y, s);
+}
+void sampleLoads(FlexibleTetheredSystem& sys, OdeIntegrator& integrator, double t,
+                 const double* y, bool interpolate, LoadSample* s) {
+  const double* ydot = interpolate ? integrator.derivative() : nullptr;
+  if (ydot == nullptr || !sys.sampleFromDerivative(t, y, ydot, s)) sys.sample(t, y, s);
+}
+
 template <class System>
 SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const FlightCoreModel& model,
                             const OperatingPoint& point, const SimulationOptions& options,
@@ -162,7 +175,7 @@ SimulationSummary runCycles(System& sys, OdeIntegrator& integrator, const Flight
   auto recordSample = [&](double t, const double* y) {
     if (!record) return;
     LoadSample s;
-    sys.sample(t, y, &s);
+    sampleLoads(sys, integrator, t, y, options.interpolate_sampled_loads && t > 0.0, &s);
     recorder.add(t, flapStateAt(model.vehicle.flapping.amplitude_rad, point.freq_hz, t).delta_rad,
                  s);
   };

@@ -76,6 +76,7 @@ struct ArkodeStepper {
   int (*num_rhs_evals)(void* mem, long* n);  // of the explicit part
   char* (*flag_name)(long flag);             // malloc'ed by SUNDIALS (6.x): the caller frees it
   void (*free)(void** mem);
+  int (*get_dky)(void* mem, sunrealtype t, int k, N_Vector dky);  // dense output's k-th derivative
 };
 
 namespace {
@@ -136,7 +137,8 @@ const ArkodeStepper kErkStep{
     &ERKStepGetNumStepAttempts,
     &ERKStepGetNumRhsEvals,
     &ERKStepGetReturnFlagName,
-    &ERKStepFree};
+    &ERKStepFree,
+    &ERKStepGetDky};
 
 const ArkodeStepper kArkStep{
     "ARKStep",
@@ -158,7 +160,8 @@ const ArkodeStepper kArkStep{
       return ARKStepGetNumRhsEvals(mem, n, &fi);
     },
     &ARKStepGetReturnFlagName,
-    &ARKStepFree};
+    &ARKStepFree,
+    &ARKStepGetDky};
 
 }  // namespace
 }  // namespace detail
@@ -176,7 +179,8 @@ OdeIntegrator::OdeIntegrator(int state_size, RhsFunction rhs, void* user_data,
   context_ = c;
   y_ = N_VNew_Serial(n_, c);
   atol_ = N_VNew_Serial(n_, c);
-  if (!y_ || !atol_) throw std::runtime_error("N_VNew_Serial failed");
+  dky_ = N_VNew_Serial(n_, c);
+  if (!y_ || !atol_ || !dky_) throw std::runtime_error("N_VNew_Serial failed");
   // Single-pass linear combinations (set before the stepper clones the vector, so every work
   // vector inherits them): the integrator's own vector work is comparable to the RHS for ~60
   // states.
@@ -192,6 +196,7 @@ OdeIntegrator::OdeIntegrator(int state_size, RhsFunction rhs, void* user_data,
 OdeIntegrator::~OdeIntegrator() {
   if (mem_) stepper_->free(&mem_);
   stage_solver_.reset();
+  if (dky_) N_VDestroy(asVector(dky_));
   if (atol_) N_VDestroy(asVector(atol_));
   if (y_) N_VDestroy(asVector(y_));
   if (context_) {
@@ -269,6 +274,13 @@ IntegratorStatus OdeIntegrator::advanceTo(double tout) {
 }
 
 const double* OdeIntegrator::state() const { return N_VGetArrayPointer(asVector(y_)); }
+
+const double* OdeIntegrator::derivative() {
+  if (!mem_) throw std::logic_error("OdeIntegrator::derivative before reset");
+  // ARK_BAD_T before the first step after a reset: no interpolant yet.
+  if (stepper_->get_dky(mem_, t_, 1, asVector(dky_)) != ARK_SUCCESS) return nullptr;
+  return N_VGetArrayPointer(asVector(dky_));
+}
 
 long OdeIntegrator::steps() const {
   long n = 0;

@@ -42,6 +42,12 @@ class OdeIntegrator {
   IntegratorStatus advanceTo(double tout);
 
   const double* state() const;  ///< state at time()
+  /// dy/dt at time() from the dense output that gave state() (ARKODE's Hermite interpolant of
+  /// the last step, differentiated): at an accepted step's end the right-hand side there, in
+  /// between a polynomial through the two ends' values consistent with the step's increment.
+  /// No right-hand side evaluation; valid until the next advanceTo. Null before the first step
+  /// after reset (no interpolant yet).
+  const double* derivative();
   double time() const { return t_; }
   int size() const { return n_; }
   long steps() const;
@@ -67,6 +73,7 @@ class OdeIntegrator {
   void* context_ = nullptr;  // SUNContext
   void* y_ = nullptr;        // N_Vector
   void* atol_ = nullptr;     // N_Vector
+  void* dky_ = nullptr;      // N_Vector: derivative()'s
   std::unique_ptr<detail::LinearStageSolver> stage_solver_;  // implicit-explicit only
   void* mem_ = nullptr;      // ERKStep or ARKStep memory
   double t_ = 0.0;

@@ -12,7 +12,8 @@
 //   BM_TetheredEfwFlexible10CyclesHistories: the linear run recorded at 100 samples a cycle;
 //     target: at most 20 % over the run without histories.
 //   BM_FlexibleTetheredRhs: one right-hand side of that run; BM_FlexibleTetheredSample: one
-//     history sample.
+//     history sample evaluated at the state; BM_FlexibleTetheredSampleFromDerivative: one from
+//     the dense output (the histories' default).
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -124,6 +125,8 @@ BENCHMARK(BM_TetheredTable3Membrane48Modes)->Unit(benchmark::kMillisecond)->Iter
 // The same 10 cycles (linear wing, the vehicle's modes) recorded at 100 samples a cycle into a
 // TimeHistory, as the CLI and the Python module run them: the cost of the histories is the
 // difference to BM_TetheredEfwFlexible10Cycles/explicit:0/modes:0/nonlinear:0 (target <= 20 %).
+// interpolated:1 (the default) takes the samples' loads from the dense output, interpolated:0
+// evaluates them at the sampled state (SimulationOptions::interpolate_sampled_loads).
 void BM_TetheredEfwFlexible10CyclesHistories(benchmark::State& state) {
   const FlightCoreModel model(efwFlexible());
   const OperatingPoint point = efwFile().design_point;
@@ -131,6 +134,7 @@ void BM_TetheredEfwFlexible10CyclesHistories(benchmark::State& state) {
   opts.cycles = 10;
   opts.record_history = true;
   opts.samples_per_cycle = 100;
+  opts.interpolate_sampled_loads = state.range(0) != 0;
   std::size_t samples = 0;
   for (auto _ : state) {
     TimeHistory history;
@@ -140,7 +144,11 @@ void BM_TetheredEfwFlexible10CyclesHistories(benchmark::State& state) {
   }
   state.counters["samples"] = static_cast<double>(samples);
 }
-BENCHMARK(BM_TetheredEfwFlexible10CyclesHistories)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TetheredEfwFlexible10CyclesHistories)
+    ->ArgName("interpolated")
+    ->Arg(1)
+    ->Arg(0)
+    ->Unit(benchmark::kMillisecond);
 
 // The flexible tethered wing at the vehicle's operating point (nonlinear: the membrane wing) on a
 // state of the orbit: what the right-hand side and sample benchmarks evaluate.
@@ -191,5 +199,27 @@ void BM_FlexibleTetheredSample(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_FlexibleTetheredSample)->ArgName("nonlinear")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+
+// The same sample from the dense output's derivative (FlexibleTetheredSystem::
+// sampleFromDerivative, what the histories use since 2026-12-06): the inertial loads, the hinge
+// power's rates and the separated area, no strip evaluation. ydot is the right-hand side at the
+// state, as the interpolant gives it at a step's end.
+void BM_FlexibleTetheredSampleFromDerivative(benchmark::State& state) {
+  TetheredWingAtState w(state.range(0) != 0);
+  std::vector<double> ydot(w.y.size());
+  w.sys.rhs(0.0, w.y.data(), ydot.data());
+  double t = 0.0;
+  LoadSample s;
+  for (auto _ : state) {
+    w.sys.sampleFromDerivative(t, w.y.data(), ydot.data(), &s);
+    benchmark::DoNotOptimize(s.FV_N);
+    t += 1e-5;
+  }
+}
+BENCHMARK(BM_FlexibleTetheredSampleFromDerivative)
+    ->ArgName("nonlinear")
+    ->Arg(0)
+    ->Arg(1)
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

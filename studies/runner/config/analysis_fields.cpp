@@ -59,6 +59,12 @@ const std::vector<AnalysisField> kSimulateFields = {
        return static_cast<long long>(s.simulate().options.samples_per_cycle);
      },
      always},
+    {"simulate.sampled_loads",
+     [](const Study& s) -> AnalysisValue {
+       return std::string(s.simulate().options.interpolate_sampled_loads ? "interpolated"
+                                                                         : "evaluated");
+     },
+     tethered},
     {"simulate.history_every",
      [](const Study& s) -> AnalysisValue {
        return static_cast<long long>(s.simulate().history_every);

@@ -18,6 +18,8 @@ using orni::field;
 
 const std::vector<std::pair<std::string, FlightMode>> kModes = {{"tethered", FlightMode::kTethered},
                                                                 {"free", FlightMode::kFree}};
+const std::vector<std::pair<std::string, bool>> kSampledLoads = {{"evaluated", false},
+                                                                 {"interpolated", true}};
 
 const std::vector<std::string> kFreeKeys = {
     "bound_speed_mps", "bound_W_mps",        "bound_theta_deg",  "bound_Q_degps",
@@ -93,7 +95,7 @@ void readSimulateSection(StudyDocument doc, Study& study) {
   std::optional<TableReader> sim = doc.top.optionalTable(
       "simulate", {"mode", "speed_mps", "freq_hz", "theta_deg", "tail_angle_deg", "cycles",
                    "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol", "samples_per_cycle",
-                   "history_every", "wing_only", "at_trim", "free"});
+                   "sampled_loads", "history_every", "wing_only", "at_trim", "free"});
   SimulateSettings& settings = study.settings.emplace<SimulateSettings>();
   if (!sim) return;
   SimulationOptions& o = settings.options;
@@ -118,6 +120,8 @@ void readSimulateSection(StudyDocument doc, Study& study) {
   o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
   readTolerances(*sim, o, "simulate");
   o.samples_per_cycle = sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);
+  o.interpolate_sampled_loads =
+      sim->optionalEnum("sampled_loads", o.interpolate_sampled_loads, kSampledLoads);
   settings.history_every =
       sim->optionalInt(field("simulate.history_every"), settings.history_every);
   settings.wing_only = sim->optionalBool("wing_only", settings.wing_only);
@@ -150,6 +154,8 @@ void writeSimulateSection(const SimulateSettings& settings, const OperatingPoint
   out.integer("cycles", o.cycles);
   writeTolerances(o, out);
   out.integer("samples_per_cycle", o.samples_per_cycle);
+  if (o.mode == FlightMode::kTethered)
+    out.string("sampled_loads", o.interpolate_sampled_loads ? "interpolated" : "evaluated");
   out.integer("history_every", settings.history_every);
   if (o.mode == FlightMode::kTethered)
     out.boolean("wing_only", settings.wing_only,

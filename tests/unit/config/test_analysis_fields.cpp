@@ -73,6 +73,11 @@ const std::map<std::string, Change>& changes() {
        [](Study& s) { s.simulate().options.steady_tol = moved(s.simulate().options.steady_tol); }},
       {"simulate.samples_per_cycle", [](Study& s) { s.simulate().options.samples_per_cycle += 1; }},
       {"simulate.history_every", [](Study& s) { s.simulate().history_every += 1; }},
+      {"simulate.sampled_loads",
+       [](Study& s) {
+         s.simulate().options.interpolate_sampled_loads =
+             !s.simulate().options.interpolate_sampled_loads;
+       }},
       {"simulate.wing_only", [](Study& s) { s.simulate().wing_only = !s.simulate().wing_only; }},
       {"simulate.at_trim", [](Study& s) { s.simulate().at_trim = !s.simulate().at_trim; }},
       {"simulate.free.bound_speed_mps",

@@ -220,6 +220,20 @@ TEST_F(ConfigStudyFile, SimulateSectionRules) {
                 ":4: key 'simulate.samples_per_cycle': expected an integer in [8, 100000], "
                 "got 4");
 
+  // sampled_loads: one of its two words, and read into the options.
+  const fs::path s1 = writeStudy("s1.toml", "kind = \"simulate\"\nvehicle = \"" + efw() +
+                                                "\"\n[simulate]\nsampled_loads = \"fast\"\n");
+  const InputError es = errorOfStudy(s1);
+  EXPECT_EQ(es.key(), "simulate.sampled_loads");
+  EXPECT_EQ(es.line(), 4);
+  EXPECT_NE(std::string(es.what()).find("interpolated"), std::string::npos) << es.what();
+  const fs::path s2 =
+      writeStudy("s2.toml", "kind = \"simulate\"\nvehicle = \"" + efw() +
+                                "\"\n[simulate]\nsampled_loads = \"interpolated\"\n");
+  EXPECT_TRUE(loadStudyFile(s2).simulate().options.interpolate_sampled_loads);
+  const fs::path s3 = writeStudy("s3.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n");
+  EXPECT_FALSE(loadStudyFile(s3).simulate().options.interpolate_sampled_loads);  // "evaluated"
+
   const fs::path c = writeStudy(
       "c.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n[simulate]\nrel_tol = 0.5\n");
   EXPECT_EQ(errorOfStudy(c).key(), "simulate.rel_tol");
