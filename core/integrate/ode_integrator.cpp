@@ -183,8 +183,9 @@ OdeIntegrator::OdeIntegrator(int state_size, RhsFunction rhs, void* user_data,
   if (!y_ || !atol_ || !dky_) throw std::runtime_error("N_VNew_Serial failed");
   // Single-pass linear combinations (set before the stepper clones the vector, so every work
   // vector inherits them): the integrator's own vector work is comparable to the RHS for ~60
-  // states.
+  // states. dky_ too: the interpolant's derivative is a linear combination written into it.
   detail::installSinglePassOps(asVector(y_));
+  detail::installSinglePassOps(asVector(dky_));
   double* a = N_VGetArrayPointer(asVector(atol_));
   for (int i = 0; i < n_; ++i) a[i] = opts.abs_tol[static_cast<std::size_t>(i)];
   N_VConst(0.0, asVector(y_));
