@@ -364,7 +364,7 @@ SettledFlight settledFreeFlight(const FlightCoreModel& model, const OperatingPoi
 
 double settledFlightRelTol(const FlightCoreModel& model) {
   const bool nonlinear = model.flexible != nullptr && model.flexible->nonlinear();
-  return nonlinear ? 1e-5 : SimulationOptions{}.rel_tol;
+  return nonlinear ? kNonlinearWingFreeFlightRelTol : SimulationOptions{}.rel_tol;
 }
 
 FreeFlightTrim solveFreeFlightTrim(const FlightCoreModel& model, const OperatingPoint& start,

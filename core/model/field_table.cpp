@@ -284,7 +284,9 @@ std::vector<FieldSpec> makeTable() {
       number("simulate.tail_angle_deg", "deg", kDeg, kHalfTurnDeg, kFromPoint, "tail angle",
              "simulate --tail"),
       integer("simulate.cycles", kCycles, "10", "flapping cycles to simulate", "simulate --cycles"),
-      number("simulate.rel_tol", "-", 1.0, kRelTol, "1e-4", "integrator relative tolerance"),
+      number("simulate.rel_tol", "-", 1.0, kRelTol, "1e-4",
+             "integrator relative tolerance (free flight of a nonlinear wing: 1e-5 unless given; "
+             "its verdicts are not converged at 1e-4)"),
       number("simulate.abs_tol", "rad", 1.0, kAbsTol, "1e-5",
              "absolute tolerance of the circulation-lag states"),
       number("simulate.separation_abs_tol", "-", 1.0, kAbsTol, "1e-5",

@@ -7,6 +7,7 @@
 #include "studies/runner/cli/cli_options.hpp"
 #include "studies/runner/cli/subcommands.hpp"
 #include "studies/runner/commands/run_study.hpp"
+#include "studies/runner/config/study_sections.hpp"
 
 namespace orni::studies::cli {
 
@@ -23,6 +24,7 @@ int runSimulate(const SimulateArgs& a) {
   Study study = studyFromVehicle(a.vehicle);
   if (!a.mode.empty())
     study.simulate().options.mode = a.mode == "free" ? FlightMode::kFree : FlightMode::kTethered;
+  applyWingTolerance(study);  // a nonlinear wing's free flight: 1e-5 (no rel_tol on the CLI)
   if (a.speed) study.point.speed_mps = optionValue("--speed", "simulate.speed_mps", *a.speed);
   if (a.freq) study.point.freq_hz = optionValue("--freq", "simulate.freq_hz", *a.freq);
   if (a.theta)

@@ -97,7 +97,10 @@ void readSimulateSection(StudyDocument doc, Study& study) {
                    "rel_tol", "abs_tol", "separation_abs_tol", "steady_tol", "samples_per_cycle",
                    "sampled_loads", "history_every", "wing_only", "at_trim", "free"});
   SimulateSettings& settings = study.settings.emplace<SimulateSettings>();
-  if (!sim) return;
+  if (!sim) {
+    applyWingTolerance(study);
+    return;
+  }
   SimulationOptions& o = settings.options;
   OperatingPoint& p = study.point;
   o.mode = sim->optionalEnum("mode", o.mode, kModes);
@@ -119,6 +122,7 @@ void readSimulateSection(StudyDocument doc, Study& study) {
                           describeNode(*sim->table().get("tail_angle_deg")));
   o.cycles = sim->optionalInt(field("simulate.cycles"), o.cycles);
   readTolerances(*sim, o, "simulate");
+  settings.rel_tol_given = sim->has("rel_tol");
   o.samples_per_cycle = sim->optionalInt(field("simulate.samples_per_cycle"), o.samples_per_cycle);
   o.interpolate_sampled_loads =
       sim->optionalEnum("sampled_loads", o.interpolate_sampled_loads, kSampledLoads);
@@ -140,6 +144,15 @@ void readSimulateSection(StudyDocument doc, Study& study) {
                           "needs the vehicle's mass and pitch inertia)",
                           "\"free\"");
   sim->finish();
+  applyWingTolerance(study);
+}
+
+void applyWingTolerance(Study& study) {
+  SimulateSettings& settings = study.simulate();
+  const WingModel& wing = study.vehicle.wing;
+  const bool nonlinear = wing.structure == StructureLevel::kFlexible && wing.fe.nonlinear;
+  if (settings.options.mode == FlightMode::kFree && nonlinear && !settings.rel_tol_given)
+    settings.options.rel_tol = kNonlinearWingFreeFlightRelTol;
 }
 
 void writeSimulateSection(const SimulateSettings& settings, const OperatingPoint& p,

@@ -152,6 +152,8 @@ struct SimulateSettings {
   bool at_trim = false;
   int history_every = 1;  ///< histories.csv keeps every n-th sample (output only; the analysis
                           ///< uses all)
+  bool rel_tol_given = false;  ///< the study set rel_tol (else a nonlinear wing's free flight
+                               ///< takes kNonlinearWingFreeFlightRelTol: applyWingTolerance)
 };
 
 /// One axis of a sweep: a key and its values in the key's file units.

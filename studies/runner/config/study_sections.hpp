@@ -42,6 +42,11 @@ void readKindSections(StudyDocument doc, Study& study);
 /// [simulate] (optional; kind simulate): the operating point, the options and [simulate.free];
 /// sets study.settings to SimulateSettings (the defaults without a [simulate]).
 void readSimulateSection(StudyDocument doc, Study& study);
+/// A free flight of the geometrically nonlinear wing whose study gave no rel_tol flies at
+/// kNonlinearWingFreeFlightRelTol (1e-5) instead of the default 1e-4, where its verdicts are not
+/// converged (simulation_options.hpp). Called by readSimulateSection and wherever the mode is set
+/// after reading (`simulate --mode free`).
+void applyWingTolerance(Study& study);
 /// Writes [simulate] with every option ([simulate.free] in free flight) at `point`.
 void writeSimulateSection(const SimulateSettings& simulate, const orni::OperatingPoint& point,
                           TomlWriter& out);

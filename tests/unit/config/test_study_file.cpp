@@ -12,6 +12,7 @@
 #include "core/model/frames.hpp"
 #include "studies/runner/config/input_error.hpp"
 #include "studies/runner/config/study_file.hpp"
+#include "studies/runner/config/study_sections.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
 namespace orni::studies {
@@ -202,6 +203,31 @@ TEST_F(ConfigStudyFile, ErrorsInTheVehicleNameTheVehicle) {
   const InputError e = errorOfStudy(f);
   EXPECT_EQ(fs::path(e.file()).filename(), "v.toml");
   EXPECT_EQ(e.key(), "fuselage");
+}
+
+// A free flight of the nonlinear wing without a rel_tol flies at 1e-5 (its verdicts are not
+// converged at the default 1e-4: kNonlinearWingFreeFlightRelTol); a given rel_tol, the tethered
+// mode and the linear wing keep theirs.
+TEST_F(ConfigStudyFile, NonlinearWingFreeFlightDefaultsToATighterTolerance) {
+  const std::string table3 = vehiclePath("efw_magpie_table3.toml").generic_string();
+  auto relTol = [&](const std::string& name, const std::string& vehicle, const std::string& sim) {
+    return loadStudyFile(writeStudy(name, "kind = \"simulate\"\nvehicle = \"" + vehicle +
+                                              "\"\n[simulate]\n" + sim))
+        .simulate()
+        .options.rel_tol;
+  };
+  EXPECT_EQ(relTol("n1.toml", table3, "mode = \"free\"\n"), kNonlinearWingFreeFlightRelTol);
+  EXPECT_EQ(kNonlinearWingFreeFlightRelTol, 1e-5);
+  EXPECT_EQ(relTol("n2.toml", table3, "mode = \"free\"\nrel_tol = 1e-4\n"), 1e-4);
+  EXPECT_EQ(relTol("n3.toml", table3, "mode = \"tethered\"\n"), 1e-4);
+  EXPECT_EQ(relTol("n4.toml", efw(), "mode = \"free\"\n"), 1e-4);
+  // The mode set after reading (`simulate --mode free`): applyWingTolerance.
+  Study s =
+      loadStudyFile(writeStudy("n5.toml", "kind = \"simulate\"\nvehicle = \"" + table3 + "\"\n"));
+  EXPECT_EQ(s.simulate().options.rel_tol, 1e-4);
+  s.simulate().options.mode = FlightMode::kFree;
+  applyWingTolerance(s);
+  EXPECT_EQ(s.simulate().options.rel_tol, 1e-5);
 }
 
 TEST_F(ConfigStudyFile, SimulateSectionRules) {
