@@ -166,6 +166,7 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   o1.method = TrimMethod::kTwoStage;
   o1.refine_in_free_flight = false;
   o1.verify_free_flight = false;
+  o1.start_only = true;  // forward differences, no Jacobian at the converged point
   s.stage1 = solveTrim(model, o1);
   s.stage1_time_s = seconds(t0);
   s.solution = s.stage1.solution;

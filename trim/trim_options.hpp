@@ -74,6 +74,13 @@ struct TrimOptions {
                                    ///< many), [6, 10000]
   bool verify_free_flight = true;  ///< run verifyFreeFlight() on a converged trim
   FreeFlightCheckOptions free_flight;
+  /// Eq. (4) solved only as the start of another solve (the periodic orbit's, whose Newton
+  /// iteration solves the trim anew, so the start's accuracy does not reach its result): the
+  /// Jacobian by forward differences (one run per unknown instead of two) and none at a point that
+  /// already meets residual_tol (Ceres asks for the Jacobian at an accepted point before the
+  /// callback that ends the solve sees it). Set by solvePeriodicTrim for its stage 1; not a study
+  /// key.
+  bool start_only = false;
 
   /// True when every field is inside its range; otherwise false with the reason in *why.
   bool IsValid(std::string* why) const;

@@ -78,13 +78,15 @@ MeanLoadsFunction tetheredMeanLoads(const FlightCoreModel& model,
 TrimProblem::TrimProblem(const TrimReference& reference, MeanLoadsFunction loads,
                          const OperatingPoint& base, std::vector<TrimUnknown> unknowns,
                          const std::array<double, kTrimUnknownCount>& steps,
-                         const std::array<TrimBounds, kTrimUnknownCount>& bounds)
+                         const std::array<TrimBounds, kTrimUnknownCount>& bounds,
+                         bool forward_differences)
     : reference_(reference),
       loads_(std::move(loads)),
       base_(base),
       unknowns_(std::move(unknowns)),
       steps_(steps),
-      bounds_(bounds) {}
+      bounds_(bounds),
+      forward_differences_(forward_differences) {}
 
 OperatingPoint TrimProblem::pointAt(const double* x) const {
   OperatingPoint p = base_;
@@ -144,6 +146,7 @@ bool TrimProblem::residual(const double* x, double* r) {
 
 bool TrimProblem::jacobian(const double* x, double* jacobian_row_major) {
   const int n = unknownCount();
+  if (forward_differences_) return forwardJacobian(x, jacobian_row_major);
   std::vector<double> xp(x, x + n), xm(x, x + n);
   for (int j = 0; j < n; ++j) {
     const TrimUnknown u = unknowns_[static_cast<std::size_t>(j)];
@@ -167,6 +170,31 @@ bool TrimProblem::jacobian(const double* x, double* jacobian_row_major) {
           (rp[static_cast<std::size_t>(i)] - rm[static_cast<std::size_t>(i)]) / (hi - lo);
     xp[static_cast<std::size_t>(j)] = x[j];
     xm[static_cast<std::size_t>(j)] = x[j];
+  }
+  return true;
+}
+
+bool TrimProblem::forwardJacobian(const double* x, double* jacobian_row_major) {
+  const int n = unknownCount();
+  std::array<double, kTrimResidualCount> r0{};
+  if (!residual(x, r0.data())) return false;
+  std::vector<double> xs(x, x + n);
+  for (int j = 0; j < n; ++j) {
+    const TrimUnknown u = unknowns_[static_cast<std::size_t>(j)];
+    const double scale = trimUnknownScale(u);
+    const double h = steps_[static_cast<std::size_t>(trimIndex(u))] / scale;
+    const TrimBounds& b = bounds_[static_cast<std::size_t>(trimIndex(u))];
+    double to = x[j] + h;
+    if (to > b.upper / scale) to = x[j] - h;  // backward at the upper bound
+    if (to < b.lower / scale || to == x[j]) return false;  // narrower than a step (IsValid)
+    xs[static_cast<std::size_t>(j)] = to;
+    const TrimEvaluationRecord e = run(pointAt(xs.data()), TrimEvaluationPurpose::kDerivative);
+    if (!e.result.ok) return false;
+    const auto r = scaledResidual(reference_, e.residual);
+    for (int i = 0; i < kTrimResidualCount; ++i)
+      jacobian_row_major[i * n + j] =
+          (r[static_cast<std::size_t>(i)] - r0[static_cast<std::size_t>(i)]) / (to - x[j]);
+    xs[static_cast<std::size_t>(j)] = x[j];
   }
   return true;
 }

@@ -100,10 +100,13 @@ class TrimProblem {
  public:
   /// `base` holds the fixed values of the quantities that are not unknowns. `steps` and `bounds`
   /// are per unknown (indexed by TrimUnknown), SI.
+  /// `forward_differences`: the Jacobian from the residual at x and one run per unknown (see
+  /// jacobian()).
   TrimProblem(const TrimReference& reference, MeanLoadsFunction loads, const OperatingPoint& base,
               std::vector<TrimUnknown> unknowns,
               const std::array<double, kTrimUnknownCount>& steps,
-              const std::array<TrimBounds, kTrimUnknownCount>& bounds);
+              const std::array<TrimBounds, kTrimUnknownCount>& bounds,
+              bool forward_differences = false);
 
   int unknownCount() const { return static_cast<int>(unknowns_.size()); }
   const std::vector<TrimUnknown>& unknowns() const { return unknowns_; }
@@ -118,8 +121,9 @@ class TrimProblem {
   /// False when the periodic evaluation failed.
   bool residual(const double* x, double* r);
   /// Jacobian dr/dx at x, row-major 3 x unknownCount(): central differences with the fixed steps,
-  /// one-sided (both ends at derivative accuracy) where x -/+ step would leave the bounds.
-  /// False when a periodic evaluation failed.
+  /// one-sided (both ends at derivative accuracy) where x -/+ step would leave the bounds; with
+  /// forward_differences, r(x + step) - r(x) (x - step at the upper bound) over the step, r(x)
+  /// being the residual run at x (made when missing). False when a periodic evaluation failed.
   bool jacobian(const double* x, double* jacobian_row_major);
 
   /// The residual record of exactly this point, or nullptr.
@@ -134,6 +138,7 @@ class TrimProblem {
 
  private:
   const TrimEvaluationRecord& run(const OperatingPoint& point, TrimEvaluationPurpose purpose);
+  bool forwardJacobian(const double* x, double* jacobian_row_major);
 
   TrimReference reference_;
   MeanLoadsFunction loads_;
@@ -141,6 +146,7 @@ class TrimProblem {
   std::vector<TrimUnknown> unknowns_;
   std::array<double, kTrimUnknownCount> steps_;
   std::array<TrimBounds, kTrimUnknownCount> bounds_;
+  bool forward_differences_ = false;
   std::vector<TrimEvaluationRecord> log_;
   int iteration_ = 0;
   int failed_ = 0;

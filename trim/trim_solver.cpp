@@ -61,11 +61,14 @@ std::string TrimSummary::BriefReport() const {
 
 namespace {
 
-// Eq. (4) residuals and their central-difference Jacobian (trim_problem.hpp) as a Ceres cost.
+// Eq. (4) residuals and their finite-difference Jacobian (trim_problem.hpp) as a Ceres cost.
+// `skip_tol` > 0 (TrimOptions::start_only): no Jacobian at a point whose max scaled residual is
+// within it. Ceres asks for the Jacobian at every accepted point before its callbacks run, and
+// TrimCallback then ends the solve at such a point, so that Jacobian (zeros here) is never used.
 class TrimCostFunction final : public ceres::CostFunction {
  public:
-  TrimCostFunction(TrimProblem* problem, std::exception_ptr* fatal)
-      : problem_(problem), fatal_(fatal) {
+  TrimCostFunction(TrimProblem* problem, std::exception_ptr* fatal, double skip_tol)
+      : problem_(problem), fatal_(fatal), skip_tol_(skip_tol) {
     set_num_residuals(kTrimResidualCount);
     mutable_parameter_block_sizes()->push_back(problem->unknownCount());
   }
@@ -76,7 +79,15 @@ class TrimCostFunction final : public ceres::CostFunction {
     if (*fatal_) return false;  // an earlier evaluation hit a programming error
     try {
       if (!problem_->residual(parameters[0], residuals)) return false;
-      if (jacobians && jacobians[0]) return problem_->jacobian(parameters[0], jacobians[0]);
+      if (!jacobians || !jacobians[0]) return true;
+      if (skip_tol_ > 0.0) {
+        const TrimEvaluationRecord* e = problem_->findResidual(problem_->pointAt(parameters[0]));
+        if (e && e->result.ok && e->scaled_max <= skip_tol_) {
+          std::fill_n(jacobians[0], kTrimResidualCount * problem_->unknownCount(), 0.0);
+          return true;
+        }
+      }
+      return problem_->jacobian(parameters[0], jacobians[0]);
     } catch (const Cancelled&) {
       return false;
     } catch (...) {  // a programming error (core/model/invariant.hpp): solveTrim rethrows it
@@ -89,6 +100,7 @@ class TrimCostFunction final : public ceres::CostFunction {
  private:
   TrimProblem* problem_;
   std::exception_ptr* fatal_;
+  double skip_tol_;
 };
 
 // Records every iteration, stops at the equilibrium tolerance (Ceres has no absolute residual
@@ -162,7 +174,7 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
   summary.least_squares = options.unknowns.size() < static_cast<std::size_t>(kTrimResidualCount);
 
   TrimProblem problem(reference, loads, options.initial, options.unknowns, options.fd_steps,
-                      options.bounds);
+                      options.bounds, options.start_only);
   std::vector<double> x = problem.solverValues(options.initial);
   const int n = problem.unknownCount();
 
@@ -170,7 +182,9 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
   problem_options.cost_function_ownership = ceres::TAKE_OWNERSHIP;
   ceres::Problem ceres_problem(problem_options);
   std::exception_ptr fatal;  // a programming error inside an evaluation, rethrown after Solve
-  ceres_problem.AddResidualBlock(new TrimCostFunction(&problem, &fatal), nullptr, x.data());
+  const double skip_tol = options.start_only ? options.residual_tol : 0.0;
+  ceres_problem.AddResidualBlock(new TrimCostFunction(&problem, &fatal, skip_tol), nullptr,
+                                 x.data());
   for (int j = 0; j < n; ++j) {
     const TrimUnknown u = options.unknowns[static_cast<std::size_t>(j)];
     const TrimBounds& b = options.bounds[static_cast<std::size_t>(trimIndex(u))];

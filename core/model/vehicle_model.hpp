@@ -86,9 +86,11 @@ struct WingFeSettings {
   InertialStiffness inertial_stiffness = InertialStiffness::kBoth;  ///< docs/theory.md 4.6
   /// Geometric nonlinearity of the skin and members (von Karman strains, the membrane condensed
   /// into the modal coordinates: core/structure/membrane_rom.hpp, docs/theory.md 4.7); false = the
-  /// linear wing. Off by default until its dynamics are validated: statically it matches the full
-  /// nonlinear FE solution at mid-span, but flapping, the magpie's wing takes 25 times the steps
-  /// of the linear one and shows high-frequency content not yet explained (results/README.md).
+  /// linear wing. Off by default: its reduced model is validated (within 5 % of the full
+  /// nonlinear FE solution) only where the slack skin's static answer is unique and with 48
+  /// modes (docs/theory.md 4.7), and flapping it costs about 35 times the linear wing
+  /// (docs/speed.md: the condensed membrane's P x P products). Its free flights need rel_tol 1e-5
+  /// (kNonlinearWingFreeFlightRelTol).
   bool nonlinear = false;
 };
 

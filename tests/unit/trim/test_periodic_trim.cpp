@@ -106,6 +106,14 @@ TEST_F(PeriodicTrimEfw, ConvergesToALevelPeriodicOrbitThatIsStable) {
   ASSERT_EQ(s.status, TrimStatus::kOk) << s.message;
   EXPECT_TRUE(s.converged);
   EXPECT_LE(s.shooting.residual_max, kPeriodicResidualTol);
+  // The Eq. (4) start is solved as a start only (TrimOptions::start_only): forward differences
+  // (3 runs a Jacobian) and no Jacobian at the point that met its tolerance (15 runs here, 36 with
+  // central differences and that last Jacobian; the orbit moved by < 1e-6 deg and m/s).
+  ASSERT_TRUE(s.stage1.converged) << s.stage1.message;
+  ASSERT_FALSE(s.stage1.evaluation_log.empty());
+  EXPECT_EQ(s.stage1.evaluation_log.back().purpose, TrimEvaluationPurpose::kResidual);
+  EXPECT_EQ(s.stage1.derivative_evaluations % 3, 0);
+  EXPECT_LE(s.stage1.evaluations, 24);
   ASSERT_EQ(s.shooting.g.size(), 1u);
   EXPECT_LE(std::abs(s.shooting.g[0]), 0.1 * kPeriodicResidualTol);  // altitude gain, m
   EXPECT_DOUBLE_EQ(s.solution.freq_hz, kFreqHz);

@@ -145,6 +145,59 @@ TEST(TrimAnalytic, OneSidedDifferenceAtABound) {
     EXPECT_NEAR(Jfd[i * 3 + 1], J[i][1], kOneSidedJacobianRel * (std::abs(J[i][1]) + 1e-3));
 }
 
+// The start-only solve's Jacobian (TrimOptions::start_only): forward differences, first order in
+// the step (h = 0.05 deg / 0.02 m/s on curvatures of order 1: the relative error is O(h), as at a
+// bound), one run per unknown and the residual run at x, backward on the upper bound.
+TEST(TrimAnalytic, ForwardDifferenceJacobianUsesOneRunPerUnknown) {
+  const TrimOptions o = analyticOptions();
+  for (const bool on_upper_bound : {false, true}) {
+    OperatingPoint at = o.initial;
+    if (on_upper_bound) at.speed_mps = o.bounds[trimIndex(TrimUnknown::kSpeed)].upper;
+    TrimProblem problem(kRef, analyticLoads(), at, o.unknowns, o.fd_steps, o.bounds,
+                        /*forward_differences=*/true);
+    const std::vector<double> x = problem.solverValues(at);
+    double Jfd[9];
+    ASSERT_TRUE(problem.jacobian(x.data(), Jfd));
+    double J[3][3];
+    analyticJacobian(at, J);
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        EXPECT_NEAR(Jfd[i * 3 + j], J[i][j], kOneSidedJacobianRel * (std::abs(J[i][j]) + 1e-3))
+            << "row " << i << " column " << j << (on_upper_bound ? " (on the bound)" : "");
+    int derivative_runs = 0, residual_runs = 0;
+    for (const TrimEvaluationRecord& r : problem.log()) {
+      derivative_runs += r.purpose == TrimEvaluationPurpose::kDerivative;
+      residual_runs += r.purpose == TrimEvaluationPurpose::kResidual;
+      EXPECT_LE(r.point.speed_mps, o.bounds[trimIndex(TrimUnknown::kSpeed)].upper);
+    }
+    EXPECT_EQ(derivative_runs, 3);
+    EXPECT_EQ(residual_runs, 1);  // r(x), reused by a residual call at x
+    double r[3];
+    ASSERT_TRUE(problem.residual(x.data(), r));
+    EXPECT_EQ(problem.log().size(), 4u);
+  }
+}
+
+// A start-only solve reaches the tolerance with fewer runs, and ends on the residual run that met
+// it: no Jacobian is made at the converged point (the central solve makes one there, 6 runs).
+TEST(TrimAnalytic, StartOnlySolveMakesNoJacobianAtTheConvergedPoint) {
+  TrimOptions o = analyticOptions();
+  o.residual_tol = 1e-3;  // the periodic method's start
+  const TrimSummary central = solveTrim(kRef, analyticLoads(), o);
+  o.start_only = true;
+  const TrimSummary start = solveTrim(kRef, analyticLoads(), o);
+  ASSERT_TRUE(central.converged) << central.message;
+  ASSERT_TRUE(start.converged) << start.message;
+  EXPECT_LE(start.scaled_residual_max, 1e-3);
+  ASSERT_FALSE(start.evaluation_log.empty());
+  const TrimEvaluationRecord& last = start.evaluation_log.back();
+  EXPECT_EQ(last.purpose, TrimEvaluationPurpose::kResidual);
+  EXPECT_LE(last.scaled_max, 1e-3);
+  EXPECT_EQ(central.evaluation_log.back().purpose, TrimEvaluationPurpose::kDerivative);
+  EXPECT_LT(start.evaluations, central.evaluations);
+  EXPECT_EQ(start.evaluations, start.residual_evaluations + start.derivative_evaluations);
+}
+
 TEST(TrimAnalytic, SolvesToTheKnownEquilibrium) {
   int calls = 0;
   const TrimSummary s = solveTrim(kRef, analyticLoads(&calls), analyticOptions());
