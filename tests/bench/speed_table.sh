@@ -4,8 +4,9 @@
 # aero map on 2 threads, with the machine they ran on. Prints the table; with --write also puts it
 # into README.md. Takes 2-4 minutes; run it on an idle machine (the figures move by 10 % or more
 # when another process shares the cores). With --instructions it also counts the instructions of
-# one run of each 10-cycle kernel under valgrind's callgrind (about 4 more minutes; stable where
-# the times are not, and available where the machine exposes no hardware counters).
+# one run of each 10-cycle kernel, the periodic trim and the periodic design evaluation under
+# valgrind's callgrind (about 10 more minutes; stable where the times are not, and available where
+# the machine exposes no hardware counters).
 # --check only verifies that every benchmark the table names exists (tests/regression/
 # speed_table_names.sh runs it), so that a renamed benchmark cannot leave a row "not run".
 #   usage: bash tests/bench/speed_table.sh <build-dir> <repo-root> [--write] [--instructions]
@@ -164,6 +165,10 @@ if [[ -n $instructions ]]; then
     'orni::simulateTethered*' &
   count_instructions BM_TetheredEfwFlexible10CyclesHistories/interpolated:1 \
     'orni::simulateTethered*' &
+  wait
+  # The two trims whose times this VM moves most (about 4 minutes each under callgrind).
+  count_instructions BM_PeriodicTrimEfw12Hz 'orni::solvePeriodicTrim*' &
+  count_instructions BM_DesignEvaluationPeriodicFloquet 'orni::opt::evaluateDesign*' &
   wait
 fi
 
