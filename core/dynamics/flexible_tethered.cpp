@@ -193,13 +193,21 @@ void FlexibleTetheredSystem::sample(double t_s, const double* y, LoadSample* out
   // hold the spin softening but not the stiffening, docs/theory.md 4.6) + damping dissipation.
   // The membrane's share, dV_NL/dt plus its strain-rate dissipation, is the power evaluate()
   // already found (ModalMembraneStiffness::addForce; 0 for the linear wing).
-  rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
-  const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
-                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
+  const double strain_rate = strainEnergyRate();
   const double damping_power = qd_.dot(flex_.damping.cwiseProduct(qd_));
   const double hinge = aero.power_aero_W + kinetic_rate + omega_W_.dot(J_alpha) + strain_rate +
                        damping_power + membrane_power_W_;
   fuselageLoads(aero, F, M, hinge, out);
+  setTip(out);
+}
+
+double FlexibleTetheredSystem::strainEnergyRate() {
+  rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
+  return qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
+         omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
+}
+
+void FlexibleTetheredSystem::setTip(LoadSample* out) const {
   const FlexibleStrip& tip = flex_.strips[static_cast<std::size_t>(flex_.tip_strip)];
   out->tip_deflection_m = -(tip.phi_L * q_).z();  // z_W is down
   out->tip_twist_rad = tip.psi_twist.dot(q_);
@@ -218,9 +226,7 @@ bool FlexibleTetheredSystem::sampleFromDerivative(double t_s, const double* y, c
   // The inertial loads and the hinge power's kinetic and strain terms as in sample().
   const structure::WingInertialLoads inertial = structure::wingInertialLoads(
       flex_.modal->lumped_sums, q_, qd_, qdd_, omega_W_, alpha_W_, &inertia_ws_);
-  rhs_vec_.noalias() = flex_.geometric_stiffness_x * q_;
-  const double strain_rate = qd_.dot(flex_.stiffness.cwiseProduct(q_)) +
-                             omega_W_.x() * omega_W_.x() * qd_.dot(rhs_vec_);
+  const double strain_rate = strainEnergyRate();
   const double* quad = ydot + quadratureOffset();  // rhs(): FV, FH, M (aero + tail), powers
   LoadSample& o = *out;
   o = LoadSample{};
@@ -251,9 +257,7 @@ bool FlexibleTetheredSystem::sampleFromDerivative(double t_s, const double* y, c
     area += a;
   }
   o.separated_fraction = separated / area;
-  const FlexibleStrip& tip = flex_.strips[static_cast<std::size_t>(flex_.tip_strip)];
-  o.tip_deflection_m = -(tip.phi_L * q_).z();
-  o.tip_twist_rad = tip.psi_twist.dot(q_);
+  setTip(&o);
   return true;
 }
 

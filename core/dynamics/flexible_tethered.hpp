@@ -66,6 +66,10 @@ class FlexibleTetheredSystem {
   void evaluate(double t_s, const double* y, double* aero_derivatives, AeroResult* aero);
   void fuselageLoads(const AeroResult& aero, const Vec3& F_inertial_W, const Vec3& M_inertial_P2_W,
                      double hinge_power_one_wing_W, LoadSample* out) const;
+  // The parts both kinds of sample share, at q_, qd_, omega_W_: the rate of the strain energy
+  // (elastic and, with w_x^2 K_G, geometric) of one wing, and the tip's deflection and twist.
+  double strainEnergyRate();
+  void setTip(LoadSample* out) const;
 
   const FlightCoreModel& model_;
   const FlexibleWingModel& flex_;
