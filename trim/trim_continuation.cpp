@@ -169,6 +169,12 @@ TrimContinuationSummary continueTrim(const FlightCoreModel& model, const TrimOpt
   co.residual_tol = o.periodic.residual_tol;
   co.locate_events = options.locate_events;
   co.locate_tol = options.locate_tol;
+  // trim.periodic.multipliers, as the periodic trim's Floquet analysis: the leading ones by
+  // Arnoldi with the body's columns differenced (the wing and the MST-TD states decay in a
+  // period, as in the periodic trim's first Jacobian), or all from the full Jacobian (0).
+  co.leading_multipliers = o.periodic.multipliers;
+  co.slow_states = {0, 1, 2, 3};
+  co.max_krylov = std::max(48, o.periodic.multipliers + 1);
 
   const std::vector<FloquetStateInfo>& info = map.stateInfo();
   std::string sample_why;

@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <memory>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
 #include "core/analysis/monodromy.hpp"
@@ -43,6 +46,12 @@ bool ContinuationOptions::IsValid(std::string* why) const {
   if (!(fd_step > 0.0 && fd_step <= 1e-2)) return fail("fd_step must be in (0, 1e-2]");
   if (!(locate_tol > 0.0)) return fail("locate_tol must be > 0");
   if (max_bisections < 1 || max_bisections > 200) return fail("max_bisections must be in [1, 200]");
+  if (leading_multipliers < 0 || leading_multipliers > 100)
+    return fail("leading_multipliers must be in [0, 100]");
+  if (!(tangent_tol > 0.0 && tangent_tol <= 1e-2)) return fail("tangent_tol must be in (0, 1e-2]");
+  if (max_krylov < 2 || max_krylov > 400) return fail("max_krylov must be in [2, 400]");
+  if (leading_multipliers > 0 && leading_multipliers + 1 > max_krylov)
+    return fail("max_krylov must exceed leading_multipliers");
   return true;
 }
 
@@ -88,7 +97,9 @@ class Curve {
         scale_(map.parameterScale(parameter)),
         N_(sys_.unknownCount()) {
     sys_.setJacobianThreads(so.jacobian_threads);
+    threads_ = so.jacobian_threads;
   }
+  int threads() const { return threads_; }
 
   int N() const { return N_; }
   int n() const { return sys_.stateCount(); }
@@ -127,6 +138,50 @@ class Curve {
     DH->col(N_) = Jl.col(0);
     return true;
   }
+  /// DH with only the columns of `states` (all when empty), the free parameters' and lambda's
+  /// differenced; every other state column is -e_j (dPhi/dx_j = 0: decayed over a period).
+  bool partialJacobian(const Eigen::VectorXd& y, const Eigen::VectorXd& H, double step,
+                       const std::vector<int>& states, Eigen::MatrixXd* DH, std::string* why) {
+    if (states.empty()) return jacobian(y, H, step, DH, why);
+    sys_.setParameter(parameter_, y[N_] * scale_);
+    Eigen::MatrixXd J;
+    if (!sys_.partialJacobian(y.head(N_), H, step, states, &J, why)) return false;
+    DH->resize(N_, N_ + 1);
+    DH->leftCols(N_) = J;
+    // lambda's column as ShootingSystem's parameter columns: a step of step * max(1, |y_N|).
+    const double h = step * std::max(1.0, std::abs(y[N_]));
+    Eigen::VectorXd yp = y, Hp;
+    yp[N_] += h;
+    const bool ok = residual(yp, &Hp, why);
+    restore(y);
+    if (!ok) return false;
+    DH->col(N_) = (Hp - H) / h;
+    return true;
+  }
+  /// DH v by a forward difference along v (H = H(y)): a step of step * max(1, |y|_inf) / |v|_2.
+  bool directional(const Eigen::VectorXd& y, const Eigen::VectorXd& H, const Eigen::VectorXd& v,
+                   double step, Eigen::VectorXd* out, std::string* why) {
+    const double norm = v.norm();
+    if (!(norm > 0.0)) {
+      out->setZero(N_);
+      return true;
+    }
+    const double h = step * std::max(1.0, y.cwiseAbs().maxCoeff()) / norm;
+    Eigen::VectorXd Hp;
+    const bool ok = residual(y + h * v, &Hp, why);
+    restore(y);
+    if (!ok) return false;
+    *out = (Hp - H) / h;
+    return true;
+  }
+  /// The parameters (free and lambda) of the system back at y after runs at other points.
+  void restore(const Eigen::VectorXd& y) {
+    std::vector<double> x;
+    std::vector<double> p;
+    unpack(y, &x, &p);
+  }
+  /// Maps run outside the shooting system (Arnoldi's) count in maps().
+  void addMaps(long maps) { extra_maps_ += maps; }
   bool refreshGrid(const Eigen::VectorXd& y, std::string* why) {
     std::vector<double> x, p;
     unpack(y, &x, &p);
@@ -141,6 +196,7 @@ class Curve {
   double scale_;
   int N_;
   long extra_maps_ = 0;
+  int threads_ = 1;
 };
 
 /// Unit null vector of DH (N x (N + 1)) oriented like `previous`: the last column of Q in
@@ -155,6 +211,55 @@ bool tangentOf(const Eigen::MatrixXd& DH, const Eigen::VectorXd& previous, Eigen
   if (!t->allFinite() || !(norm > 0.0)) return false;
   *t /= norm;
   if (t->dot(previous) < 0.0) *t = -*t;
+  return true;
+}
+
+/// Right-preconditioned GMRES (modified Gram-Schmidt, twice) for A d = b with the operator
+/// `apply` (v -> A v) and the preconditioner `precondition` (v -> P^-1 v), from d = 0; stops when
+/// |b - A d|_2 <= tol or after max_products operator products. False when a product fails; *done
+/// says whether the tolerance was met; *products counts the products.
+template <class Apply, class Precondition>
+bool gmres(const Apply& apply, const Precondition& precondition, const Eigen::VectorXd& b,
+           double tol, int max_products, Eigen::VectorXd* d, bool* done, int* products) {
+  const Eigen::Index n = b.size();
+  *done = false;
+  *products = 0;
+  d->setZero(n);
+  const double beta = b.norm();
+  if (beta <= tol) {
+    *done = true;
+    return true;
+  }
+  Eigen::MatrixXd V = Eigen::MatrixXd::Zero(n, max_products + 1);
+  Eigen::MatrixXd Hm = Eigen::MatrixXd::Zero(max_products + 1, max_products);
+  V.col(0) = b / beta;
+  Eigen::VectorXd w, c;
+  for (int j = 0; j < max_products; ++j) {
+    if (!apply(precondition(V.col(j)), &w)) return false;
+    ++*products;
+    for (int pass = 0; pass < 2; ++pass)
+      for (int i = 0; i <= j; ++i) {
+        const double h = V.col(i).dot(w);
+        Hm(i, j) += h;
+        w -= h * V.col(i);
+      }
+    const double h_next = w.norm();
+    Hm(j + 1, j) = h_next;
+    const int m = j + 1;
+    // The least-squares problem min |beta e_1 - H_m c| (small: a dense QR each time).
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(m + 1);
+    rhs[0] = beta;
+    const Eigen::MatrixXd Hj = Hm.topLeftCorner(m + 1, m);
+    c = Hj.colPivHouseholderQr().solve(rhs);
+    const double residual = (rhs - Hj * c).norm();
+    const bool breakdown = !(h_next > 1e-14 * std::max(1.0, Hm.col(j).norm()));
+    if (residual <= tol || breakdown || m == max_products) {
+      *d = precondition(V.leftCols(m) * c);
+      *done = residual <= tol || breakdown;
+      return d->allFinite();
+    }
+    V.col(j + 1) = w / h_next;
+  }
   return true;
 }
 
@@ -188,6 +293,16 @@ class Continuation {
   /// The point at the corrected y: DH, tangent (oriented like previous_tangent), multipliers.
   bool complete(const Corrected& c, const Eigen::VectorXd& previous_tangent,
                 ContinuationPoint* pt, Eigen::MatrixXd* DH, std::string* why);
+  /// complete()'s tangent and multipliers with the partial DH, GMRES and Arnoldi (the header's
+  /// "leading ones"). kFallback: Arnoldi or GMRES did not converge (the caller forms the full DH).
+  enum class Leading { kDone, kFallback, kFailed };
+  Leading completeLeading(const Eigen::VectorXd& y, const Eigen::VectorXd& H,
+                          const Eigen::VectorXd& previous_tangent, ContinuationPoint* pt,
+                          Eigen::MatrixXd* DH, std::string* why);
+  /// Its partial DH and GMRES tangent (pt->tangent, tangent_lambda).
+  Leading leadingTangent(const Eigen::VectorXd& y, const Eigen::VectorXd& H,
+                         const Eigen::VectorXd& previous_tangent, ContinuationPoint* pt,
+                         Eigen::MatrixXd* DH, std::string* why);
   /// The caller's prepare on the corrected point; when it changed the map, the point is corrected
   /// again at its parameter on the same grid (chord matrix DH_chord).
   bool refine(Corrected* c, const Eigen::MatrixXd& DH_chord, std::string* why) {
@@ -298,9 +413,16 @@ bool Continuation::complete(const Corrected& c, const Eigen::VectorXd& previous_
   pt->residual_max = maxAbs(c.H);
   pt->corrector_iterations = c.iterations;
   Eigen::VectorXd H;
-  if (!curve_.residual(c.y, &H, why) ||
-      !curve_.jacobian(c.y, H, o_.fd_step, DH, why))
-    return false;
+  if (!curve_.residual(c.y, &H, why)) return false;
+  if (o_.leading_multipliers > 0) {
+    const Leading l = completeLeading(c.y, H, previous_tangent, pt, DH, why);
+    if (l == Leading::kFailed) return false;
+    if (l == Leading::kDone) {
+      pt->period_maps = curve_.maps();
+      return true;
+    }
+  }
+  if (!curve_.jacobian(c.y, H, o_.fd_step, DH, why)) return false;
   if (!tangentOf(*DH, previous_tangent, &pt->tangent)) {
     *why = "no tangent (singular extended Jacobian)";
     return false;
@@ -313,11 +435,105 @@ bool Continuation::complete(const Corrected& c, const Eigen::VectorXd& previous_
     return false;
   }
   pt->multipliers = e.multipliers;
+  pt->multipliers_complete = true;
   pt->max_modulus = std::abs(e.multipliers[0]);
   pt->leading_vector = e.vectors.col(0);
   pt->stable = pt->max_modulus < 1.0;
   pt->period_maps = curve_.maps();
   return true;
+}
+
+Continuation::Leading Continuation::completeLeading(const Eigen::VectorXd& y,
+                                                   const Eigen::VectorXd& H,
+                                                   const Eigen::VectorXd& previous_tangent,
+                                                   ContinuationPoint* pt, Eigen::MatrixXd* DH,
+                                                   std::string* why) {
+  const Eigen::Index N = curve_.N();
+  // Arnoldi depends on the point alone: with two or more threads it runs on a copy of the map
+  // (the same grid and coefficients, so the same bits) while this thread finds the tangent.
+  ArnoldiOptions ao;
+  ao.count = o_.leading_multipliers;
+  ao.max_dimension = o_.max_krylov;
+  ao.fd_step = o_.fd_step;
+  MonodromyEigen e;
+  std::unique_ptr<PeriodMap> copy = curve_.threads() > 1 ? curve_.map().clone() : nullptr;
+  std::exception_ptr arnoldi_error;
+  std::thread arnoldi;
+  if (copy)
+    arnoldi = std::thread([&] {
+      try {
+        e = leadingMultipliers(*copy, pt->x, pt->p, ao);
+      } catch (...) {
+        arnoldi_error = std::current_exception();
+      }
+    });
+  const Leading tangent = leadingTangent(y, H, previous_tangent, pt, DH, why);
+  if (copy) {
+    arnoldi.join();
+    curve_.map().addWorkOf(*copy);
+    if (arnoldi_error) std::rethrow_exception(arnoldi_error);
+  } else if (tangent == Leading::kDone) {
+    e = leadingMultipliers(curve_.map(), pt->x, pt->p, ao);
+  }
+  curve_.addMaps(e.period_maps);
+  if (tangent != Leading::kDone) return tangent;
+  if (!e.ok) return Leading::kFallback;
+  pt->multipliers = e.multipliers;
+  pt->multipliers_complete = e.complete;
+  pt->max_modulus = std::abs(e.multipliers[0]);
+  pt->leading_vector = e.vectors.col(0);
+  pt->stable = pt->max_modulus < 1.0;
+  return Leading::kDone;
+}
+
+Continuation::Leading Continuation::leadingTangent(const Eigen::VectorXd& y,
+                                                   const Eigen::VectorXd& H,
+                                                   const Eigen::VectorXd& previous_tangent,
+                                                   ContinuationPoint* pt, Eigen::MatrixXd* DH,
+                                                   std::string* why) {
+  const Eigen::Index N = curve_.N();
+  if (!curve_.partialJacobian(y, H, o_.fd_step, o_.slow_states, DH, why)) return Leading::kFailed;
+  // t0: the partial DH's null vector, not yet oriented (the refinement below must not depend on
+  // the previous tangent, or a resumed run would find other bits).
+  Eigen::VectorXd t0;
+  const Eigen::VectorXd none = Eigen::VectorXd::Zero(N + 1);
+  if (!tangentOf(*DH, none, &t0)) {
+    *why = "no tangent (singular extended Jacobian)";
+    return Leading::kFailed;
+  }
+  // t = t0 + d, [DH; t0^T] d = [-DH t0; 0]; preconditioner [DH_partial; t0^T].
+  Eigen::MatrixXd P(N + 1, N + 1);
+  P.topRows(N) = *DH;
+  P.row(N) = t0.transpose();
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(P);
+  Eigen::VectorXd dh_t0;
+  if (!curve_.directional(y, H, t0, o_.fd_step, &dh_t0, why)) return Leading::kFailed;
+  Eigen::VectorXd b(N + 1);
+  b.head(N) = -dh_t0;
+  b[N] = 0.0;
+  auto apply = [&](const Eigen::VectorXd& v, Eigen::VectorXd* w) {
+    Eigen::VectorXd dv;
+    if (!curve_.directional(y, H, v, o_.fd_step, &dv, why)) return false;
+    w->resize(N + 1);
+    w->head(N) = dv;
+    (*w)[N] = t0.dot(v);
+    return true;
+  };
+  auto precondition = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(lu.solve(v)); };
+  Eigen::VectorXd d;
+  bool done = false;
+  int products = 0;
+  if (!gmres(apply, precondition, b, o_.tangent_tol, o_.max_krylov, &d, &done, &products))
+    return Leading::kFailed;
+  if (!done) return Leading::kFallback;
+  Eigen::VectorXd t = t0 + d;
+  const double norm = t.norm();
+  if (!t.allFinite() || !(norm > 0.0)) return Leading::kFallback;
+  t /= norm;
+  if (t.dot(previous_tangent) < 0.0) t = -t;
+  pt->tangent = t;
+  pt->tangent_lambda = t[N];
+  return Leading::kDone;
 }
 
 double Continuation::eventFunction(const std::string& event, const ContinuationPoint& pt) const {

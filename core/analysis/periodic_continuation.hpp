@@ -12,10 +12,19 @@
 //              and Broyden updates of its DH block (chord-Broyden; the last row is exact);
 //   step       h grows by 1.5 when the corrector took fewer than `target_iterations`, shrinks by
 //              0.7 above them, halves on failure down to `min_step`.
-// At every accepted point DH is formed again by forward differences (N + 1 period maps): its state
-// block plus the identity is the monodromy matrix (all n multipliers: stable when every |mu| < 1),
-// its null vector the next tangent. Because every point starts from a fresh DH, a run resumed from
-// a recorded point (resume_from: y, tangent, step) continues with the same numbers.
+// At every accepted point DH is formed again, in one of two ways:
+//   all multipliers (leading_multipliers = 0): by forward differences (N + 1 period maps); its
+//     state block plus the identity is the monodromy matrix (all n multipliers: stable when every
+//     |mu| < 1), its null vector the next tangent;
+//   the leading ones (leading_multipliers = k > 0): only the columns of `slow_states`, the free
+//     parameters and lambda are differenced, every other state column is taken as decayed over a
+//     period (dPhi/dx_j = 0, as the periodic trim's first Jacobian); the tangent is the null vector
+//     of that partial DH made exact by GMRES on [DH; t0^T] d = [-DH t0; 0] (one directional
+//     difference of H per product, preconditioned by the partial matrix), and the k leading
+//     multipliers come from Arnoldi (monodromy.hpp). About 40 maps a point on the flexible magpie
+//     instead of 108. When Arnoldi or GMRES does not converge the point falls back to the full DH.
+// Both depend on the point's y alone (the previous tangent only orients the new one), so a run
+// resumed from a recorded point (resume_from: y, tangent, step) continues with the same numbers.
 //
 // Events, between consecutive points:
 //   fold               the parameter component of the tangent changes sign (a turning point of
@@ -73,6 +82,16 @@ struct ContinuationOptions {
   bool locate_events = true;    ///< bisection on events (else they are only flagged)
   double locate_tol = 1e-6;     ///< events located to this in lambda (parameter units)
   int max_bisections = 60;
+  /// Multipliers of every point: 0 = all n from the full Jacobian; k > 0 = the leading k by
+  /// Arnoldi with the partial Jacobian and the GMRES tangent (file comment), [0, 100].
+  int leading_multipliers = 0;
+  /// With leading_multipliers > 0: the states whose Jacobian columns are differenced (the slow
+  /// ones, e.g. the body's); empty = every state (the partial Jacobian is then the full one).
+  std::vector<int> slow_states;
+  /// With leading_multipliers > 0: the tangent's GMRES stops when |DH t|_2 <= tangent_tol (t unit,
+  /// scaled units; the differenced DH itself is good to ~fd_step), within max_krylov products.
+  double tangent_tol = 1e-7;
+  int max_krylov = 48;          ///< also Arnoldi's dimension limit, [2, 400]
 
   bool IsValid(std::string* why) const;
 };
@@ -87,7 +106,8 @@ struct ContinuationPoint {
   double residual_max = 0.0;     ///< max |R| (scaled)
   int corrector_iterations = 0;
   long period_maps = 0;          ///< maps used so far (the whole run)
-  Eigen::VectorXcd multipliers;  ///< all n, by modulus (largest first)
+  Eigen::VectorXcd multipliers;  ///< all n, or the leading ones, by modulus (largest first)
+  bool multipliers_complete = false;  ///< all n (the full Jacobian) rather than the leading ones
   double max_modulus = 0.0;
   Eigen::VectorXcd leading_vector;  ///< eigenvector of multipliers[0] (scaled states, unit norm)
   bool stable = false;           ///< max_modulus < 1

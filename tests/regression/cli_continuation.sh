@@ -64,8 +64,14 @@ for _ in $(seq 1 600); do  # until the journal holds its header and two points (
 done
 kill -9 "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 check "killed mid-run (a journal is left)" test -f "$killed/continuation.journal"
+finished_before_kill=0
+[[ -f "$killed/summary.json" ]] && finished_before_kill=1
 "$bin" run "$scratch/branch.toml" -o "$killed" > "$scratch/resumed.log" 2>&1
 check "resumed run exits 0" test $? -eq 0
+# It must have resumed from the journal's points, not started again (a record that does not
+# decode is dropped, and a fresh start would also give the same bytes).
+[[ $finished_before_kill -eq 1 ]] ||
+  check "resumed run continued from the journal" grep -q "resuming from" "$scratch/resumed.log"
 check "resumed branch has the same bytes" cmp -s "$out/continuation.csv" "$killed/continuation.csv"
 
 # Bad input: exit 2 with file, line and key.

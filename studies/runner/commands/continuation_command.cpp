@@ -2,6 +2,7 @@
 #include "studies/runner/output/console.hpp"
 
 #include <complex>
+#include <stdexcept>
 #include <chrono>
 #include <string>
 #include <string_view>
@@ -149,7 +150,8 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
         throwIfCancelled();  // a cancellation point per point, after it is journaled
         // The point as the journal holds it, so that a resumed run writes the same bytes.
         TrimContinuationPoint exact;
-        decodeContinuationPoint(encodeContinuationPoint(p), &exact);
+        if (!decodeContinuationPoint(encodeContinuationPoint(p), &exact))
+          throw std::logic_error("continuation: a point does not survive its journal encoding");
         points.push_back(exact);
         consoleErr() << "continuation: " << (p.orbit.event.empty() ? "point " : p.orbit.event + " ")
                   << p.orbit.index << ": " << continuationParameterName(co.parameter) << " "
@@ -199,9 +201,15 @@ int runContinuationStudy(const Study& study, const fs::path& out_dir, int thread
            "periodic trim solved at a point directly takes its own orbit's: they differ by "
            "that one step)")
       .set("stability_note",
-           "stable = every Floquet multiplier of the orbit's states (body, wing modes, MST-TD "
-           "states; altitude and position excluded) inside the unit circle; all multipliers from "
-           "the full monodromy matrix at every point")
+           std::string("stable = every Floquet multiplier of the orbit's states (body, wing "
+                       "modes, MST-TD states; altitude and position excluded) inside the unit "
+                       "circle; ") +
+               (study.trim.periodic.multipliers > 0
+                    ? "the leading " + std::to_string(study.trim.periodic.multipliers) +
+                          " multipliers by Arnoldi at every point (trim.periodic.multipliers; "
+                          "0 = all from the full monodromy matrix)"
+                    : std::string("all multipliers from the full monodromy matrix at every "
+                                  "point (trim.periodic.multipliers = 0)")))
       .set("period_maps", s.period_maps);
   writeSummary(out_dir, summary);
   if (!points.empty())

@@ -130,10 +130,12 @@ bool decodeContinuationPoint(std::string_view payload, TrimContinuationPoint* p)
     o.multipliers[static_cast<Eigen::Index>(i)] = {re, im};
   }
   const std::size_t N = static_cast<std::size_t>(o.y.size());
-  if (o.x.empty() || m != o.x.size() || N < o.x.size() + 1 ||
+  // All n multipliers (the full Jacobian) or the leading ones (Arnoldi), at least one.
+  if (o.x.empty() || m == 0 || m > o.x.size() || N < o.x.size() + 1 ||
       static_cast<std::size_t>(o.tangent.size()) != N ||
       static_cast<std::size_t>(o.grid_origin.size()) != N)
     return false;
+  o.multipliers_complete = m == o.x.size();
   return r.label(&p->leading_label);
 }
 

@@ -839,7 +839,8 @@ const std::vector<OutputSpec>& outputTable() {
     {"summary.json", "continuation", "points_stable", "-",
      "regular branch points whose orbit is stable (every Floquet multiplier |mu| < 1)"},
     {"summary.json", "continuation", "stability_note", "-",
-     "fixed text: what 'stable' means (every Floquet multiplier of the orbit inside the unit circle)"},
+     "text: what 'stable' means (every Floquet multiplier of the orbit inside the unit circle) and "
+     "how the multipliers were found (the leading ones by Arnoldi, or all)"},
     {"summary.json", "continuation", "stable_stretches[].from", "Hz | deg | m",
      "parameter value where a stretch of stable branch points begins (parameter_unit)"},
     {"summary.json", "continuation", "stable_stretches[].to", "Hz | deg | m",

@@ -10,7 +10,10 @@
 // keeps the equilibria exactly (every stage vanishes there), so the discrete map folds at p = 0.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -27,6 +30,9 @@ constexpr double kMultiplierTol = 1e-6;
 
 class FoldMap final : public PeriodMap {
  public:
+  /// y' gains + coupling p: the y orbit then moves along the branch (y0 + coupling p), which the
+  /// leading-multiplier route's partial Jacobian (y's column taken as decayed) gets wrong.
+  double coupling = 0.0;
   int stateCount() const override { return 2; }
   int parameterCount() const override { return 1; }
   int conditionCount() const override { return 0; }
@@ -40,7 +46,7 @@ class FoldMap final : public PeriodMap {
     double u = x[0], v = x[1];
     auto f = [&](double t, double uu, double vv, double* du, double* dv) {
       *du = (1.0 + 0.5 * std::sin(2.0 * kPi * t)) * (p[0] - uu * uu);
-      *dv = -vv + std::cos(2.0 * kPi * t);
+      *dv = -vv + std::cos(2.0 * kPi * t) + coupling * p[0];
     };
     for (int k = 0; k < kSteps; ++k) {
       const double t = k * h;
@@ -75,11 +81,26 @@ ContinuationOptions foldOptions() {
 }
 
 ContinuationSummary foldBranch(FoldMap& map, const ContinuationCallback& cb = {},
-                               const ContinuationPoint* resume = nullptr) {
+                               const ContinuationPoint* resume = nullptr,
+                               const ContinuationOptions& options = foldOptions()) {
   ShootingOptions so;  // no free parameters, no conditions
-  return continuePeriodicOrbits(map, {1.0, periodicY0()}, {1.0}, so, foldOptions(), cb, {},
-                                resume);
+  return continuePeriodicOrbits(map, {1.0, periodicY0() + map.coupling * 1.0}, {1.0}, so, options,
+                                cb, {}, resume);
 }
+
+// The leading-multiplier route (only x's column differenced, y's taken as decayed): its partial
+// Jacobian's null vector is wrong in y by the factor 1 - exp(-1), GMRES makes it exact.
+ContinuationOptions leadingOptions() {
+  ContinuationOptions o = foldOptions();
+  o.leading_multipliers = 1;
+  o.slow_states = {0};
+  o.max_krylov = 4;
+  // The chord matrix of the corrector is the partial Jacobian (Broyden-updated), which converges
+  // more slowly than the full one: let the steps grow up to 6 iterations, as trim_continuation does.
+  o.target_iterations = 6;
+  return o;
+}
+constexpr double kCoupling = 0.5;
 
 TEST(PeriodicContinuation, FollowsTheBranchThroughTheFoldAndLocatesIt) {
   FoldMap map;
@@ -141,6 +162,72 @@ TEST(PeriodicContinuation, ResumedFromARecordedPointGivesTheSamePoints) {
   }
 }
 
+TEST(PeriodicContinuation, LeadingMultiplierRouteFindsTheExactTangentAndTheFold) {
+  FoldMap map;
+  map.coupling = kCoupling;
+  const ContinuationSummary s = foldBranch(map, {}, nullptr, leadingOptions());
+  ASSERT_EQ(s.status, ContinuationStatus::kCompleted) << s.message;
+  ASSERT_GE(s.points.size(), 10u);
+  EXPECT_NEAR(s.points.back().x[0], -std::sqrt(1.5), 1e-9);
+  int folds = 0;
+  double worst_tangent = 0.0;
+  for (const ContinuationPoint& pt : s.points) {
+    ASSERT_NEAR(pt.x[0] * pt.x[0], pt.lambda, 1e-9) << pt.index;
+    ASSERT_NEAR(pt.x[1], periodicY0() + kCoupling * pt.lambda, 1e-9);
+    // The branch (x, y, p) = (x, y0 + c x^2, x^2): tangent along (1, 2 c x, 2 x).
+    Eigen::Vector3d exact(1.0, 2.0 * kCoupling * pt.x[0], 2.0 * pt.x[0]);
+    exact.normalize();
+    ASSERT_EQ(pt.tangent.size(), 3);
+    const double error = std::min((pt.tangent - exact).norm(), (pt.tangent + exact).norm());
+    worst_tangent = std::max(worst_tangent, error);
+    // 1e-6: the tangent's GMRES tolerance (1e-7 on |DH t|) over the smallest singular value of
+    // DH away from the fold, plus the forward differences' 1e-7.
+    EXPECT_LT(error, 1e-6) << pt.lambda;
+    const double mu_x = std::exp(-2.0 * pt.x[0]), mu_y = std::exp(-1.0);
+    EXPECT_NEAR(pt.max_modulus, std::max(mu_x, mu_y), kMultiplierTol * std::max(1.0, mu_x));
+    if (pt.event == "fold") {
+      ++folds;
+      EXPECT_NEAR(pt.lambda, 0.0, kFoldTol);
+    } else {
+      EXPECT_TRUE(pt.event.empty()) << pt.event << " at " << pt.lambda;
+    }
+  }
+  EXPECT_EQ(folds, 1);
+  std::printf("leading-multiplier route: %zu points, %ld period maps, worst tangent error %.2e\n",
+              s.points.size(), s.period_maps, worst_tangent);
+
+  // The test can fail: the partial Jacobian's own null vector (y's column -1 instead of
+  // exp(-1) - 1, so t_y = (1 - exp(-1)) c t_p instead of c t_p) is off by 0.15 at the start.
+  const double x0 = 1.0;
+  Eigen::Vector3d partial(1.0, (1.0 - std::exp(-1.0)) * kCoupling * 2.0 * x0, 2.0 * x0);
+  Eigen::Vector3d exact0(1.0, 2.0 * kCoupling * x0, 2.0 * x0);
+  EXPECT_GT((partial.normalized() - exact0.normalized()).norm(), 0.1);
+}
+
+TEST(PeriodicContinuation, LeadingMultiplierRouteResumesBitForBit) {
+  FoldMap map;
+  map.coupling = kCoupling;
+  const ContinuationSummary full = foldBranch(map, {}, nullptr, leadingOptions());
+  ASSERT_EQ(full.status, ContinuationStatus::kCompleted) << full.message;
+  std::size_t at = 0;
+  for (int regular = 0; at < full.points.size(); ++at)
+    if (full.points[at].event.empty() && ++regular == 5) break;
+  ASSERT_LT(at + 3, full.points.size());
+  FoldMap fresh;
+  fresh.coupling = kCoupling;
+  const ContinuationSummary resumed = foldBranch(fresh, {}, &full.points[at], leadingOptions());
+  ASSERT_EQ(resumed.status, ContinuationStatus::kCompleted) << resumed.message;
+  ASSERT_EQ(resumed.points.size(), full.points.size() - at - 1);
+  for (std::size_t k = 0; k < resumed.points.size(); ++k) {
+    const ContinuationPoint& a = full.points[at + 1 + k];
+    const ContinuationPoint& b = resumed.points[k];
+    EXPECT_EQ(a.event, b.event);
+    EXPECT_EQ(a.lambda, b.lambda) << k;  // bit for bit
+    EXPECT_EQ(a.x, b.x) << k;
+    EXPECT_EQ(a.tangent, b.tangent) << k;
+  }
+}
+
 TEST(PeriodicContinuation, CallbackStopsTheRunAndBadOptionsThrow) {
   FoldMap map;
   int seen = 0;
@@ -155,6 +242,14 @@ TEST(PeriodicContinuation, CallbackStopsTheRunAndBadOptionsThrow) {
   EXPECT_FALSE(bad.IsValid(&why));
   ShootingOptions so;
   EXPECT_THROW(continuePeriodicOrbits(map, {1.0, 0.0}, {1.0}, so, bad), std::invalid_argument);
+  ContinuationOptions krylov = foldOptions();
+  krylov.leading_multipliers = 4;
+  krylov.max_krylov = 4;  // must exceed the multipliers wanted
+  EXPECT_FALSE(krylov.IsValid(&why));
+  krylov.max_krylov = 5;
+  EXPECT_TRUE(krylov.IsValid(&why)) << why;
+  krylov.tangent_tol = 0.0;
+  EXPECT_FALSE(krylov.IsValid(&why));
   ContinuationOptions outside = foldOptions();
   outside.lambda_max = 0.5;  // the start p = 1 outside
   EXPECT_THROW(continuePeriodicOrbits(map, {1.0, 0.0}, {1.0}, so, outside),

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <string>
 
 #include "studies/runner/output/continuation_journal.hpp"
@@ -80,9 +81,26 @@ TEST(ContinuationJournal, TornOrInconsistentPayloadIsRefused) {
   p.orbit.tangent = Eigen::VectorXd::Zero(2);  // not one per unknown
   EXPECT_FALSE(decodeContinuationPoint(encodeContinuationPoint(p), &q));
   p = samplePoint();
-  p.orbit.multipliers.resize(1);  // not one per state
-  p.orbit.multipliers << 0.5;
+  p.orbit.multipliers.resize(p.orbit.multipliers.size() + 1);  // more than one per state
+  p.orbit.multipliers.setConstant(0.5);
   EXPECT_FALSE(decodeContinuationPoint(encodeContinuationPoint(p), &q));
+  p.orbit.multipliers.resize(0);  // none
+  EXPECT_FALSE(decodeContinuationPoint(encodeContinuationPoint(p), &q));
+}
+
+// The leading multipliers (Arnoldi, trim.periodic.multipliers > 0) are fewer than the states.
+TEST(ContinuationJournal, PointWithTheLeadingMultipliersComesBack) {
+  TrimContinuationPoint p = samplePoint();
+  ASSERT_GE(p.orbit.x.size(), 2u);
+  p.orbit.multipliers.resize(1);
+  p.orbit.multipliers << std::complex<double>(0.98, 0.04);
+  TrimContinuationPoint q;
+  ASSERT_TRUE(decodeContinuationPoint(encodeContinuationPoint(p), &q));
+  EXPECT_EQ(q.orbit.multipliers, p.orbit.multipliers);
+  EXPECT_FALSE(q.orbit.multipliers_complete);
+  EXPECT_EQ(encodeContinuationPoint(q), encodeContinuationPoint(p));
+  ASSERT_TRUE(decodeContinuationPoint(encodeContinuationPoint(samplePoint()), &q));
+  EXPECT_TRUE(q.orbit.multipliers_complete);
 }
 
 }  // namespace
