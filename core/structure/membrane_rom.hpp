@@ -179,6 +179,10 @@ struct MembraneCondensationOptions {
   /// scaled C stops when its largest remaining diagonal falls below this times the largest
   /// diagonal of C (the energy of one scaled pair left out, relative to the stiffest pair's).
   double rank_tolerance = 1e-10;
+  /// Threads for the column blocks of the in-plane solve and of the products that form C (0 = the
+  /// machine's cores, at most 4). Every column is the same arithmetic on any thread, so C has the
+  /// same bits for any count (test_fe_von_karman.cpp).
+  int threads = 0;
 };
 
 /// Builds the condensed membrane stiffness of the modes `shapes` (6n x M). `stiffness` is the

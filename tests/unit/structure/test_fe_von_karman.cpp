@@ -395,6 +395,28 @@ struct ClampedFilm {
   }
 };
 
+// The condensation's column blocks on several threads give C to the bit (each column is the same
+// arithmetic whichever block holds it), so results do not depend on the machine's cores.
+TEST(FeMembraneRom, CondensationHasTheSameBitsOnAnyNumberOfThreads) {
+  const ClampedFilm film(16);  // P = 136 pairs: uneven blocks for 3 threads
+  const VonKarmanTerms terms(film.vehicle, film.mesh);
+  MembraneCondensationOptions options;
+  options.storage = MembraneStorage::kDense;
+  options.keep_relaxation = true;
+  options.threads = 1;
+  const ModalMembraneStiffness one = modalMembraneStiffness(
+      terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, film.shapes, options);
+  ASSERT_GT(one.pair_stiffness.cwiseAbs().maxCoeff(), 0.0);
+  for (const int threads : {2, 3}) {
+    options.threads = threads;
+    const ModalMembraneStiffness many = modalMembraneStiffness(
+        terms, film.fe.stiffness, film.part, film.mesh.nodes_W_m, film.shapes, options);
+    EXPECT_TRUE(many.pair_stiffness == one.pair_stiffness) << threads;  // exact
+    EXPECT_TRUE(many.relaxation == one.relaxation) << threads;
+    EXPECT_TRUE(many.hessian_pairs == one.hessian_pairs) << threads;
+  }
+}
+
 TEST(FeMembraneRom, TruncatedFactorOnlySoftensAndKeepsTheLargeDeflection) {
   const ClampedFilm film(16);  // the first 16 out-of-plane modes
   const double t = ClampedFilm::kThickness_m;
