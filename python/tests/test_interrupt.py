@@ -70,9 +70,11 @@ def test_ctrl_c_stops_an_optimisation_and_keeps_its_journal(tmp_path):
 
 
 def test_interrupted_continuation_resumes_to_the_same_bytes(tmp_path):
+    # 12 -> 16 Hz takes about 4 s (2.3 s to 14 Hz since the leading-multiplier route: a branch
+    # that short could finish before the signal at 1.5 s).
     toml = tmp_path / "branch.toml"
     toml.write_text('kind = "continuation"\nname = "branch"\nvehicle = "%s"\n[trim]\n'
-                    'freq_hz = 12.0\n[continuation]\nparameter = "freq_hz"\nto = 14.0\n'
+                    'freq_hz = 12.0\n[continuation]\nparameter = "freq_hz"\nto = 16.0\n'
                     'step = 0.1\nmax_points = 40\n' % EFW)
     whole, cut = tmp_path / "whole", tmp_path / "cut"
     ornithopter.run(str(toml), out=str(whole))
