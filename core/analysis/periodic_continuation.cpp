@@ -448,7 +448,6 @@ Continuation::Leading Continuation::completeLeading(const Eigen::VectorXd& y,
                                                    const Eigen::VectorXd& previous_tangent,
                                                    ContinuationPoint* pt, Eigen::MatrixXd* DH,
                                                    std::string* why) {
-  const Eigen::Index N = curve_.N();
   // Arnoldi depends on the point alone: with two or more threads it runs on a copy of the map
   // (the same grid and coefficients, so the same bits) while this thread finds the tangent.
   ArnoldiOptions ao;
@@ -467,12 +466,21 @@ Continuation::Leading Continuation::completeLeading(const Eigen::VectorXd& y,
         arnoldi_error = std::current_exception();
       }
     });
-  const Leading tangent = leadingTangent(y, H, previous_tangent, pt, DH, why);
+  // The tangent's maps may throw (a cancellation): the Arnoldi thread is joined first.
+  Leading tangent = Leading::kFailed;
+  std::exception_ptr tangent_error;
+  try {
+    tangent = leadingTangent(y, H, previous_tangent, pt, DH, why);
+  } catch (...) {
+    tangent_error = std::current_exception();
+  }
   if (copy) {
     arnoldi.join();
     curve_.map().addWorkOf(*copy);
-    if (arnoldi_error) std::rethrow_exception(arnoldi_error);
-  } else if (tangent == Leading::kDone) {
+  }
+  if (tangent_error) std::rethrow_exception(tangent_error);
+  if (arnoldi_error) std::rethrow_exception(arnoldi_error);
+  if (!copy && tangent == Leading::kDone) {
     e = leadingMultipliers(curve_.map(), pt->x, pt->p, ao);
   }
   curve_.addMaps(e.period_maps);
