@@ -1,5 +1,5 @@
 // Speed of the continuation of trimmed flight (issue 16 target: the magpie's trim branch over
-// 10-16 Hz with 30 points in at most 10 s; issue 27: 3 s on two threads).
+// 10-16 Hz with 30 points in at most 10 s; now 3 s on two threads, docs/speed.md).
 //   BM_ContinuationEfw     : `ornithopter run` of a continuation study without I/O: the periodic
 //                            trim at the start, then the branch with the default 8 leading
 //                            multipliers at every point (Arnoldi; the tangent by GMRES from the

@@ -102,6 +102,14 @@ ContinuationOptions leadingOptions() {
 }
 constexpr double kCoupling = 0.5;
 
+/// The index of the fifth regular point (the start counts), where the resume tests pick up.
+std::size_t fifthRegularPoint(const ContinuationSummary& s) {
+  std::size_t at = 0;
+  for (int regular = 0; at < s.points.size(); ++at)
+    if (s.points[at].event.empty() && ++regular == 5) break;
+  return at;
+}
+
 TEST(PeriodicContinuation, FollowsTheBranchThroughTheFoldAndLocatesIt) {
   FoldMap map;
   const ContinuationSummary s = foldBranch(map);
@@ -143,9 +151,7 @@ TEST(PeriodicContinuation, ResumedFromARecordedPointGivesTheSamePoints) {
   const ContinuationSummary full = foldBranch(map);
   ASSERT_EQ(full.status, ContinuationStatus::kCompleted) << full.message;
   // Resume after the fourth regular point, in a fresh map.
-  std::size_t at = 0;
-  for (int regular = 0; at < full.points.size(); ++at)
-    if (full.points[at].event.empty() && ++regular == 5) break;
+  const std::size_t at = fifthRegularPoint(full);
   ASSERT_LT(at + 3, full.points.size());
   FoldMap fresh;
   const ContinuationSummary resumed = foldBranch(fresh, {}, &full.points[at]);
@@ -209,9 +215,7 @@ TEST(PeriodicContinuation, LeadingMultiplierRouteResumesBitForBit) {
   map.coupling = kCoupling;
   const ContinuationSummary full = foldBranch(map, {}, nullptr, leadingOptions());
   ASSERT_EQ(full.status, ContinuationStatus::kCompleted) << full.message;
-  std::size_t at = 0;
-  for (int regular = 0; at < full.points.size(); ++at)
-    if (full.points[at].event.empty() && ++regular == 5) break;
+  const std::size_t at = fifthRegularPoint(full);
   ASSERT_LT(at + 3, full.points.size());
   FoldMap fresh;
   fresh.coupling = kCoupling;
