@@ -8,7 +8,9 @@
 namespace orni::python {
 
 /// Logs every kept line and forgets it. Needs the GIL; never throws (a failing handler is
-/// logging's own business).
-void forwardConsoleLines() noexcept;
+/// logging's own business). Returns true when a signal handler raised while logging ran
+/// (KeyboardInterrupt, SystemExit): that exception is then set in Python's error indicator for the
+/// caller to take as an interruption, as from PyErr_CheckSignals.
+[[nodiscard]] bool forwardConsoleLines() noexcept;
 
 }  // namespace orni::python

@@ -42,8 +42,11 @@ auto interruptible(Work&& work) -> decltype(work()) {
     while (done.wait_for(std::chrono::milliseconds(20)) != std::future_status::ready) {
       if (interrupted) continue;
       py::gil_scoped_acquire gil;
-      forwardConsoleLines();  // progress reaches Python's logging while the run goes on
-      if (PyErr_CheckSignals() != 0) {  // the handler's exception is now set in this thread
+      // Progress reaches Python's logging while the run goes on. Python runs signal handlers at
+      // its next bytecode, often inside logging: forwardConsoleLines then returns true with the
+      // handler's exception set (before, that KeyboardInterrupt was discarded as unraisable and
+      // the Ctrl-C was lost: the flaky python.pytest interrupt test of 2026-12-07).
+      if (forwardConsoleLines() || PyErr_CheckSignals() != 0) {  // the handler's exception is set
         PyErr_Fetch(&pending_type, &pending_value, &pending_traceback);
         interrupted = true;
         requestCancellation();
@@ -51,7 +54,14 @@ auto interruptible(Work&& work) -> decltype(work()) {
     }
     worker.join();
   }
-  forwardConsoleLines();  // the run's last lines (its result line)
+  if (forwardConsoleLines()) {  // the run's last lines (its result line); a Ctrl-C while they go
+    if (interrupted) {
+      PyErr_Clear();  // a second interruption: the first one is raised
+    } else {
+      PyErr_Fetch(&pending_type, &pending_value, &pending_traceback);
+      interrupted = true;  // the work has ended (its files are written); the Ctrl-C still raises
+    }
+  }
   if (interrupted) {
     clearCancellation();  // the worker has stopped: the next call runs normally
     PyErr_Restore(pending_type, pending_value, pending_traceback);  // takes the references back

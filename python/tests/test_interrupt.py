@@ -82,3 +82,42 @@ def test_interrupted_continuation_resumes_to_the_same_bytes(tmp_path):
     assert not (cut / "continuation.csv").exists()
     ornithopter.run(str(toml), out=str(cut))  # resumes from the journal
     assert (cut / "continuation.csv").read_bytes() == (whole / "continuation.csv").read_bytes()
+
+
+class SlowHandler:
+    """A logging handler that takes 0.1 s a record: the main thread spends most of a run inside
+    Python code, where the interpreter runs the SIGINT handler."""
+
+    def __init__(self):
+        import logging
+        self.handler = logging.Handler(level=logging.DEBUG)
+        self.handler.emit = lambda record: time.sleep(0.1)
+        self.records = 0
+
+    def __enter__(self):
+        import logging
+        logger = logging.getLogger("ornithopter")
+        self.level = logger.level
+        logger.setLevel(logging.DEBUG)
+        logger.addHandler(self.handler)
+        return self
+
+    def __exit__(self, *exc):
+        import logging
+        logger = logging.getLogger("ornithopter")
+        logger.removeHandler(self.handler)
+        logger.setLevel(self.level)
+
+
+def test_ctrl_c_inside_a_logging_handler_still_interrupts(tmp_path):
+    # A KeyboardInterrupt raised inside logging (the run's progress lines going to a handler) is
+    # the caller's Ctrl-C: it was once discarded as "unraisable" and the run went on to its end.
+    toml = tmp_path / "branch.toml"
+    toml.write_text('kind = "continuation"\nname = "branch"\nvehicle = "%s"\n[trim]\n'
+                    'freq_hz = 12.0\n[continuation]\nparameter = "freq_hz"\nto = 16.0\n'
+                    'step = 0.1\nmax_points = 40\n' % EFW)
+    with SlowHandler():
+        late = interrupted(lambda: ornithopter.run(str(toml), out=str(tmp_path / "cut")),
+                           after_s=1.0)
+    assert late < STOP_WITHIN_S
+    assert not (tmp_path / "cut" / "continuation.csv").exists()
