@@ -73,10 +73,11 @@ struct SimulationOptions {
   int samples_per_cycle = 100;   ///< time-history output resolution, [8, 100000]
   bool record_history = true;    ///< keep the sampled time histories (off for maps and trim)
   /// Tethered flexible wing: a history sample's loads from the integrator's dense output
-  /// (FlexibleTetheredSystem::sampleFromDerivative, about a third of a right-hand side) instead
-  /// of evaluated at the sampled state (one right-hand side and the inertial loads each). Both
-  /// are as accurate as the integration tolerance (docs/theory.md 9.4). simulate.sampled_loads.
-  bool interpolate_sampled_loads = false;
+  /// (FlexibleTetheredSystem::sampleFromDerivative, about a third of a right-hand side; the
+  /// default since 2026-12-07) instead of evaluated at the sampled state (one right-hand side and
+  /// the inertial loads each). Both are as accurate as the integration tolerance (docs/theory.md
+  /// 9.4). simulate.sampled_loads.
+  bool interpolate_sampled_loads = true;
   FreeFlightOptions free;        ///< free mode only
   ModalIntegration modal_integration = ModalIntegration::kImplicit;  ///< flexible wing only
   bool stop_when_steady = false; ///< end the run at the first cycle that meets steady_tol

@@ -296,7 +296,7 @@ std::vector<FieldSpec> makeTable() {
       // 8 samples resolve the fourth harmonic; 100 000 per cycle fill memory, not the spectra.
       integer("simulate.samples_per_cycle", R::closed(8, 100000), "100",
               "time-history samples per cycle"),
-      choice("simulate.sampled_loads", "evaluated | interpolated", "\"evaluated\"",
+      choice("simulate.sampled_loads", "evaluated | interpolated", "\"interpolated\"",
              "tethered flexible wing: a history sample's loads evaluated at the sampled state, or "
              "interpolated from the integrator's dense output (about a third of the cost, as "
              "accurate as the tolerance; docs/theory.md 9.4)"),

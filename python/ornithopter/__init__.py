@@ -154,8 +154,9 @@ def simulate(vehicle, mode="tethered", speed=None, freq=None, theta=None, tail=N
       figures draw the figures into ``out`` (gnuplot; default False: their scripts only)
       **options  any other [simulate] key in file units: rel_tol (default 1e-6), abs_tol,
               samples_per_cycle (default 100), steady_tol, history_every (default 1),
-              sampled_loads ("evaluated" or "interpolated": the flexible wing's history loads
-              from the integrator's dense output, about 4x cheaper; docs/theory.md 9.4),
+              sampled_loads ("interpolated", the default: the flexible wing's history loads
+              from the integrator's dense output, about 4x cheaper than "evaluated" at the
+              sampled state; docs/theory.md 9.4),
               wing_only (default False), at_trim (default False), free={...} ([simulate.free]).
 
     Returns the summary.json dict (``status``, ``mean`` {FV_N, FH_N, M_Nm, power_W, ...}, ...)

@@ -48,7 +48,7 @@ set key outside below center horizontal maxrows 2 box font ',10'
 set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'
 set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'
 set label 3 'gaps: no ZMP where |C_{F,normal}| < 10 % of its maximum' at graph 0.99, graph 0.06 right font ',9'
-plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.15717 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0332978 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
+plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.157034 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0332444 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
 unset label 1
 unset label 2
 unset label 3
@@ -101,7 +101,7 @@ set key outside below center horizontal maxrows 2 box font ',10'
 set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'
 set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'
 set label 3 'gaps: no ZMP where |C_{F,normal}| < 10 % of its maximum' at graph 0.99, graph 0.06 right font ',9'
-plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.15717 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0332978 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
+plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.157034 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0332444 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
 unset label 1
 unset label 2
 unset label 3

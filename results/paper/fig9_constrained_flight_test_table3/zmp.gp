@@ -17,21 +17,21 @@ set origin 0,0.75
 set ylabel 'C_{F,V} (-)'
 set y2label '{/Symbol d}_M (deg)'
 set y2tics 20
-set ytics 10 nomirror
+set ytics 1 nomirror
 set key top right box opaque font ',10'
 plot 'zmp.csv' skip 2 using 1:4 with lines lw 2 lc rgb '#333333' title 'C_{F,V}', '' skip 2 using 1:2 axes x1y2 with lines dt 2 lw 1 lc rgb '#888888' title '{/Symbol d}_M (right axis)'
 unset y2tics
 unset y2label
 set key off
 set origin 0,0.57
-set ytics 5 mirror
+set ytics 0.1 mirror
 set ylabel 'C_{F,H} (-)'
 plot 'zmp.csv' skip 2 using 1:5 with lines lw 2 lc rgb '#333333'
 set origin 0,0.36
 set size 1,0.21
 set bmargin 3
 set format x '%g'
-set ytics 2
+set ytics 0.1
 set xlabel 'time (s); shaded: downstroke' offset 0,0.5
 set ylabel 'C_{M,CG} (-)'
 plot 'zmp.csv' skip 2 using 1:6 with lines lw 2 lc rgb '#333333'
@@ -48,7 +48,7 @@ set key outside below center horizontal maxrows 2 box font ',10'
 set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'
 set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'
 set label 3 'gaps: no ZMP where |C_{F,normal}| < 10 % of its maximum' at graph 0.99, graph 0.06 right font ',9'
-plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.243426 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', -0.265178 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
+plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', 0.0537648 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0243572 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
 unset label 1
 unset label 2
 unset label 3
@@ -70,21 +70,21 @@ set origin 0,0.75
 set ylabel 'C_{F,V} (-)'
 set y2label '{/Symbol d}_M (deg)'
 set y2tics 20
-set ytics 10 nomirror
+set ytics 1 nomirror
 set key top right box opaque font ',10'
 plot 'zmp.csv' skip 2 using 1:4 with lines lw 2 lc rgb '#333333' title 'C_{F,V}', '' skip 2 using 1:2 axes x1y2 with lines dt 2 lw 1 lc rgb '#888888' title '{/Symbol d}_M (right axis)'
 unset y2tics
 unset y2label
 set key off
 set origin 0,0.57
-set ytics 5 mirror
+set ytics 0.1 mirror
 set ylabel 'C_{F,H} (-)'
 plot 'zmp.csv' skip 2 using 1:5 with lines lw 2 lc rgb '#333333'
 set origin 0,0.36
 set size 1,0.21
 set bmargin 3
 set format x '%g'
-set ytics 2
+set ytics 0.1
 set xlabel 'time (s); shaded: downstroke' offset 0,0.5
 set ylabel 'C_{M,CG} (-)'
 plot 'zmp.csv' skip 2 using 1:6 with lines lw 2 lc rgb '#333333'
@@ -101,7 +101,7 @@ set key outside below center horizontal maxrows 2 box font ',10'
 set label 1 'ZMP aft of the CG' at graph 0.01, graph 0.93 left font ',9'
 set label 2 'ZMP ahead of the CG' at graph 0.01, graph 0.06 left font ',9'
 set label 3 'gaps: no ZMP where |C_{F,normal}| < 10 % of its maximum' at graph 0.99, graph 0.06 right font ',9'
-plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', -0.243426 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', -0.265178 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
+plot 0 with lines lc rgb '#555555' lw 1 title 'static moment equilibrium', 'zmp.csv' skip 2 using 2:(strcol(3) eq 'up' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#2471a3' title 'upstroke', '' skip 2 using 2:(strcol(3) eq 'down' && strcol(7) ne '' ? real(strcol(7)) : 1/0) with linespoints pt 7 ps 0.5 lw 1.5 lc rgb '#c0392b' title 'downstroke', 0.0537648 with lines dt 2 lw 1.5 lc rgb '#2471a3' title 'upstroke mean (|C_{F,normal}|-weighted)', 0.0243572 with lines dt 2 lw 1.5 lc rgb '#c0392b' title 'downstroke mean (|C_{F,normal}|-weighted)'
 unset label 1
 unset label 2
 unset label 3

@@ -255,10 +255,10 @@ TEST_F(ConfigStudyFile, SimulateSectionRules) {
   EXPECT_NE(std::string(es.what()).find("interpolated"), std::string::npos) << es.what();
   const fs::path s2 =
       writeStudy("s2.toml", "kind = \"simulate\"\nvehicle = \"" + efw() +
-                                "\"\n[simulate]\nsampled_loads = \"interpolated\"\n");
-  EXPECT_TRUE(loadStudyFile(s2).simulate().options.interpolate_sampled_loads);
+                                "\"\n[simulate]\nsampled_loads = \"evaluated\"\n");
+  EXPECT_FALSE(loadStudyFile(s2).simulate().options.interpolate_sampled_loads);
   const fs::path s3 = writeStudy("s3.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n");
-  EXPECT_FALSE(loadStudyFile(s3).simulate().options.interpolate_sampled_loads);  // "evaluated"
+  EXPECT_TRUE(loadStudyFile(s3).simulate().options.interpolate_sampled_loads);  // "interpolated"
 
   const fs::path c = writeStudy(
       "c.toml", "kind = \"simulate\"\nvehicle = \"" + efw() + "\"\n[simulate]\nrel_tol = 0.5\n");

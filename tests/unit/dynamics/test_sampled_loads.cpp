@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -112,6 +113,63 @@ TEST_F(SampledLoads, InterpolatedSamplesAreAsAccurateAsTheIntegration) {
     std::printf("%-20s rel_tol 1e-4: interpolated %.2e evaluated %.2e | 1e-6: %.2e %.2e\n", c.name,
                 da, db, dat, dbt);
     EXPECT_LT(da, std::max(kAtDefault, db)) << c.name;
+    EXPECT_LT(dat, kAtTight) << c.name;
+  }
+}
+
+// The calibrated vehicle's nonlinear (membrane) wing at Table 3's point, as the paper's Fig. 9
+// holds it: the membrane's stiff force (tangent frequencies of kHz) turns the interpolated state's
+// small error into a large error of q'' and of the loads evaluated from it, so the evaluated samples
+// are far off at the default tolerance while the interpolated ones are as accurate as on the
+// linear wing (the reason "interpolated" is the default, docs/theory.md 9.4). Until 2026-12-07 the
+// committed Fig. 9 of this vehicle showed +-100 N "bursts" that were this sampling error.
+TEST_F(SampledLoads, NonlinearWingInterpolatedSamplesConvergeWhereEvaluatedOnesDoNot) {
+  const auto file = studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) +
+                                             "/studies/vehicles/efw_magpie_table3.toml");
+  ASSERT_TRUE(file.model.wing.fe.nonlinear);
+  const FlightCoreModel nonlinear(file.model);
+  const OperatingPoint table3{10.8, 12.0, 9.2 * M_PI / 180.0, 11.85 * M_PI / 180.0};
+  auto run = [&](double rel_tol, bool interpolate, TimeHistory* h) {
+    SimulationOptions o;
+    o.cycles = 3;
+    o.samples_per_cycle = 100;
+    o.rel_tol = rel_tol;
+    o.interpolate_sampled_loads = interpolate;
+    return simulateTethered(nonlinear, table3, o, h);
+  };
+  TimeHistory interpolated, evaluated, interpolated_tight, reference;
+  const SimulationSummary a = run(1e-4, true, &interpolated);
+  const SimulationSummary b = run(1e-4, false, &evaluated);
+  const SimulationSummary at = run(1e-6, true, &interpolated_tight);
+  const SimulationSummary r = run(1e-8, true, &reference);
+  for (const SimulationSummary* s : {&a, &b, &at, &r}) {
+    ASSERT_TRUE(s->status == SimulationStatus::kOk || s->status == SimulationStatus::kNotConverged)
+        << s->message;
+    ASSERT_EQ(s->cycles_run, 3);
+  }
+  // Measured 2026-12-07 (printed; the third cycle, still in the transient, where the state itself
+  // is off by 2.7e-2 of tip_twist's peak-to-peak at 1e-4): at rel_tol 1e-4 the evaluated samples'
+  // loads are off by 4 to 79 peak-to-peaks, the interpolated ones' by 2e-2 .. 3.1e-1 (the wing's
+  // inertial loads, from q'', the worst), a factor 200 to 420 better; at 1e-6 the interpolated
+  // ones by at most 2.2e-3. (The 10-cycle Fig. 9 study at its steady state, against 1e-8: evaluated
+  // at 1e-6 still 5.4e-2 on the inertial loads, interpolated at 1e-6 2.5e-3, at 1e-4 8e-2; the
+  // 1e-8 reference's two kinds of sample agree to 2.3e-4.) Bounds: the interpolated at least 20
+  // times better than the evaluated on every load channel at 1e-4 (the reason for the default),
+  // and within 1e-2 at 1e-6 (the samples converge with the tolerance).
+  constexpr double kBetterThanEvaluated = 20.0, kAtTight = 1e-2;
+  const double LoadSample::*state_only[] = {&LoadSample::separated_fraction,
+                                            &LoadSample::tip_twist_rad};
+  for (const Channel& c : kChannels) {
+    const double da = deviation(interpolated, reference, c);
+    const double db = deviation(evaluated, reference, c);
+    const double dat = deviation(interpolated_tight, reference, c);
+    std::printf("%-20s rel_tol 1e-4: interpolated %.2e evaluated %.2e | 1e-6 interpolated %.2e\n",
+                c.name, da, db, dat);
+    const bool load = std::find(std::begin(state_only), std::end(state_only), c.field) ==
+                      std::end(state_only);
+    if (load) {
+      EXPECT_GT(db, kBetterThanEvaluated * da) << c.name;
+    }
     EXPECT_LT(dat, kAtTight) << c.name;
   }
 }
