@@ -228,7 +228,7 @@ void flyCycles(const FreeFlightSystem& sys, double freq_hz, const SimulationOpti
       const double* y = integrator.state();
       const std::string why = divergenceReason(t, y, n, summary->initial, options.free,
                                                Q_bound_radps);
-      if (why.empty() || allFinite(y, n)) recorder.record(t, y);
+      if (why.empty() || allFinite(y, n)) recorder.record(t, y, integrator.derivative());
       if (!why.empty()) {
         summary->status = SimulationStatus::kDiverged;
         summary->message = why;

@@ -46,8 +46,10 @@ class FreeFlightRecorder {
   FreeFlightRecorder(const FreeFlightRecorder&) = delete;
   FreeFlightRecorder& operator=(const FreeFlightRecorder&) = delete;
 
-  /// The next sample of the run: state y (FreeFlightSystem's layout) at t_s.
-  void record(double t_s, const double* y);
+  /// The next sample of the run: state y (FreeFlightSystem's layout) at t_s; `ydot` (may be null)
+  /// its derivative from the integrator's dense output, used for the loads of a nonlinear wing
+  /// when options.interpolate_sampled_loads (FreeFlightSystem::sample).
+  void record(double t_s, const double* y, const double* ydot = nullptr);
   /// Drops the history's samples before its last keep_cycles whole cycles; `amortised`: only
   /// once it holds twice that (oldSamplesToDrop, history_window.hpp).
   void dropOld(bool amortised);
@@ -69,6 +71,7 @@ class FreeFlightRecorder {
   FreeFlightObserver* observer_;
   double flap_amplitude_rad_, freq_hz_;
   bool loads_;  // sample the loads (one more RHS evaluation per sample)
+  bool interpolate_;  // u' of the nonlinear wing's samples from the dense output's derivative
   int spc_;
   FreeFlightWindows windows_;
   FreeFlightHistory local_;

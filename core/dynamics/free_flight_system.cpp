@@ -473,8 +473,14 @@ void FreeFlightSystem::rhs(double t_s, const double* y, double* ydot) {
 }
 
 void FreeFlightSystem::sample(double t_s, const double* y, FreeFlightSample* out,
-                              bool with_energy) {
+                              bool with_energy, const double* ydot) {
   evaluate(t_s, y, nullptr);
+  if (ydot != nullptr && mode_count_ > 0) {  // u' from the dense output (rhs()'s rows of ud)
+    ws_.ud[0] = ydot[3];
+    ws_.ud[1] = ydot[4];
+    ws_.ud[2] = ydot[5];
+    for (int i = 0; i < mode_count_; ++i) ws_.ud[3 + i] = ydot[kBody + mode_count_ + i];
+  }
   const FreeFlightModel& md = *model_;
   FreeFlightSample& s = *out;
   s = FreeFlightSample{};

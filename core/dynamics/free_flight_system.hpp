@@ -90,7 +90,13 @@ class FreeFlightSystem {
                           std::vector<double>* atol) const;
   void rhs(double t_s, const double* y, double* ydot);
   /// Accelerations and loads at (t, y); the energies too when `with_energy` (one more evaluation).
-  void sample(double t_s, const double* y, FreeFlightSample* out, bool with_energy = true);
+  /// `ydot` (may be null): dy/dt at (t, y) from the integrator's dense output; with a flexible
+  /// wing the body's and the modes' accelerations u' (the sample's U', W', Q' and the apparent-mass
+  /// loads of u') are then taken from it instead of solved at the interpolated state, where the
+  /// nonlinear wing's stiff membrane force turns the interpolant's small error into a large one
+  /// (docs/theory.md 9.4). The circulatory loads are evaluated at (t, y) either way.
+  void sample(double t_s, const double* y, FreeFlightSample* out, bool with_energy = true,
+              const double* ydot = nullptr);
 
   static int rhsCallback(double t, const double* y, double* ydot, void* self) {
     static_cast<FreeFlightSystem*>(self)->rhs(t, y, ydot);

@@ -72,11 +72,13 @@ struct SimulationOptions {
                                  ///< and of the aero states (rad), (0, 0.1]
   int samples_per_cycle = 100;   ///< time-history output resolution, [8, 100000]
   bool record_history = true;    ///< keep the sampled time histories (off for maps and trim)
-  /// Tethered flexible wing: a history sample's loads from the integrator's dense output
-  /// (FlexibleTetheredSystem::sampleFromDerivative, about a third of a right-hand side; the
-  /// default since 2026-12-07) instead of evaluated at the sampled state (one right-hand side and
-  /// the inertial loads each). Both are as accurate as the integration tolerance (docs/theory.md
-  /// 9.4). simulate.sampled_loads.
+  /// Flexible wing: a history sample's loads from the integrator's dense output (the default
+  /// since 2026-12-07) instead of evaluated at the sampled state. Tethered: the aerodynamic loads
+  /// and q'' from the interpolant's derivative (FlexibleTetheredSystem::sampleFromDerivative,
+  /// about a third of a right-hand side); free flight of the nonlinear wing: the accelerations u'
+  /// from it (FreeFlightSystem::sample), the circulatory loads evaluated. Both kinds are as
+  /// accurate as the tolerance on the linear wing; on the nonlinear wing the evaluated ones are
+  /// far off (docs/theory.md 9.4). simulate.sampled_loads.
   bool interpolate_sampled_loads = true;
   FreeFlightOptions free;        ///< free mode only
   ModalIntegration modal_integration = ModalIntegration::kImplicit;  ///< flexible wing only

@@ -297,9 +297,11 @@ std::vector<FieldSpec> makeTable() {
       integer("simulate.samples_per_cycle", R::closed(8, 100000), "100",
               "time-history samples per cycle"),
       choice("simulate.sampled_loads", "evaluated | interpolated", "\"interpolated\"",
-             "tethered flexible wing: a history sample's loads evaluated at the sampled state, or "
-             "interpolated from the integrator's dense output (about a third of the cost, as "
-             "accurate as the tolerance; docs/theory.md 9.4)"),
+             "flexible wing: a history sample's loads evaluated at the sampled state, or "
+             "interpolated from the integrator's dense output (tethered: about a third of the "
+             "cost; free flight of the nonlinear wing: the accelerations; as accurate as the "
+             "tolerance on the linear wing, far more so on the nonlinear one; docs/theory.md "
+             "9.4)"),
       integer("simulate.history_every", R::closed(1, 1000000), "1",
               "histories.csv keeps every n-th sample (output only)"),
       boolean("simulate.wing_only", "false",
