@@ -200,6 +200,8 @@ PeriodicTrimSummary solvePeriodicTrim(const FlightCoreModel& model, const TrimOp
   // The first Jacobian differences the body states only: the modal and aerodynamic states decay
   // within a period (multipliers below 0.4 on the magpie); Broyden supplies the rest.
   so.first_jacobian_states = {0, 1, 2, 3};
+  // Its columns on the trim's threads (each on a copy of the map: the same bits for any count).
+  so.jacobian_threads = options.jacobian_threads;
   const bool full_floquet = options.periodic.floquet && options.periodic.multipliers == 0;
   long maps = 0;
   int iterations = 0, jacobians = 0, partial = 0, broyden = 0, refreshes = 0;

@@ -93,6 +93,8 @@ bool TrimOptions::IsValid(std::string* why) const {
     return fail("stall_decrease must be in (0, 1)");
   if (!(refine_stalled_max_residual >= 0.0 && refine_stalled_max_residual <= 1.0))
     return fail("refine_stalled_max_residual must be in [0, 1]");
+  if (jacobian_threads < 1 || jacobian_threads > 64)
+    return fail("jacobian_threads must be in [1, 64]");
   std::string sim_why;
   if (!simulation.IsValid(&sim_why)) return fail("simulation: " + sim_why);
   if (!periodic.IsValid(&sim_why)) return fail(sim_why);

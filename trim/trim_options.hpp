@@ -81,6 +81,13 @@ struct TrimOptions {
   /// callback that ends the solve sees it). Set by solvePeriodicTrim for its stage 1; not a study
   /// key.
   bool start_only = false;
+  /// Threads that run the periodic evaluations of one Eq. (4) Jacobian (its finite-difference
+  /// columns) and, in the periodic trim, the columns of the orbit's Newton Jacobian, [1, 64]. The
+  /// runs are independent and recorded in their sequential order, so every result and log is the
+  /// same for any count. Set from `-j` for a single trim (`ornithopter trim`, a trim study run by
+  /// `ornithopter run`); not a study key (optimize and the other studies use their threads over
+  /// their own points).
+  int jacobian_threads = 1;
 
   /// True when every field is inside its range; otherwise false with the reason in *why.
   bool IsValid(std::string* why) const;

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/grid/point_pool.hpp"
 #include "core/model/frames.hpp"
 #include "core/model/invariant.hpp"
 
@@ -109,14 +110,25 @@ const TrimEvaluationRecord* TrimProblem::findResidual(const OperatingPoint& poin
   return nullptr;
 }
 
+void TrimProblem::setJacobianThreads(int threads) {
+  if (threads < 1) throw std::invalid_argument("TrimProblem: jacobian threads must be >= 1");
+  jacobian_threads_ = threads;
+}
+
 const TrimEvaluationRecord& TrimProblem::run(const OperatingPoint& point,
                                              TrimEvaluationPurpose purpose) {
+  return record(point, purpose, loads_(point, purpose));
+}
+
+const TrimEvaluationRecord& TrimProblem::record(const OperatingPoint& point,
+                                                TrimEvaluationPurpose purpose,
+                                                PeriodicEvaluation result) {
   TrimEvaluationRecord rec;
   rec.index = static_cast<int>(log_.size());
   rec.iteration = iteration_;
   rec.purpose = purpose;
   rec.point = point;
-  rec.result = loads_(point, purpose);
+  rec.result = std::move(result);
   const CycleMeans& m = rec.result.mean;
   if (rec.result.ok &&
       !(std::isfinite(m.FV_N) && std::isfinite(m.FH_N) && std::isfinite(m.M_Nm))) {
@@ -134,6 +146,32 @@ const TrimEvaluationRecord& TrimProblem::run(const OperatingPoint& point,
   return log_.back();
 }
 
+bool TrimProblem::runDerivatives(const std::vector<OperatingPoint>& points,
+                                 std::vector<std::array<double, kTrimResidualCount>>* r) {
+  r->clear();
+  constexpr TrimEvaluationPurpose kPurpose = TrimEvaluationPurpose::kDerivative;
+  if (jacobian_threads_ <= 1 || points.size() < 2) {
+    for (const OperatingPoint& p : points) {  // one at a time: none after a failure
+      const TrimEvaluationRecord& e = run(p, kPurpose);
+      if (!e.result.ok) return false;
+      r->push_back(scaledResidual(reference_, e.residual));
+    }
+    return true;
+  }
+  // All at once on the pool (each slot written by its own run), then recorded in order.
+  std::vector<PeriodicEvaluation> results(points.size());
+  std::vector<std::size_t> todo(points.size());
+  for (std::size_t i = 0; i < todo.size(); ++i) todo[i] = i;
+  runPoints(todo, jacobian_threads_,
+            [&](std::size_t i) { results[i] = loads_(points[i], kPurpose); });
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const TrimEvaluationRecord& e = record(points[i], kPurpose, std::move(results[i]));
+    if (!e.result.ok) return false;
+    r->push_back(scaledResidual(reference_, e.residual));
+  }
+  return true;
+}
+
 bool TrimProblem::residual(const double* x, double* r) {
   const OperatingPoint p = pointAt(x);
   const TrimEvaluationRecord* rec = findResidual(p);
@@ -147,7 +185,12 @@ bool TrimProblem::residual(const double* x, double* r) {
 bool TrimProblem::jacobian(const double* x, double* jacobian_row_major) {
   const int n = unknownCount();
   if (forward_differences_) return forwardJacobian(x, jacobian_row_major);
-  std::vector<double> xp(x, x + n), xm(x, x + n);
+  // The runs in the sequential order: x + h_j e_j, then x - h_j e_j, column by column (one-sided,
+  // both ends at derivative accuracy, where a step would leave the bounds).
+  std::vector<OperatingPoint> points;
+  std::vector<double> width;  // hi - lo of each column
+  bool narrow = false;
+  std::vector<double> xs(x, x + n);
   for (int j = 0; j < n; ++j) {
     const TrimUnknown u = unknowns_[static_cast<std::size_t>(j)];
     const double scale = trimUnknownScale(u);
@@ -156,20 +199,26 @@ bool TrimProblem::jacobian(const double* x, double* jacobian_row_major) {
     double lo = x[j] - h, hi = x[j] + h;
     if (lo < b.lower / scale) lo = x[j];   // forward difference at the lower bound
     if (hi > b.upper / scale) hi = x[j];   // backward difference at the upper bound
-    if (lo == hi) return false;            // interval narrower than a step (IsValid prevents it)
-    xp[static_cast<std::size_t>(j)] = hi;
-    xm[static_cast<std::size_t>(j)] = lo;
-    const TrimEvaluationRecord ep = run(pointAt(xp.data()), TrimEvaluationPurpose::kDerivative);
-    if (!ep.result.ok) return false;
-    const TrimEvaluationRecord em = run(pointAt(xm.data()), TrimEvaluationPurpose::kDerivative);
-    if (!em.result.ok) return false;
-    const auto rp = scaledResidual(reference_, ep.residual);
-    const auto rm = scaledResidual(reference_, em.residual);
+    if (lo == hi) {                        // interval narrower than a step (IsValid prevents it)
+      narrow = true;
+      break;
+    }
+    xs[static_cast<std::size_t>(j)] = hi;
+    points.push_back(pointAt(xs.data()));
+    xs[static_cast<std::size_t>(j)] = lo;
+    points.push_back(pointAt(xs.data()));
+    xs[static_cast<std::size_t>(j)] = x[j];
+    width.push_back(hi - lo);
+  }
+  std::vector<std::array<double, kTrimResidualCount>> r;
+  if (!runDerivatives(points, &r) || narrow) return false;
+  for (int j = 0; j < n; ++j) {
+    const auto& rp = r[2 * static_cast<std::size_t>(j)];
+    const auto& rm = r[2 * static_cast<std::size_t>(j) + 1];
     for (int i = 0; i < kTrimResidualCount; ++i)
       jacobian_row_major[i * n + j] =
-          (rp[static_cast<std::size_t>(i)] - rm[static_cast<std::size_t>(i)]) / (hi - lo);
-    xp[static_cast<std::size_t>(j)] = x[j];
-    xm[static_cast<std::size_t>(j)] = x[j];
+          (rp[static_cast<std::size_t>(i)] - rm[static_cast<std::size_t>(i)]) /
+          width[static_cast<std::size_t>(j)];
   }
   return true;
 }
@@ -178,6 +227,9 @@ bool TrimProblem::forwardJacobian(const double* x, double* jacobian_row_major) {
   const int n = unknownCount();
   std::array<double, kTrimResidualCount> r0{};
   if (!residual(x, r0.data())) return false;
+  std::vector<OperatingPoint> points;
+  std::vector<double> step;  // to - x of each column
+  bool narrow = false;
   std::vector<double> xs(x, x + n);
   for (int j = 0; j < n; ++j) {
     const TrimUnknown u = unknowns_[static_cast<std::size_t>(j)];
@@ -186,16 +238,23 @@ bool TrimProblem::forwardJacobian(const double* x, double* jacobian_row_major) {
     const TrimBounds& b = bounds_[static_cast<std::size_t>(trimIndex(u))];
     double to = x[j] + h;
     if (to > b.upper / scale) to = x[j] - h;  // backward at the upper bound
-    if (to < b.lower / scale || to == x[j]) return false;  // narrower than a step (IsValid)
+    if (to < b.lower / scale || to == x[j]) {  // narrower than a step (IsValid)
+      narrow = true;
+      break;
+    }
     xs[static_cast<std::size_t>(j)] = to;
-    const TrimEvaluationRecord e = run(pointAt(xs.data()), TrimEvaluationPurpose::kDerivative);
-    if (!e.result.ok) return false;
-    const auto r = scaledResidual(reference_, e.residual);
+    points.push_back(pointAt(xs.data()));
+    xs[static_cast<std::size_t>(j)] = x[j];
+    step.push_back(to - x[j]);
+  }
+  std::vector<std::array<double, kTrimResidualCount>> r;
+  if (!runDerivatives(points, &r) || narrow) return false;
+  for (int j = 0; j < n; ++j)
     for (int i = 0; i < kTrimResidualCount; ++i)
       jacobian_row_major[i * n + j] =
-          (r[static_cast<std::size_t>(i)] - r0[static_cast<std::size_t>(i)]) / (to - x[j]);
-    xs[static_cast<std::size_t>(j)] = x[j];
-  }
+          (r[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] -
+           r0[static_cast<std::size_t>(i)]) /
+          step[static_cast<std::size_t>(j)];
   return true;
 }
 

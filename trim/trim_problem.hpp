@@ -129,6 +129,13 @@ class TrimProblem {
   /// The residual record of exactly this point, or nullptr.
   const TrimEvaluationRecord* findResidual(const OperatingPoint& point) const;
 
+  /// Threads for the runs of one Jacobian (TrimOptions::jacobian_threads), >= 1. The runs are
+  /// independent (a MeanLoadsFunction keeps no state between calls) and recorded in the order the
+  /// sequential loop makes them, up to and including the first that fails, so the log and the
+  /// Jacobian are the same for any count; only the work after a failed run differs (it is run and
+  /// dropped). `loads` must then be callable from several threads at once.
+  void setJacobianThreads(int threads);
+
   /// Tag the following evaluations with this solver iteration.
   void setIteration(int iteration) { iteration_ = iteration; }
   const std::vector<TrimEvaluationRecord>& log() const { return log_; }
@@ -138,6 +145,12 @@ class TrimProblem {
 
  private:
   const TrimEvaluationRecord& run(const OperatingPoint& point, TrimEvaluationPurpose purpose);
+  const TrimEvaluationRecord& record(const OperatingPoint& point, TrimEvaluationPurpose purpose,
+                                     PeriodicEvaluation result);
+  /// The derivative runs at `points`, recorded in order up to the first failure; their scaled
+  /// residuals in *r. False when one failed.
+  bool runDerivatives(const std::vector<OperatingPoint>& points,
+                      std::vector<std::array<double, kTrimResidualCount>>* r);
   bool forwardJacobian(const double* x, double* jacobian_row_major);
 
   TrimReference reference_;
@@ -147,6 +160,7 @@ class TrimProblem {
   std::array<double, kTrimUnknownCount> steps_;
   std::array<TrimBounds, kTrimUnknownCount> bounds_;
   bool forward_differences_ = false;
+  int jacobian_threads_ = 1;
   std::vector<TrimEvaluationRecord> log_;
   int iteration_ = 0;
   int failed_ = 0;

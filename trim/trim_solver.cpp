@@ -175,6 +175,7 @@ TrimSummary solveTrim(const TrimReference& reference, const MeanLoadsFunction& l
 
   TrimProblem problem(reference, loads, options.initial, options.unknowns, options.fd_steps,
                       options.bounds, options.start_only);
+  problem.setJacobianThreads(options.jacobian_threads);
   std::vector<double> x = problem.solverValues(options.initial);
   const int n = problem.unknownCount();
 

@@ -145,7 +145,11 @@ class Curve {
     if (states.empty()) return jacobian(y, H, step, DH, why);
     sys_.setParameter(parameter_, y[N_] * scale_);
     Eigen::MatrixXd J;
-    if (!sys_.partialJacobian(y.head(N_), H, step, states, &J, why)) return false;
+    // Its columns on this thread: it runs beside Arnoldi (completeLeading), which has the other.
+    sys_.setJacobianThreads(1);
+    const bool partial_ok = sys_.partialJacobian(y.head(N_), H, step, states, &J, why);
+    sys_.setJacobianThreads(threads_);
+    if (!partial_ok) return false;
     DH->resize(N_, N_ + 1);
     DH->leftCols(N_) = J;
     // lambda's column as ShootingSystem's parameter columns: a step of step * max(1, |y_N|).

@@ -170,11 +170,19 @@ bool ShootingSystem::partialJacobian(const Eigen::VectorXd& z, const Eigen::Vect
   const Eigen::Index N = unknownCount();
   J->setZero(N, N);
   for (int i = 0; i < n_; ++i) (*J)(i, i) = -1.0;
-  Run run = own();
-  bool ok = true;
+  // The differenced columns in the serial order: the listed states, then the parameters.
+  std::vector<Eigen::Index> cols;
   for (int i : states)
-    if (ok && i >= 0 && i < n_) ok = column(run, z, R, i, step, false, J, why);
-  for (Eigen::Index j = n_; j < N && ok; ++j) ok = column(run, z, R, j, step, false, J, why);
+    if (i >= 0 && i < n_) cols.push_back(i);
+  for (Eigen::Index j = n_; j < N; ++j) cols.push_back(j);
+  bool ok = true, cloned = false;
+  if (threads_ > 1) ok = parallelJacobian(z, R, step, false, cols, J, why, {}, nullptr, &cloned);
+  if (!cloned) {
+    Run run = own();
+    ok = true;
+    for (std::size_t k = 0; k < cols.size() && ok; ++k)
+      ok = column(run, z, R, cols[k], step, false, J, why);
+  }
   unpack(z, x_.data());
   x_T_ = x_T;
   g_ = g;
@@ -182,11 +190,12 @@ bool ShootingSystem::partialJacobian(const Eigen::VectorXd& z, const Eigen::Vect
 }
 
 bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R,
-                                      double step, bool central, Eigen::MatrixXd* J,
+                                      double step, bool central,
+                                      const std::vector<Eigen::Index>& cols, Eigen::MatrixXd* J,
                                       std::string* why, const std::vector<int>& extra,
                                       Eigen::MatrixXd* J_extra, bool* cloned) {
-  const Eigen::Index N = unknownCount();
-  const int columns = static_cast<int>(N) + (J_extra ? static_cast<int>(extra.size()) : 0);
+  const int N = static_cast<int>(cols.size());  // the columns of J, then the extra ones
+  const int columns = N + (J_extra ? static_cast<int>(extra.size()) : 0);
   const int workers = std::min(threads_, columns);
   // Each worker: a copy of the map (same grid), the parameters and its own buffers.
   struct Worker {
@@ -205,8 +214,7 @@ bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::Vec
     w.g.assign(g_.size(), 0.0);
   }
   *cloned = true;
-  J->resize(N, N);
-  if (J_extra) J_extra->resize(N, static_cast<Eigen::Index>(extra.size()));
+  if (J_extra) J_extra->resize(unknownCount(), static_cast<Eigen::Index>(extra.size()));
   // Per column: success, its reason, the maps it used, an exception it threw. Every column writes
   // only its own column of J or J_extra.
   struct Outcome {
@@ -224,7 +232,8 @@ bool ShootingSystem::parallelJacobian(const Eigen::VectorXd& z, const Eigen::Vec
       Run run{*w.map, w.p, w.x, w.x_T, w.g, maps};
       w.p = p_;  // the parameter columns move one entry: start every column from the same values
       try {
-        o.ok = k < N ? column(run, z, R, k, step, central, J, &o.why)
+        o.ok = k < N ? column(run, z, R, cols[static_cast<std::size_t>(k)], step, central, J,
+                              &o.why)
                      : parameterColumn(run, z, R, extra[static_cast<std::size_t>(k - N)], k - N,
                                        step, central, J_extra, &o.why);
       } catch (...) {
@@ -257,11 +266,14 @@ bool ShootingSystem::jacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R
   const Eigen::Index N = unknownCount();
   const bool want_extra = !extra.empty() && J_extra;
   bool ok = true, cloned = false;
-  if (threads_ > 1)
-    ok = parallelJacobian(z, R, step, central, J, why, extra, want_extra ? J_extra : nullptr,
-                          &cloned);
+  J->resize(N, N);
+  if (threads_ > 1) {
+    std::vector<Eigen::Index> cols(static_cast<std::size_t>(N));
+    for (Eigen::Index j = 0; j < N; ++j) cols[static_cast<std::size_t>(j)] = j;
+    ok = parallelJacobian(z, R, step, central, cols, J, why, extra,
+                          want_extra ? J_extra : nullptr, &cloned);
+  }
   if (!cloned) {
-    J->resize(N, N);
     Run run = own();
     ok = true;
     for (Eigen::Index j = 0; j < N && ok; ++j) ok = column(run, z, R, j, step, central, J, why);

@@ -120,7 +120,8 @@ class ShootingSystem {
   /// Every parameter; the free ones as last unpacked.
   const std::vector<double>& parameters() const { return p_; }
   void setParameter(int j, double value) { p_[static_cast<std::size_t>(j)] = value; }
-  /// Threads for the columns of jacobian() (ShootingOptions::jacobian_threads), >= 1.
+  /// Threads for the columns of jacobian() and partialJacobian()
+  /// (ShootingOptions::jacobian_threads), >= 1.
   void setJacobianThreads(int threads) { threads_ = threads < 1 ? 1 : threads; }
 
   /// z = [x / s_x; p_free / s_p].
@@ -162,11 +163,12 @@ class ShootingSystem {
   bool evaluate(Run& run, const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why) const;
   bool evaluate(const Eigen::VectorXd& z, Eigen::VectorXd* R, std::string* why);
   void unpackInto(const Eigen::VectorXd& z, double* x, std::vector<double>* p) const;
-  /// The columns of jacobian() on threads_ copies of the map; false (with *cloned = false) when
-  /// the map has no copies.
+  /// The columns `cols` of J (and the `extra` ones of *J_extra) on threads_ copies of the map;
+  /// false (with *cloned = false) when the map has no copies.
   bool parallelJacobian(const Eigen::VectorXd& z, const Eigen::VectorXd& R, double step,
-                        bool central, Eigen::MatrixXd* J, std::string* why,
-                        const std::vector<int>& extra, Eigen::MatrixXd* J_extra, bool* cloned);
+                        bool central, const std::vector<Eigen::Index>& cols, Eigen::MatrixXd* J,
+                        std::string* why, const std::vector<int>& extra,
+                        Eigen::MatrixXd* J_extra, bool* cloned);
 
   PeriodMap& map_;
   int n_;

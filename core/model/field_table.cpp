@@ -524,7 +524,7 @@ std::vector<FieldSpec> makeTable() {
 
       // ---- Command line only --------------------------------------------------------------------
       // 1024 threads: far beyond any machine this runs on; each owns a workspace.
-      integer("jobs", R::closed(1, 1024), "1", "worker threads", "run/aeromap/optimize -j"),
+      integer("jobs", R::closed(1, 1024), "1", "worker threads", "run/aeromap/optimize/trim -j"),
   };
 }
 

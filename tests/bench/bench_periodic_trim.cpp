@@ -7,6 +7,8 @@
 //   BM_PeriodicTrimAllMultipliers : the same with all 106 multipliers (full monodromy, what
 //                                   `ornithopter stability` computes).
 //   BM_FloquetLeadingAtOrbit      : the Floquet step alone at the converged orbit (Arnoldi).
+//   BM_PeriodicTrimEfw12HzTwoThreads : BM_PeriodicTrimEfw12Hz with the Jacobians' runs on 2
+//                                   threads (TrimOptions::jacobian_threads; the same bits).
 // Counters: period maps, Newton iterations, right-hand sides, max |mu|, converged (0/1).
 #include <benchmark/benchmark.h>
 
@@ -36,10 +38,11 @@ TrimOptions periodicOptions(const VehicleModel& /*v*/, int multipliers) {
   return o;
 }
 
-void periodicTrim(benchmark::State& state, int multipliers) {
+void periodicTrim(benchmark::State& state, int multipliers, int threads = 1) {
   const VehicleModel v = magpie();
   const FlightCoreModel model(v);
-  const TrimOptions o = periodicOptions(v, multipliers);
+  TrimOptions o = periodicOptions(v, multipliers);
+  o.jacobian_threads = threads;
   PeriodicTrimSummary s;
   for (auto _ : state) {
     s = solvePeriodicTrim(model, o);
@@ -54,7 +57,9 @@ void periodicTrim(benchmark::State& state, int multipliers) {
 
 void BM_PeriodicTrimEfw12Hz(benchmark::State& s) { periodicTrim(s, 8); }
 void BM_PeriodicTrimAllMultipliers(benchmark::State& s) { periodicTrim(s, 0); }
+void BM_PeriodicTrimEfw12HzTwoThreads(benchmark::State& s) { periodicTrim(s, 8, 2); }
 BENCHMARK(BM_PeriodicTrimEfw12Hz)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PeriodicTrimEfw12HzTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_PeriodicTrimAllMultipliers)->Unit(benchmark::kMillisecond);
 
 void BM_FloquetLeadingAtOrbit(benchmark::State& state) {

@@ -4,6 +4,8 @@
 //                    committed vehicle this solve ends not_converged on the tail bound (no
 //                    equilibrium inside the bounds), the costliest kind of solve.
 //   BM_TrimEfw6Hz  : the same at 6 Hz, where the vehicle trims (a converging solve).
+//   BM_TrimEfw12HzTwoThreads : BM_TrimEfw12Hz with each Jacobian's runs on 2 threads
+//                    (TrimOptions::jacobian_threads, `trim -j 2`; the same result).
 // Counters: periodic runs (residual + derivative), solver iterations, converged (0/1).
 #include <benchmark/benchmark.h>
 
@@ -16,12 +18,13 @@ namespace {
 
 using namespace orni;
 
-void trimEfw(benchmark::State& state, double freq_hz) {
+void trimEfw(benchmark::State& state, double freq_hz, int threads = 1) {
   const VehicleDefinition file =
       studies::loadVehicleFile(std::string(ORNI_SOURCE_DIR) + "/studies/vehicles/efw_magpie.toml");
   const FlightCoreModel model(file.model);
   TrimOptions o = defaultTrimOptions(file.design_point);
   o.initial.freq_hz = freq_hz;
+  o.jacobian_threads = threads;
   TrimSummary s;
   for (auto _ : state) {
     s = solveTrim(model, o);
@@ -35,7 +38,9 @@ void trimEfw(benchmark::State& state, double freq_hz) {
 
 void BM_TrimEfw12Hz(benchmark::State& s) { trimEfw(s, 12.0); }
 void BM_TrimEfw6Hz(benchmark::State& s) { trimEfw(s, 6.0); }
+void BM_TrimEfw12HzTwoThreads(benchmark::State& s) { trimEfw(s, 12.0, 2); }
 BENCHMARK(BM_TrimEfw12Hz)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TrimEfw12HzTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_TrimEfw6Hz)->Unit(benchmark::kMillisecond);
 
 }  // namespace

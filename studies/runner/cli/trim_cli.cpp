@@ -21,6 +21,7 @@ struct TrimArgs {
   std::string freq;
   std::optional<std::string> theta, speed, tail;
   std::string method = "two_stage";
+  std::optional<std::string> jobs;
 };
 
 int runTrim(const TrimArgs& a) {
@@ -51,7 +52,7 @@ int runTrim(const TrimArgs& a) {
   if (a.method == "periodic") usePeriodicMethod(&o);
   std::string why;
   if (!o.IsValid(&why)) throw CliError("command line: trim options: " + why);
-  return runStudyLocked(study, outputFolder(a.out, study, false), 1);
+  return runStudyLocked(study, outputFolder(a.out, study, false), jobsOption(a.jobs));
 }
 
 }  // namespace
@@ -81,6 +82,9 @@ Subcommand addTrimSubcommand(CLI::App& app) {
                    "two_stage (default: Eq. 4, then level settled free flight) or periodic (the "
                    "periodic orbit of free flight by shooting, with its Floquet multipliers)")
       ->check(CLI::IsMember({"two_stage", "periodic"}));
+  addFieldOption(trim, "-j,--jobs", "jobs", a->jobs,
+                 "Threads for the runs of each Jacobian (Eq. 4's finite differences, the periodic "
+                 "orbit's columns); the results are the same for any count");
   return {trim, [a] { return runTrim(*a); }, false};
 }
 

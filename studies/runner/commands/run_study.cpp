@@ -1,5 +1,6 @@
 #include "studies/runner/commands/run_study.hpp"
 
+#include <algorithm>
 #include <optional>
 #include <stdexcept>
 #include <system_error>
@@ -58,7 +59,11 @@ int runStudyKind(const Study& study, const fs::path& out_dir, int jobs) {
     case StudyKind::kAeromap:
       return runAeromapStudy(study, out_dir, withThreads(AeromapRunOptions{}));
     case StudyKind::kModes: return runModesStudy(study, out_dir);
-    case StudyKind::kTrim: return runTrimStudy(study, out_dir);
+    case StudyKind::kTrim: {  // the Jacobians' runs on the run's threads (same results)
+      Study threaded = study;
+      threaded.trim.jacobian_threads = std::min(jobs, 64);
+      return runTrimStudy(threaded, out_dir);
+    }
     case StudyKind::kCalibrate: return runCalibrateStudy(study, out_dir);
     case StudyKind::kSweep: return runSweepStudy(study, out_dir, withThreads(SweepRunOptions{}));
     case StudyKind::kContinuation: return runContinuationStudy(study, out_dir, jobs);

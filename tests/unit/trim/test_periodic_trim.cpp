@@ -161,6 +161,31 @@ TEST_F(PeriodicTrimEfw, ConvergesToALevelPeriodicOrbitThatIsStable) {
 // the grid (wing mode 13: 0.0066+0.0716i / -0.0032+0.0708i / -0.0045+0.0705i at 1e-6 / 1e-7 / 1e-8).
 // So the 1e-4 holds for the multipliers that decide the stability margin, and a wing mode's
 // multiplier is good to 0.01 in modulus only (docs/theory.md 10.4).
+// The periodic trim on two threads (TrimOptions::jacobian_threads: the Eq. (4) start's
+// forward-difference runs and the orbit's Newton Jacobian columns, each on a copy of the map):
+// the same bits as on one thread.
+TEST_F(PeriodicTrimEfw, TwoThreadsGiveTheSameBits) {
+  const PeriodicTrimSummary& one = *trim_;
+  ASSERT_EQ(one.status, TrimStatus::kOk) << one.message;
+  TrimOptions o = periodicOptions(*vehicle_);
+  o.jacobian_threads = 2;
+  const PeriodicTrimSummary two = solvePeriodicTrim(*model_, o);
+  ASSERT_EQ(two.status, TrimStatus::kOk) << two.message;
+  EXPECT_EQ(two.stage1.evaluations, one.stage1.evaluations);
+  EXPECT_EQ(two.stage1.solution.theta_rad, one.stage1.solution.theta_rad);
+  EXPECT_EQ(two.stage1.solution.speed_mps, one.stage1.solution.speed_mps);
+  EXPECT_EQ(two.shooting.period_maps, one.shooting.period_maps);
+  EXPECT_EQ(two.shooting.iterations, one.shooting.iterations);
+  EXPECT_EQ(two.orbit_start, one.orbit_start);
+  EXPECT_EQ(two.solution.theta_rad, one.solution.theta_rad);
+  EXPECT_EQ(two.solution.speed_mps, one.solution.speed_mps);
+  EXPECT_EQ(two.solution.tail_angle_rad, one.solution.tail_angle_rad);
+  ASSERT_TRUE(two.floquet_valid && one.floquet_valid);
+  ASSERT_EQ(two.floquet.multipliers.size(), one.floquet.multipliers.size());
+  for (std::size_t i = 0; i < one.floquet.multipliers.size(); ++i)
+    EXPECT_EQ(two.floquet.multipliers[i].mu, one.floquet.multipliers[i].mu) << i;
+}
+
 TEST_F(PeriodicTrimEfw, DefaultTolerancesAgreeWithATightReference) {
   const PeriodicTrimSummary& s = *trim_;
   ASSERT_EQ(s.status, TrimStatus::kOk) << s.message;

@@ -198,6 +198,65 @@ TEST(TrimAnalytic, StartOnlySolveMakesNoJacobianAtTheConvergedPoint) {
   EXPECT_EQ(start.evaluations, start.residual_evaluations + start.derivative_evaluations);
 }
 
+// Two solves record the same evaluations: every point, purpose, outcome and residual, in order.
+void expectSameSolve(const TrimSummary& a, const TrimSummary& b, const std::string& what) {
+  SCOPED_TRACE(what);
+  EXPECT_EQ(a.status, b.status);
+  EXPECT_EQ(a.message, b.message);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(a.solution.theta_rad, b.solution.theta_rad);
+  EXPECT_EQ(a.solution.speed_mps, b.solution.speed_mps);
+  EXPECT_EQ(a.solution.tail_angle_rad, b.solution.tail_angle_rad);
+  EXPECT_EQ(a.failed_evaluations, b.failed_evaluations);
+  ASSERT_EQ(a.evaluation_log.size(), b.evaluation_log.size());
+  for (std::size_t i = 0; i < a.evaluation_log.size(); ++i) {
+    const TrimEvaluationRecord &x = a.evaluation_log[i], &y = b.evaluation_log[i];
+    EXPECT_EQ(x.index, y.index);
+    EXPECT_EQ(x.iteration, y.iteration);
+    EXPECT_EQ(x.purpose, y.purpose);
+    EXPECT_EQ(x.point.theta_rad, y.point.theta_rad);
+    EXPECT_EQ(x.point.speed_mps, y.point.speed_mps);
+    EXPECT_EQ(x.point.tail_angle_rad, y.point.tail_angle_rad);
+    EXPECT_EQ(x.result.ok, y.result.ok);
+    EXPECT_EQ(x.residual.FV_N, y.residual.FV_N);
+    EXPECT_EQ(x.residual.FH_N, y.residual.FH_N);
+    EXPECT_EQ(x.residual.M_Nm, y.residual.M_Nm);
+  }
+}
+
+// The runs of one Jacobian on several threads (TrimOptions::jacobian_threads): the same solve and
+// the same log as on one thread, with central and with forward differences, and when a derivative
+// run fails (the log stops at the first failure, as the sequential loop does; the runs after it
+// are made and dropped).
+TEST(TrimAnalytic, JacobianThreadsGiveTheSameSolveAndLog) {
+  for (bool forward : {false, true}) {
+    TrimOptions o = analyticOptions();
+    o.start_only = forward;
+    const TrimSummary one = solveTrim(kRef, analyticLoads(), o);
+    ASSERT_TRUE(one.converged) << one.message;
+    for (int threads : {2, 3, 7}) {
+      o.jacobian_threads = threads;
+      expectSameSolve(one, solveTrim(kRef, analyticLoads(), o),
+                      (forward ? "forward, " : "central, ") + std::to_string(threads) + " threads");
+    }
+  }
+  // Loads that fail below theta 2.99 deg: the first Jacobian's second run (theta - step) fails.
+  const MeanLoadsFunction failing = [](const OperatingPoint& p, TrimEvaluationPurpose) {
+    PeriodicEvaluation e;
+    e.ok = p.theta_rad > 2.99 * kDegToRad;
+    e.message = e.ok ? "" : "diverged (test)";
+    e.mean = analyticMeans(p);
+    return e;
+  };
+  TrimOptions o = analyticOptions();
+  const TrimSummary one = solveTrim(kRef, failing, o);
+  ASSERT_GT(one.failed_evaluations, 0);
+  EXPECT_EQ(one.evaluation_log[2].purpose, TrimEvaluationPurpose::kDerivative);
+  EXPECT_FALSE(one.evaluation_log[2].result.ok);  // residual, theta + step, theta - step
+  o.jacobian_threads = 2;
+  expectSameSolve(one, solveTrim(kRef, failing, o), "a failed derivative run, 2 threads");
+}
+
 TEST(TrimAnalytic, SolvesToTheKnownEquilibrium) {
   int calls = 0;
   const TrimSummary s = solveTrim(kRef, analyticLoads(&calls), analyticOptions());
