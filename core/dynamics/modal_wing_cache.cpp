@@ -32,6 +32,9 @@ std::string modalWingKey(const structure::WingStructure& wing_structure) {
   k.push_back(static_cast<char>('0' + static_cast<int>(w.fe.p3_joint)));
   k.push_back(w.fe.root_edge_pinned ? 'r' : '-');
   k.push_back(w.fe.nonlinear ? 'N' : 'L');
+  const std::size_t shapes = w.fe.static_shapes_pa.size();
+  appendBytes(&k, &shapes, sizeof shapes);
+  for (double p : w.fe.static_shapes_pa) appendDouble(&k, p);
   k += w.skin.material + '\0';
   for (const WingMember& m : w.members) {
     k += m.name + '\0' + m.material + '\0';

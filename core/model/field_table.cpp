@@ -74,6 +74,11 @@ constexpr FieldSpec pair(std::string_view key, std::string_view unit, double si,
                          std::string_view also = {}) {
   return FieldSpec{key, unit, si, T::kPair, range, {}, def, meaning, {}, also};
 }
+constexpr FieldSpec numbers(std::string_view key, std::string_view unit, double si, R range,
+                            std::string_view def, std::string_view meaning,
+                            std::string_view also = {}) {
+  return FieldSpec{key, unit, si, T::kNumberList, range, {}, def, meaning, {}, also};
+}
 constexpr FieldSpec grid(std::string_view key, std::string_view unit, double si, R range,
                          std::string_view def, std::string_view meaning,
                          std::string_view cli = {}) {
@@ -171,6 +176,12 @@ std::vector<FieldSpec> makeTable() {
              "spin softening and geometric stiffening of the inertial loads"),
       boolean("wing.fe.nonlinear", "false",
               "geometrically nonlinear wing: skin membrane stretching and member stretch"),
+      // 1000 Pa: 20 times the rigid magpie's lift per area; at most 8 (each a full nonlinear
+      // static solve at the build, 10-30 s on the magpie's 5 mm mesh).
+      numbers("wing.fe.static_shapes_pa", "Pa", 1.0, R::openClosed(0.0, 1000.0), "[]",
+              "uniform lift pressures whose full nonlinear static shapes join the nonlinear "
+              "wing's modes (Rayleigh-Ritz; docs/theory.md 4.7); [] = the modes alone",
+              "at most 8; needs wing.fe.nonlinear = true"),
 
       // ---- [materials.NAME] ---------------------------------------------------------------------
       table("materials", "required", "[materials.NAME]: isotropic materials, any names"),
@@ -574,6 +585,7 @@ const char* toString(FieldType type) {
     case FieldType::kString: return "string";
     case FieldType::kChoice: return "choice";
     case FieldType::kPair: return "pair";
+    case FieldType::kNumberList: return "number list";
     case FieldType::kGrid: return "grid";
     case FieldType::kStringList: return "string list";
     case FieldType::kTable: return "table";
@@ -615,6 +627,7 @@ std::string FieldSpec::expected() const {
     case FieldType::kString: return "a non-empty string";
     case FieldType::kChoice: return "one of " + quotedChoices();
     case FieldType::kPair: return "an array of 2 numbers (each " + range.describe() + ")";
+    case FieldType::kNumberList: return "an array of numbers (each " + range.describe() + ")";
     case FieldType::kGrid:
       return "a grid \"A:B:N\", an array of numbers or a number (each " + range.describe() + ")";
     case FieldType::kStringList: return "an array of strings";

@@ -30,6 +30,7 @@ enum class FieldType {
   kString,      ///< a string (a name, a path)
   kChoice,      ///< one of the strings listed in `choices`
   kPair,        ///< an array of two numbers, each inside `range`
+  kNumberList,  ///< an array of numbers (possibly empty), each inside `range`
   kGrid,        ///< a grid axis: "A:B:N", an array of numbers or one number, each inside `range`
   kStringList,  ///< an array of strings
   kTable,       ///< a table or an array of tables (its keys have their own entries)

@@ -71,6 +71,9 @@ enum class InertialStiffness {
   kNone,           ///< neither: a linear flexible body without I9 (sensitivity test of docs/theory.md 4.6)
 };
 
+/// At most this many wing.fe.static_shapes_pa (each a full nonlinear static solve at the build).
+inline constexpr int kMaxStaticShapesOfAWing = 8;
+
 /// Finite-element and modal settings of the flexible wing (docs/theory.md 2.5, 2.6, 3.4, 3.5, 4.6).
 struct WingFeSettings {
   double element_size_m = 0.005;  ///< target element edge h, <= semispan
@@ -92,6 +95,9 @@ struct WingFeSettings {
   /// (docs/speed.md: the condensed membrane's P x P products). Its free flights need rel_tol 1e-5
   /// (kNonlinearWingFreeFlightRelTol).
   bool nonlinear = false;
+  /// Uniform lift pressures (Pa) whose full nonlinear static shapes join the modal basis of the
+  /// nonlinear wing (structure/static_shapes.hpp, docs/theory.md 4.7); empty = the modes alone.
+  std::vector<double> static_shapes_pa;
 };
 
 /// Geometry and structure of the right wing; the left wing is its mirror image.

@@ -188,6 +188,18 @@ void checkWing(Checker& c, const VehicleModel& v) {
   c.integer("wing.fe.modes", fe.max_modes);
   c.number("wing.fe.cutoff_hz", fe.cutoff_hz);
   c.number("wing.fe.damping_ratio", fe.damping_ratio);
+  const FieldSpec& shapes = field("wing.fe.static_shapes_pa");
+  for (double p : fe.static_shapes_pa)
+    if (!shapes.siRange().contains(p)) c.add("wing.fe.static_shapes_pa", shapes.expected(),
+                                             displayNumber(p));
+  if (fe.static_shapes_pa.size() > static_cast<std::size_t>(kMaxStaticShapesOfAWing))
+    c.add("wing.fe.static_shapes_pa",
+          "at most " + std::to_string(kMaxStaticShapesOfAWing) + " pressures",
+          std::to_string(fe.static_shapes_pa.size()) + " pressures");
+  if (!fe.static_shapes_pa.empty() && !fe.nonlinear)
+    c.add("wing.fe.static_shapes_pa",
+          "[] on the linear wing (static shapes need wing.fe.nonlinear = true)",
+          std::to_string(fe.static_shapes_pa.size()) + " pressures");
 }
 
 void checkMaterials(Checker& c, const VehicleModel& v) {

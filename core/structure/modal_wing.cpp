@@ -3,12 +3,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <string>
 #include <stdexcept>
 
 #include "core/structure/craig_bampton.hpp"
 #include "core/structure/dof_partition.hpp"
 #include "core/structure/product_blocking.hpp"
 #include "core/structure/skin_pretension.hpp"
+#include "core/structure/static_shapes.hpp"
+#include "core/structure/von_karman.hpp"
 #include "core/model/invalid_model_error.hpp"
 
 namespace orni::structure {
@@ -66,6 +70,29 @@ bool ModalWingOptions::IsValid(std::string* why) const {
     if (why != nullptr) *why = "membrane_rank_tolerance: expected in [0, 1)";
     return false;
   }
+  if (!static_shape_pressures_pa.empty()) {
+    if (static_cast<int>(static_shape_pressures_pa.size()) > kMaxStaticShapes) {
+      if (why != nullptr)
+        *why = "static_shape_pressures_pa: at most " + std::to_string(kMaxStaticShapes) +
+               " pressures";
+      return false;
+    }
+    for (double p : static_shape_pressures_pa)
+      if (!(p > 0.0 && p <= kMaxStaticShapePressure_Pa)) {
+        if (why != nullptr) *why = "static_shape_pressures_pa: each expected in (0, 1000] Pa";
+        return false;
+      }
+    if (!nonlinear) {
+      if (why != nullptr)
+        *why = "static_shape_pressures_pa: nonlinear static shapes need the nonlinear wing";
+      return false;
+    }
+    if (!free_boundary_dofs.empty()) {
+      if (why != nullptr)
+        *why = "static_shape_pressures_pa: only with the fixed-interface basis";
+      return false;
+    }
+  }
   return true;
 }
 
@@ -84,6 +111,7 @@ ModalWingOptions modalWingOptionsOf(const WingFeSettings& fe) {
   options.selection.cutoff_hz = fe.cutoff_hz;
   options.damping_ratio = fe.damping_ratio;
   options.nonlinear = fe.nonlinear;
+  options.static_shape_pressures_pa = fe.static_shapes_pa;
   return options;
 }
 
@@ -127,8 +155,28 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
                             " Hz); raise wing.fe.cutoff_hz, or set it 0 for no cut-off");
   w.mesh = mesh;
   w.frequencies_hz = freq_all.head(m);
-  w.damping_ratios.resize(m);
-  for (int k = 0; k < m; ++k) {
+  w.mode_shapes = basis.shapes.leftCols(m);
+  w.effective_mass = table_all;
+  for (Eigen::VectorXd* v : {&w.effective_mass.flap_fraction, &w.effective_mass.heave_fraction,
+                             &w.effective_mass.flap_cumulative,
+                             &w.effective_mass.heave_cumulative})
+    v->conservativeResize(m);
+  std::optional<VonKarmanTerms> terms;
+  if (options.nonlinear) terms.emplace(wing_structure, mesh);
+  if (!options.static_shape_pressures_pa.empty()) {
+    // The modes and the nonlinear static shapes, replaced by their Rayleigh-Ritz vectors
+    // (static_shapes.hpp): an ordinary modal basis of m + k vectors for everything below.
+    const Eigen::MatrixXd extra = nonlinearStaticShapes(fe.stiffness, *terms, part, mesh,
+                                                        options.static_shape_pressures_pa);
+    const RitzBasis ritz = rayleighRitzBasis(fe.stiffness, fe.mass, w.mode_shapes, extra);
+    w.mode_shapes = ritz.shapes;
+    w.frequencies_hz = ritz.omega2.cwiseMax(0.0).cwiseSqrt() / kTwoPi;
+    w.static_shape_count = static_cast<int>(ritz.shapes.cols()) - m;
+    w.effective_mass = effectiveMassTable(fe.mass, w.mode_shapes, mesh.nodes_W_m, p2, Vec3::UnitX());
+  }
+  const int kept = static_cast<int>(w.mode_shapes.cols());
+  w.damping_ratios.resize(kept);
+  for (int k = 0; k < kept; ++k) {
     const double f = w.frequencies_hz(k);
     w.damping_ratios(k) = options.damping_schedule == ModalDampingSchedule::kConstant
                               ? options.damping_ratio
@@ -136,12 +184,6 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
                           : f < 1000.0 ? 0.1
                                        : 1.0;
   }
-  w.mode_shapes = basis.shapes.leftCols(m);
-  w.effective_mass = table_all;
-  for (Eigen::VectorXd* v : {&w.effective_mass.flap_fraction, &w.effective_mass.heave_fraction,
-                             &w.effective_mass.flap_cumulative,
-                             &w.effective_mass.heave_cumulative})
-    v->conservativeResize(m);
 
   const int n = mesh.nodeCount();
   w.phi_W.resize(static_cast<std::size_t>(n));
@@ -164,7 +206,7 @@ ModalWing buildModalWing(const WingStructure& wing_structure, const WingMesh& me
     condensation.keep_relaxation = options.keep_membrane_relaxation;
     condensation.mode_amplitude = w.stiffnessDiagonal().cwiseInverse();
     condensation.rank_tolerance = options.membrane_rank_tolerance;
-    w.membrane = modalMembraneStiffness(VonKarmanTerms(wing_structure, mesh), fe.stiffness, part,
+    w.membrane = modalMembraneStiffness(*terms, fe.stiffness, part,
                                         mesh.nodes_W_m, w.mode_shapes, condensation);
   }
   w.member_mass_kg = fe.member_mass_kg;

@@ -24,6 +24,10 @@ enum class ModalDampingSchedule {
   kAdamsDefault,  ///< ADAMS CRATIO default: 1 % below 100 Hz, 10 % to 1 kHz, 100 % above
 };
 
+/// Bounds of ModalWingOptions::static_shape_pressures_pa (and of wing.fe.static_shapes_pa).
+inline constexpr int kMaxStaticShapes = kMaxStaticShapesOfAWing;
+inline constexpr double kMaxStaticShapePressure_Pa = 1000.0;
+
 struct ModalWingOptions {
   MassLumping mass = MassLumping::kConsistent;  ///< M used for modes and invariants
   WingSupport support;  ///< P3 joint and root edge (docs/theory.md 2.6)
@@ -43,6 +47,11 @@ struct ModalWingOptions {
   bool keep_membrane_relaxation = false;
   /// MembraneCondensationOptions::rank_tolerance (0: truncated only at C's numerical rank).
   double membrane_rank_tolerance = 1e-10;
+  /// Uniform lift pressures (Pa, each in (0, kMaxStaticShapePressure_Pa]) whose full nonlinear
+  /// static solutions' out-of-plane shapes join the kept modes, the whole replaced by its
+  /// Rayleigh-Ritz vectors (static_shapes.hpp, docs/theory.md 4.7). Nonlinear wing and the
+  /// fixed-interface basis only; at most kMaxStaticShapes. Empty: the modes alone.
+  std::vector<double> static_shape_pressures_pa;
 
   bool IsValid(std::string* why) const;
 };
@@ -64,6 +73,10 @@ struct ModalWing {
   LumpedInertiaSums lumped_sums;          ///< nodal sums of the lumped mesh (histories' loads)
   ModalGeometricStiffness geometric_stiffness;  ///< K^_G per unit inertial load (docs/theory.md
                                                 ///< 4.6); empty if not asked for
+  /// Of the M vectors, how many the nonlinear static shapes added (ModalWingOptions::
+  /// static_shape_pressures_pa): the basis is then the Rayleigh-Ritz vectors of the modes and
+  /// the shapes, and frequencies_hz their Ritz frequencies; 0 = the fixed-interface modes.
+  int static_shape_count = 0;
   ModalMembraneStiffness membrane;        ///< the condensed membrane (docs/theory.md 4.7); empty
                                           ///< for the linear wing
   double wing_mass_kg = 0.0;              ///< members + skin

@@ -20,6 +20,7 @@ std::string rangeText(const FieldSpec& f) {
     case FieldType::kString: return "string";
     case FieldType::kChoice: return std::string(f.choices);
     case FieldType::kPair: return "[a, b], each " + f.range.interval();
+    case FieldType::kNumberList: return "[a, ...], each " + f.range.interval();
     case FieldType::kGrid:
       return f.rangeOfAnotherKey() ? "\"A:B:N\" or numbers, in the range of the key"
                                    : "\"A:B:N\" or numbers, each " + f.range.interval();

@@ -175,6 +175,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
       .set("skin_mass_kg", wing.skin_mass_kg)
       .set("elements", triangles + beams)
       .set("modes", m)
+      .set("static_shapes", wing.static_shape_count)
       .set("effective_mass",
            JsonObject()
                .set("flap_fraction", flap_total)
@@ -197,6 +198,7 @@ int runModesStudy(const Study& study, const fs::path& out_dir, const fs::path& e
                            .set("p3_cross_axis", fe.p3_cross_axis_normal ? "normal" : "span")
                            .set("p3_joint", p3JointName(fe.p3_joint))
                            .set("root_edge", fe.root_edge_pinned ? "pinned" : "free")
+                           .set("static_shapes_pa", fe.static_shapes_pa)
                            .set("mass_matrix", "consistent"))
       .set("selection", JsonObject()
                             .set("cutoff_reached", wing.selection.cutoff_reached)

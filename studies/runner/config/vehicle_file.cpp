@@ -146,7 +146,8 @@ void readWing(TableReader& top, VehicleModel& v) {
   // [wing.fe]: finite-element and modal settings, every key optional (docs/theory.md 2.5, 3.4, 3.5).
   if (std::optional<TableReader> fe = w.optionalTable(
           "fe", {"element_size_m", "modes", "cutoff_hz", "damping_ratio", "p3_cross_axis",
-                 "p3_joint", "root_edge", "inertial_stiffness", "nonlinear"})) {
+                 "p3_joint", "root_edge", "inertial_stiffness", "nonlinear",
+                 "static_shapes_pa"})) {
     WingFeSettings& f = wing.fe;
     f.element_size_m = fe->optionalDouble(field("wing.fe.element_size_m"), f.element_size_m);
     f.max_modes = fe->optionalInt(field("wing.fe.modes"), f.max_modes);
@@ -160,6 +161,9 @@ void readWing(TableReader& top, VehicleModel& v) {
     f.inertial_stiffness =
         fe->optionalEnum("inertial_stiffness", f.inertial_stiffness, kInertialStiffness);
     f.nonlinear = fe->optionalBool("nonlinear", f.nonlinear);
+    if (fe->has("static_shapes_pa"))
+      f.static_shapes_pa = fe->requiredNumberArray("static_shapes_pa", 0,
+                                                   field("wing.fe.static_shapes_pa").range);
     fe->finish();
   } else if (!(wing.fe.element_size_m <= wing.semispan_m)) {
     // Default h = min(5 mm, s), so that a (tiny) wing without [wing.fe] still writes a resolved
@@ -424,6 +428,7 @@ void writeVehicleToml(const VehicleDefinition& definition, TomlWriter& out,
   out.string("root_edge", nameOf(kRootEdges, w.fe.root_edge_pinned));
   out.string("inertial_stiffness", nameOf(kInertialStiffness, w.fe.inertial_stiffness));
   out.boolean("nonlinear", w.fe.nonlinear);
+  if (!w.fe.static_shapes_pa.empty()) out.numberArray("static_shapes_pa", w.fe.static_shapes_pa);
 
   for (const Material& m : v.materials) {
     out.header(path({"materials", m.name}));

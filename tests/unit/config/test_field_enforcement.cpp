@@ -143,6 +143,12 @@ toml::node* makeValue(const FieldSpec& f, double v, bool at_upper,
       a->push_back(inside);
     }
     own->reset(a);
+  } else if (f.type == FieldType::kNumberList) {
+    // A valid element first, so that the bad one is found at its index.
+    auto* a = new toml::array();
+    a->push_back(f.range.lo + (f.range.hi - f.range.lo) * 0.5);
+    a->push_back(v);
+    own->reset(a);
   } else {
     own->reset(new toml::value<double>(v));
   }
@@ -163,7 +169,8 @@ std::vector<Bound> outsideValues(const FieldSpec& f) {
 
 bool checkedByValue(const FieldSpec& f) {
   const bool typed = f.type == FieldType::kNumber || f.type == FieldType::kInteger ||
-                     f.type == FieldType::kPair || f.type == FieldType::kGrid;
+                     f.type == FieldType::kPair || f.type == FieldType::kGrid ||
+                     f.type == FieldType::kNumberList;
   return typed && !f.rangeOfAnotherKey() && f.group() != "cli";
 }
 

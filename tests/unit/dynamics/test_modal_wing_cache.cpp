@@ -160,6 +160,24 @@ TEST(ModalWingCache, KeyChangesWithEveryFieldThatChangesTheWing) {
   EXPECT_GE(structural, 20);
 }
 
+// wing.fe.static_shapes_pa is a list (the loop above moves numbers): its pressures and their
+// count are in the key.
+TEST(ModalWingCache, KeyChangesWithTheStaticShapes) {
+  VehicleModel v = efw();
+  v.wing.fe.nonlinear = true;
+  const std::string none = modalWingKey(v);
+  v.wing.fe.static_shapes_pa = {1.0};
+  const std::string one = modalWingKey(v);
+  v.wing.fe.static_shapes_pa = {1.5};
+  const std::string other = modalWingKey(v);
+  v.wing.fe.static_shapes_pa = {1.0, 1.0};
+  const std::string two = modalWingKey(v);
+  EXPECT_NE(none, one);
+  EXPECT_NE(one, other);
+  EXPECT_NE(one, two);
+  EXPECT_NE(none, two);
+}
+
 TEST(ModalWingCache, IsBoundedAndRebuildsTheSameWing) {
   ModalWingCache cache(4);
   const VehicleModel v = efw();

@@ -20,7 +20,8 @@ namespace {
 
 bool numeric(const FieldSpec& f) {
   return f.type == FieldType::kNumber || f.type == FieldType::kInteger ||
-         f.type == FieldType::kPair || f.type == FieldType::kGrid;
+         f.type == FieldType::kPair || f.type == FieldType::kGrid ||
+         f.type == FieldType::kNumberList;
 }
 
 TEST(ModelFieldTable, EveryKeyOnceWithUnitDefaultAndMeaning) {
