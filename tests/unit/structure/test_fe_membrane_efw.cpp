@@ -13,9 +13,11 @@
 #include "core/structure/membrane_rom.hpp"
 #include "core/structure/modal_wing.hpp"
 #include "core/structure/skin_pretension.hpp"
+#include "core/structure/static_shapes.hpp"
 #include "core/structure/von_karman.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "fe_test_meshes.hpp"
+#include "wing_sections.hpp"
 #include "tests/support/magpie_vehicle.hpp"
 
 namespace orni::structure {
@@ -24,32 +26,8 @@ namespace {
 constexpr double kLiftPressure_Pa = 53.0;
 constexpr double kDeflectionTol = 0.05;   // acceptance: 5 %
 
-// Upward (-z_W: z_W points down) uniform pressure, consistent nodal loads of linear triangles.
-Eigen::VectorXd liftLoad(const WingMesh& mesh, double pressure_pa) {
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(kDofsPerNode * mesh.nodeCount());
-  for (const std::array<int, 3>& tri : mesh.triangles) {
-    const std::array<Vec3, 3> x = {mesh.nodes_W_m[static_cast<std::size_t>(tri[0])],
-                                   mesh.nodes_W_m[static_cast<std::size_t>(tri[1])],
-                                   mesh.nodes_W_m[static_cast<std::size_t>(tri[2])]};
-    for (int n : tri) f(globalDof(n, kW)) -= pressure_pa * triangleArea(x) / 3.0;
-  }
-  return f;
-}
-
-struct Section {
-  double lead_up_m, trail_up_m, pitch_deg;
-};
-
-// Upward deflections of a strip's leading- and trailing-edge nodes and its nose-up pitch change.
-Section section(const WingMesh& mesh, const Eigen::VectorXd& u, std::size_t strip) {
-  const StripSampleNodes& s = mesh.strip_nodes[strip];
-  const double lead = -u(globalDof(s.leading_edge, kW));
-  const double trail = -u(globalDof(s.trailing_edge, kW));
-  const double chord = (mesh.nodes_W_m[static_cast<std::size_t>(s.leading_edge)] -
-                        mesh.nodes_W_m[static_cast<std::size_t>(s.trailing_edge)]).norm();
-  // The trailing edge rising relative to the leading edge pitches the section nose-down.
-  return {lead, trail, -std::atan2(trail - lead, chord) * 180.0 / fe_test::kTestPi};
-}
+using fe_test::Section;
+using fe_test::sectionOf;
 
 // The literal EFW, its modal wing (24 modes, as the nonlinear vehicle files ask for), the full
 // nonlinear static solution and the reduced one under a load.
@@ -100,13 +78,13 @@ struct StaticCase {
 TEST(FeMembraneRomEfw, ReducedStaticConvergesInTheModesWhereTheSlackSolutionIsUnique) {
   const StaticCase c24(0.0, 24);
   constexpr double kSmallLift_Pa = 1.67;
-  const Eigen::VectorXd load = liftLoad(c24.mesh, kSmallLift_Pa);
+  const Eigen::VectorXd load = uniformLiftLoad(c24.mesh, kSmallLift_Pa);
   const NonlinearStaticResult coarse = c24.full(load, 10), fine = c24.full(load, 40);
   ASSERT_TRUE(coarse.converged) << coarse.message;
   ASSERT_TRUE(fine.converged) << fine.message;
-  const Section full_mid = section(c24.mesh, fine.displacement, c24.mid());
-  const Section path_mid = section(c24.mesh, coarse.displacement, c24.mid());
-  const Section full_tip = section(c24.mesh, fine.displacement, c24.tip());
+  const Section full_mid = sectionOf(c24.mesh, fine.displacement, c24.mid());
+  const Section path_mid = sectionOf(c24.mesh, coarse.displacement, c24.mid());
+  const Section full_tip = sectionOf(c24.mesh, fine.displacement, c24.tip());
   // Unique: the two load paths agree to 0.1 %.
   EXPECT_NEAR(path_mid.trail_up_m / full_mid.trail_up_m, 1.0, 1e-3);
   double previous = 0.0;
@@ -114,8 +92,8 @@ TEST(FeMembraneRomEfw, ReducedStaticConvergesInTheModesWhereTheSlackSolutionIsUn
     const StaticCase c(0.0, modes);
     Eigen::VectorXd u_rom;
     ASSERT_TRUE(c.reduced(load, 10, &u_rom));
-    const Section rom_mid = section(c.mesh, u_rom, c.mid());
-    const Section rom_tip = section(c.mesh, u_rom, c.tip());
+    const Section rom_mid = sectionOf(c.mesh, u_rom, c.mid());
+    const Section rom_tip = sectionOf(c.mesh, u_rom, c.tip());
     const double ratio = rom_mid.trail_up_m / full_mid.trail_up_m;
     std::printf("EFW slack, %.2f Pa, %d modes: mid-span TE %.3f mm (full %.3f, 10 increments %.3f; "
                 "ratio %.3f), tip LE %.3f mm (full %.3f)\n",
@@ -147,11 +125,11 @@ TEST(FeMembraneRomEfw, ReducedStaticConvergesInTheModesWhereTheSlackSolutionIsUn
 // vectors, tried 2026-12-05) did not remove the spread. Held here so the finding stays measured.
 TEST(FeMembraneRomEfw, SlackSkinReducedStaticDependsOnTheLoadPath) {
   const StaticCase c(0.0);
-  const Eigen::VectorXd load = liftLoad(c.mesh, kLiftPressure_Pa);
+  const Eigen::VectorXd load = uniformLiftLoad(c.mesh, kLiftPressure_Pa);
   Eigen::VectorXd coarse, fine;
   ASSERT_TRUE(c.reduced(load, 10, &coarse));
   ASSERT_TRUE(c.reduced(load, 60, &fine));
-  const Section a = section(c.mesh, coarse, c.mid()), b = section(c.mesh, fine, c.mid());
+  const Section a = sectionOf(c.mesh, coarse, c.mid()), b = sectionOf(c.mesh, fine, c.mid());
   std::printf("EFW, slack skin, 53 Pa, 24 modes: mid-span TE up %.2f mm (10 increments), %.2f mm "
               "(60 increments)\n", 1e3 * a.trail_up_m, 1e3 * b.trail_up_m);
   ::testing::Test::RecordProperty("slack_rom_mid_te_mm_10_steps", std::to_string(1e3 * a.trail_up_m));
@@ -175,7 +153,7 @@ TEST(FeMembraneRomEfw, CondensationIsExactForVonKarmansOrdering) {
   options.nonlinear = true;
   options.keep_membrane_relaxation = true;
   const ModalWing mw = buildModalWing(v, mesh, options);
-  const Eigen::VectorXd load = liftLoad(mesh, kLiftPressure_Pa);
+  const Eigen::VectorXd load = uniformLiftLoad(mesh, kLiftPressure_Pa);
   Eigen::VectorXd q;
   ASSERT_TRUE(solveModalStatic(mw.stiffnessDiagonal(), mw.membrane,
                                mw.mode_shapes.transpose() * load, &q, 10));

@@ -14,6 +14,7 @@
 #include "core/structure/von_karman.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "fe_test_meshes.hpp"
+#include "wing_sections.hpp"
 #include "tests/support/magpie_vehicle.hpp"
 
 namespace orni::structure {
@@ -85,18 +86,8 @@ TEST(FeStaticShapes, OptionsAreChecked) {
   EXPECT_NE(why.find("nonlinear"), std::string::npos) << why;
 }
 
-struct Section {
-  double lead_up_m, trail_up_m, pitch_deg;
-};
-// Upward deflections of a strip's leading- and trailing-edge nodes and its nose-up pitch change.
-Section sectionOf(const WingMesh& mesh, const Eigen::VectorXd& u, std::size_t strip) {
-  const StripSampleNodes& s = mesh.strip_nodes[strip];
-  const double lead = -u(globalDof(s.leading_edge, kW));
-  const double trail = -u(globalDof(s.trailing_edge, kW));
-  const double chord = (mesh.nodes_W_m[static_cast<std::size_t>(s.leading_edge)] -
-                        mesh.nodes_W_m[static_cast<std::size_t>(s.trailing_edge)]).norm();
-  return {lead, trail, -std::atan2(trail - lead, chord) * 180.0 / fe_test::kTestPi};
-}
+using fe_test::Section;
+using fe_test::sectionOf;
 
 // The literal EFW (the honest magpie's wing, slack skin) under a uniform lift small enough that
 // the full solution is unique (the same with 10 or 40 load increments, test_fe_membrane_efw.cpp).
