@@ -128,6 +128,18 @@ void FlexibleTetheredSystem::evaluate(double t_s, const double* y, double* aero_
   }
 }
 
+void FlexibleTetheredSystem::lastStripLoads(Eigen::Matrix3Xd* force_W_N, Eigen::VectorXd* moment_Nm,
+                                            Eigen::VectorXd* separation_f) const {
+  const aero::StripBatch& b = data_.batch;
+  const Eigen::Index ns = b.Fx.size();
+  force_W_N->resize(3, ns);
+  force_W_N->row(0) = b.Fx.matrix().transpose();
+  force_W_N->row(1) = b.Fy.matrix().transpose();
+  force_W_N->row(2) = b.Fz.matrix().transpose();
+  *moment_Nm = (b.Mx * kin_.esx() + b.My * kin_.esy() + b.Mz * kin_.esz()).matrix();
+  *separation_f = b.separation_f.matrix();
+}
+
 void FlexibleTetheredSystem::updateSplit(double t_s, const double* y) {
   if (!flex_.nonlinear()) return;
   evaluate(t_s, y, nullptr, nullptr);  // the modal mass M_qq + A(f) at y, packed in packed_

@@ -51,6 +51,11 @@ class FlexibleTetheredSystem {
   const structure::ModalMembraneStiffness::Workspace* membraneWorkspace() const {
     return flex_.nonlinear() ? &membrane_ws_ : nullptr;
   }
+  /// The strip loads of the last evaluation (rhs() or sample()) as the kernel gave them, without
+  /// the apparent-mass force of q'' (the left-hand side's A(f)): force (3 x ns, W, one wing), the
+  /// moment about e_s (ns, nose-up) and the separation fraction f (ns) of A(f).
+  void lastStripLoads(Eigen::Matrix3Xd* force_W_N, Eigen::VectorXd* moment_Nm,
+                      Eigen::VectorXd* separation_f) const;
   /// After an accepted step: the nonlinear wing's split re-linearised about y, with the modal
   /// mass at y (no-op for the linear wing).
   void updateSplit(double t_s, const double* y);

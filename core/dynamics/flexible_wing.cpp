@@ -55,6 +55,9 @@ FlexibleWingModel::FlexibleWingModel(const VehicleModel& vehicle,
     for (int i = 0; i < 4; ++i) {
       const auto p = static_cast<std::size_t>(node[i]);
       const double a = w.force[i], r = w.force[i] - s.lever_R_m * w.moment[i];
+      s.section_nodes[static_cast<std::size_t>(i)] = node[i];
+      s.force_weights[static_cast<std::size_t>(i)] = a;
+      s.moment_weights[static_cast<std::size_t>(i)] = w.moment[i];
       s.x_P_W_m += a * mw.mesh.nodes_W_m[p];
       s.x_R_W_m += r * mw.mesh.nodes_W_m[p];
       s.phi_P += a * mw.phi_W[p];

@@ -11,6 +11,7 @@
 // selects softening and stiffening).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <vector>
@@ -44,6 +45,12 @@ struct FlexibleStrip {
                                     ///< sum_i b_i n_W^T Phi_i over L, Q, T, E
   Eigen::VectorXd psi_mid;          ///< normal displacement of the kernel's mid-chord per unit q
                                     ///< (M): (Phi_P^T n_W - (c/2 - x_P) psi_twist^T)
+  // The nodal form of the same operators (for a full-order model of the same wing,
+  // structure/wing_transient.hpp): the mesh nodes L, Q, T, E and their chordwise weights, so that
+  // phi_P = sum a_i Phi_i, psi_twist = sum b_i n_W^T Phi_i and the strip load is a_i F + b_i m n_W.
+  std::array<int, 4> section_nodes{};
+  std::array<double, 4> force_weights{};   ///< a_i
+  std::array<double, 4> moment_weights{};  ///< b_i (1/m)
 };
 
 /// The strips' modal data stacked for one matrix product per use. Point data are component-major:
