@@ -110,6 +110,31 @@ class ChordwiseCouplingTest : public ::testing::Test {
   StripKinematics kin_;
 };
 
+// The nodal form of each strip's operators (FlexibleStrip::section_nodes, force_weights,
+// moment_weights: what a full-order model of the wing is loaded and read with,
+// studies/tools/orni_flapping_reference) is the modal one: sum a_i Phi_i = phi_P, sum b_i n^T
+// Phi_i = psi_twist, on the strip's own L, Q, T, E nodes.
+TEST_F(ChordwiseCouplingTest, NodalFormOfTheStripOperatorsIsTheModalOne) {
+  const Vec3 n_W = -Vec3::UnitZ();
+  for (std::size_t j = 0; j < flex_.strips.size(); ++j) {
+    const FlexibleStrip& s = flex_.strips[j];
+    std::array<int, 4> node{};
+    std::array<double, 4> x{};
+    sectionNodes(j, &node, &x);
+    EXPECT_EQ(s.section_nodes, node);
+    Eigen::Matrix3Xd phi_p = Eigen::Matrix3Xd::Zero(3, flex_.mode_count);
+    Eigen::RowVectorXd twist = Eigen::RowVectorXd::Zero(flex_.mode_count);
+    for (std::size_t i = 0; i < 4; ++i) {
+      phi_p += s.force_weights[i] * mw_.phi_W[static_cast<std::size_t>(s.section_nodes[i])];
+      twist += s.moment_weights[i] * (n_W.transpose() * mw_.phi_W[static_cast<std::size_t>(s.section_nodes[i])]);
+    }
+    constexpr double kRoundOff = 1e-12;  // relative: the same sums in another order
+    EXPECT_LT((phi_p - s.phi_P).cwiseAbs().maxCoeff(), kRoundOff * s.phi_P.cwiseAbs().maxCoeff()) << j;
+    EXPECT_LT((twist - s.psi_twist).cwiseAbs().maxCoeff(),
+              kRoundOff * s.psi_twist.cwiseAbs().maxCoeff()) << j;
+  }
+}
+
 // docs/theory.md 6.3: the load operators are the transposes of the kinematic ones. For random q, q'
 // and strip loads: Q . q' = sum_j (F_j . v_P,j + M_j . w_s,j), where v_P and w_s are the elastic
 // velocity of the point the force acts at and the elastic twist rate, as the kernel was given
