@@ -5,14 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
-
 #include "core/structure/beam_element.hpp"
 #include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/product_blocking.hpp"
 #include "core/structure/shell_element.hpp"
 #include "core/structure/skin_pretension.hpp"
+#include "core/structure/sparse_solve.hpp"
 
 namespace orni::structure {
 namespace {
@@ -269,20 +267,9 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
     res.converged = true;
     return res;
   }
-  auto solveSparse = [](const SparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd* x) {
-    Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(a);
-    if (ldlt.info() == Eigen::Success) {
-      *x = ldlt.solve(b);
-      if (ldlt.info() == Eigen::Success && x->allFinite()) return true;
-    }
-    Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu(a);
-    if (lu.info() != Eigen::Success) return false;
-    *x = lu.solve(b);
-    return lu.info() == Eigen::Success && x->allFinite();
-  };
   Eigen::VectorXd u_free = Eigen::VectorXd::Zero(nf);
   if (!options.nonlinear) {
-    res.converged = solveSparse(k_ff, f_free, &u_free);
+    res.converged = solveSparseSymmetric(k_ff, f_free, &u_free);
     if (!res.converged) res.message = "the stiffness over the free DOFs is singular";
     res.displacement = expandRows(u_free, free, n);
     return res;
@@ -315,7 +302,7 @@ NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
     for (int it = 0; it < options.max_newton_iterations && !done; ++it) {
       ++res.newton_iterations;
       const SparseMatrix k_t = k_ff + extractBlock(terms.tangent(u_full), free, free);
-      if (!solveSparse(k_t, -r, &du)) {
+      if (!solveSparseSymmetric(k_t, -r, &du)) {
         res.message = "the tangent stiffness is singular at load fraction " + std::to_string(lambda);
         res.displacement = u_full;
         return res;

@@ -5,10 +5,8 @@
 #include <stdexcept>
 #include <utility>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
-
 #include "core/structure/fe_types.hpp"
+#include "core/structure/sparse_solve.hpp"
 
 namespace orni::structure {
 
@@ -26,31 +24,6 @@ bool WingTransientOptions::IsValid(std::string* why) const {
     return fail("displacement_tolerance: expected in (0, 1)");
   return true;
 }
-
-namespace {
-
-
-// Solves a x = b for the symmetric Newton matrix; LU when LDL^T fails (an indefinite tangent).
-bool solveSymmetric(const SparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd* x) {
-  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower, Eigen::AMDOrdering<int>> ldlt(a);
-  if (ldlt.info() == Eigen::Success) {
-    *x = ldlt.solve(b);
-    if (ldlt.info() == Eigen::Success && x->allFinite()) return true;
-  }
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu(a);
-  if (lu.info() != Eigen::Success) return false;
-  *x = lu.solve(b);
-  return lu.info() == Eigen::Success && x->allFinite();
-}
-
-bool solveGeneral(const SparseMatrix& a, const Eigen::VectorXd& b, Eigen::VectorXd* x) {
-  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu(a);
-  if (lu.info() != Eigen::Success) return false;
-  *x = lu.solve(b);
-  return lu.info() == Eigen::Success && x->allFinite();
-}
-
-}  // namespace
 
 WingTransient::WingTransient(SparseMatrix stiffness, SparseMatrix mass, const VonKarmanTerms& terms,
                              const DofPartition& part,
@@ -139,7 +112,7 @@ void WingTransient::setState(const Eigen::VectorXd& u, const Eigen::VectorXd& v,
     const double beta_n = 0.25 * (1.0 - options_.hht_alpha) * (1.0 - options_.hht_alpha);
     mass += (beta_n * start_step_s * start_step_s) * (k_ff_ + h_ff);
   }
-  if (!solveSymmetric(mass, Eigen::VectorXd(-g_), &a_))
+  if (!solveSparseSymmetric(mass, Eigen::VectorXd(-g_), &a_))
     throw std::runtime_error("wing transient: the mass over the free DOFs is singular");
 }
 
@@ -168,7 +141,7 @@ void WingTransient::relaxInPlane(const WingTransientLoads& loads) {
     k_pp = extractBlock(k_t, in_plane, in_plane);
     const Eigen::VectorXd r = k_ff_ * u_ + restrictToFree(terms_.internalForce(u_full)) +
                               frameInertia(loads, u_full, expand(v_)) - f;
-    if (!solveSymmetric(k_pp, Eigen::VectorXd(-rows(r)), &du))
+    if (!solveSparseSymmetric(k_pp, Eigen::VectorXd(-rows(r)), &du))
       throw std::runtime_error("wing transient: the in-plane stiffness is singular");
     for (std::size_t i = 0; i < in_plane.size(); ++i) u_(in_plane[i]) += du(static_cast<Eigen::Index>(i));
     if (du.norm() <= options_.displacement_tolerance * std::max(u_.norm(), 1e-300)) break;
@@ -176,7 +149,7 @@ void WingTransient::relaxInPlane(const WingTransientLoads& loads) {
   // Velocity: the rate of that equilibrium, (K + H)_pp v_p = -[(K + H) v]_p with v_p from zero.
   const SparseMatrix k_t = k_ff_ + extractBlock(terms_.tangent(expand(u_)), free_, free_);
   for (int i : in_plane) v_(i) = 0.0;
-  if (!solveSymmetric(k_pp, Eigen::VectorXd(-rows(k_t * v_)), &du))
+  if (!solveSparseSymmetric(k_pp, Eigen::VectorXd(-rows(k_t * v_)), &du))
     throw std::runtime_error("wing transient: the in-plane stiffness is singular");
   for (std::size_t i = 0; i < in_plane.size(); ++i) v_(in_plane[i]) = du(static_cast<Eigen::Index>(i));
 }
@@ -237,8 +210,8 @@ WingTransient::StepReport WingTransient::step(double h, const WingTransientLoads
       jac += ((1.0 + al) * c_v) * extractBlock(*loads.added_damping, free_, free_);
     const bool symmetric =
         !loads.added_stiffness && !loads.added_damping && frame_jacobian.nonZeros() == 0;
-    if (!(symmetric ? solveSymmetric(jac, Eigen::VectorXd(-r), &du)
-                    : solveGeneral(jac, Eigen::VectorXd(-r), &du))) {
+    if (!(symmetric ? solveSparseSymmetric(jac, Eigen::VectorXd(-r), &du)
+                    : solveSparseGeneral(jac, Eigen::VectorXd(-r), &du))) {
       rep.message = "the Newton matrix is singular";
       return rep;
     }
