@@ -55,11 +55,26 @@ Eigen::Matrix<double, 3, 2> etaJacobian(const Vec2& g) {
 }  // namespace
 
 VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh,
-                               MemberStretch member_stretch)
-    : dof_count_(kDofsPerNode * mesh.nodeCount()) {
+                               MemberStretch member_stretch, SkinMembrane skin_membrane,
+                               double residual_stiffness)
+    : dof_count_(kDofsPerNode * mesh.nodeCount()),
+      skin_membrane_(skin_membrane),
+      residual_stiffness_(residual_stiffness) {
+  if (skin_membrane == SkinMembrane::kTensionField) {
+    if (!(residual_stiffness > 0.0 && residual_stiffness <= 1.0))
+      throw std::invalid_argument("von Karman terms: the tension field's residual stiffness " +
+                                  std::to_string(residual_stiffness) + " is outside (0, 1]");
+    if (wing_structure.wing.skin.pretension_N_per_m != 0.0)
+      throw std::invalid_argument(
+          "von Karman terms: a tension-field skin with a pretension is not built (the shrunk "
+          "film's strain is not measured from the flat mesh); set wing.skin.pretension_N_per_m "
+          "= 0 or use the elastic membrane");
+  }
   if (!mesh.triangles.empty()) {
     const ShellProperties skin = skinShellProperties(wing_structure);
     c_t_ = planeStressStiffness(skin);
+    skin_nu_ = skin.poisson_ratio;
+    skin_et_n_per_m_ = skin.youngs_modulus_pa * skin.thickness_m;
     facets_.reserve(mesh.triangles.size());
     for (const std::array<int, 3>& tri : mesh.triangles) {
       Facet f;
@@ -105,15 +120,31 @@ VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMe
   }
 }
 
+RelaxedMembrane VonKarmanTerms::skinLaw(const Vec3& strain) const {
+  if (skin_membrane_ == SkinMembrane::kTensionField)
+    return relaxedMembrane(strain, skin_et_n_per_m_, skin_nu_, residual_stiffness_);
+  RelaxedMembrane elastic;
+  elastic.stress_n_per_m = c_t_ * strain;
+  elastic.tangent_n_per_m = c_t_;
+  elastic.energy_j_per_m2 = 0.5 * strain.dot(elastic.stress_n_per_m);
+  return elastic;
+}
+
 Eigen::VectorXd VonKarmanTerms::internalForce(const Eigen::VectorXd& u) const {
   if (u.size() != dof_count_) throw std::invalid_argument("von Karman: displacement size");
   Eigen::VectorXd f = Eigen::VectorXd::Zero(dof_count_);
   for (const Facet& e : facets_) {
     const Vec9 l = facetLocal(e, u);
     const Vec2 g = e.grad * normalDofs(l);
+    const Vec3 eps0 = e.b_m * membraneDofs(l);
     const Vec3 eta = etaOf(g);
-    const Vec3 n_total = c_t_ * (e.b_m * membraneDofs(l) + eta);
-    const Eigen::Matrix<double, 6, 1> f_d = e.area_m2 * (e.b_m.transpose() * (c_t_ * eta));
+    const RelaxedMembrane law = skinLaw(eps0 + eta);
+    const Vec3& n_total = law.stress_n_per_m;
+    // The linear part C eps0 is K's (CST): only the rest is added here (for the elastic law
+    // exactly C eta, without the round-off of N - C eps0 when eta << eps0).
+    const Vec3 n_beyond_linear =
+        skin_membrane_ == SkinMembrane::kElastic ? Vec3(c_t_ * eta) : Vec3(n_total - c_t_ * eps0);
+    const Eigen::Matrix<double, 6, 1> f_d = e.area_m2 * (e.b_m.transpose() * n_beyond_linear);
     Eigen::Matrix2d s;
     s << n_total(0), n_total(2), n_total(2), n_total(1);
     const Vec3 f_w = e.area_m2 * (e.grad.transpose() * (s * g));
@@ -142,7 +173,10 @@ double VonKarmanTerms::energy(const Eigen::VectorXd& u) const {
     const Vec9 l = facetLocal(e, u);
     const Vec3 eta = etaOf(e.grad * normalDofs(l));
     const Vec3 eps0 = e.b_m * membraneDofs(l);
-    pi += e.area_m2 * (eps0.dot(c_t_ * eta) + 0.5 * eta.dot(c_t_ * eta));
+    // W(eps0 + eta) less K's linear part 1/2 eps0^T C eps0 (elastic: written out, exact).
+    pi += skin_membrane_ == SkinMembrane::kElastic
+              ? e.area_m2 * (eps0.dot(c_t_ * eta) + 0.5 * eta.dot(c_t_ * eta))
+              : e.area_m2 * (skinLaw(eps0 + eta).energy_j_per_m2 - 0.5 * eps0.dot(c_t_ * eps0));
   }
   for (const Member& m : members_) {
     const Vec3 du = u.segment<3>(globalDof(m.nodes[1], kU)) - u.segment<3>(globalDof(m.nodes[0], kU));
@@ -160,7 +194,7 @@ Eigen::Matrix3Xd VonKarmanTerms::membraneForces(const Eigen::VectorXd& u) const 
     const Facet& e = facets_[i];
     const Vec9 l = facetLocal(e, u);
     n.col(static_cast<Eigen::Index>(i)) =
-        c_t_ * (e.b_m * membraneDofs(l) + etaOf(e.grad * normalDofs(l)));
+        skinLaw(e.b_m * membraneDofs(l) + etaOf(e.grad * normalDofs(l))).stress_n_per_m;
   }
   return n;
 }
@@ -172,13 +206,18 @@ SparseMatrix VonKarmanTerms::tangent(const Eigen::VectorXd& u) const {
   for (const Facet& e : facets_) {
     const Vec9 l = facetLocal(e, u);
     const Vec2 g = e.grad * normalDofs(l);
-    const Vec3 n_total = c_t_ * (e.b_m * membraneDofs(l) + etaOf(g));
+    const Vec3 eps0 = e.b_m * membraneDofs(l);
+    const RelaxedMembrane law = skinLaw(eps0 + etaOf(g));
+    const Vec3& n_total = law.stress_n_per_m;
+    const Mat3& h = law.tangent_n_per_m;
     Eigen::Matrix2d s;
     s << n_total(0), n_total(2), n_total(2), n_total(1);
     const Eigen::Matrix<double, 3, 2> lam = etaJacobian(g);
     const Eigen::Matrix<double, 3, 3> deta_dw = lam * e.grad;  // 3 x (w1 w2 w3)
-    const Eigen::Matrix<double, 6, 3> k_dw = e.area_m2 * (e.b_m.transpose() * c_t_ * deta_dw);
-    const Mat3 k_ww = e.area_m2 * (deta_dw.transpose() * c_t_ * deta_dw +
+    // In-plane block beyond K's CST: zero for the elastic law (H = C).
+    const Eigen::Matrix<double, 6, 6> k_dd = e.area_m2 * (e.b_m.transpose() * (h - c_t_) * e.b_m);
+    const Eigen::Matrix<double, 6, 3> k_dw = e.area_m2 * (e.b_m.transpose() * h * deta_dw);
+    const Mat3 k_ww = e.area_m2 * (deta_dw.transpose() * h * deta_dw +
                                    e.grad.transpose() * s * e.grad);
     Mat9 k = Mat9::Zero();  // local per node (u, v, w)
     for (int a = 0; a < 3; ++a)
@@ -186,6 +225,7 @@ SparseMatrix VonKarmanTerms::tangent(const Eigen::VectorXd& u) const {
         for (int i = 0; i < 2; ++i) {
           k(3 * a + i, 3 * b + 2) = k_dw(2 * a + i, b);
           k(3 * b + 2, 3 * a + i) = k_dw(2 * a + i, b);
+          for (int j = 0; j < 2; ++j) k(3 * a + i, 3 * b + j) = k_dd(2 * a + i, 2 * b + j);
         }
         k(3 * a + 2, 3 * b + 2) = k_ww(a, b);
       }
@@ -356,7 +396,8 @@ NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const
   WingFeModel fe = assembleWingFe(wing_structure, mesh);
   addSkinPretension(wing_structure, mesh, support, &fe);
   const DofPartition part = makeDofPartition(fe.active, wingBoundaryDofs(mesh, support));
-  const VonKarmanTerms terms(wing_structure, mesh);
+  const VonKarmanTerms terms(wing_structure, mesh, MemberStretch::kBothTransverse,
+                            options.skin_membrane);
   return solveNonlinearStatic(fe.stiffness, terms, part, load, options);
 }
 

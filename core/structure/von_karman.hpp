@@ -30,6 +30,7 @@
 #include "core/structure/dof_partition.hpp"
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/fe_types.hpp"
+#include "core/structure/tension_field.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "core/structure/wing_structure.hpp"
 
@@ -51,11 +52,27 @@ enum class MemberStretch {
   kOutOfPlaneOnly,
 };
 
+/// The skin's membrane law.
+enum class SkinMembrane {
+  /// Linear elastic in the von Karman strain, compression included: the membrane of a plate
+  /// that does not buckle. The modal condensation (membrane_rom.hpp) is exact for it.
+  kElastic,
+  /// Tension field (tension_field.hpp): the relaxed energy of a film that wrinkles instead of
+  /// carrying compression, with a residual fraction kappa of the elastic energy.
+  kTensionField,
+};
+
 /// The per-element data of the nonlinear strain terms, built once from a mesh.
 class VonKarmanTerms {
  public:
+  /// `residual_stiffness` is the tension field's kappa (ignored for kElastic). Throws
+  /// std::invalid_argument for a tension field with a skin pretension (a film shrunk onto the
+  /// frame, skin_pretension.hpp: its strain is not measured from the flat mesh, not built yet)
+  /// or kappa outside (0, 1].
   VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh,
-                 MemberStretch member_stretch = MemberStretch::kBothTransverse);
+                 MemberStretch member_stretch = MemberStretch::kBothTransverse,
+                 SkinMembrane skin_membrane = SkinMembrane::kElastic,
+                 double residual_stiffness = kTensionFieldResidualStiffness);
 
   int dofCount() const { return dof_count_; }
 
@@ -67,7 +84,8 @@ class VonKarmanTerms {
   SparseMatrix tangent(const Eigen::VectorXd& u) const;
 
   /// Membrane force resultants of the skin facets at u, (N_xx, N_yy, N_xy) per facet in its
-  /// triad (N/m), the linear part C B_m d included: 3 x facets.
+  /// triad (N/m), the linear part C B_m d included (the relaxed stress of a tension field):
+  /// 3 x facets.
   Eigen::Matrix3Xd membraneForces(const Eigen::VectorXd& u) const;
 
   // Element data, read by the modal condensation (membrane_rom.cpp).
@@ -90,10 +108,17 @@ class VonKarmanTerms {
   const Mat3& membraneStiffness() const { return c_t_; }  ///< C (N/m)
 
  private:
+  /// The skin's membrane law at the membrane strain eps: energy per area, stress, tangent.
+  RelaxedMembrane skinLaw(const Vec3& strain) const;
+
   int dof_count_ = 0;
   std::vector<Facet> facets_;
   std::vector<Member> members_;
   Mat3 c_t_ = Mat3::Zero();
+  SkinMembrane skin_membrane_ = SkinMembrane::kElastic;
+  double skin_et_n_per_m_ = 0.0;  ///< E t of the skin
+  double skin_nu_ = 0.0;
+  double residual_stiffness_ = kTensionFieldResidualStiffness;
 };
 
 struct NonlinearStaticOptions {
@@ -102,6 +127,9 @@ struct NonlinearStaticOptions {
   int max_newton_iterations = 60;  ///< per increment
   double force_tolerance = 1e-8;   ///< converged: |residual| <= tol * |F| on the free DOFs,
   double displacement_tolerance = 1e-10;  ///< or a Newton correction <= tol * |u|
+  /// The skin's membrane law; read by solveWingStatic, which builds the terms (solveNonlinearStatic
+  /// takes them built).
+  SkinMembrane skin_membrane = SkinMembrane::kElastic;
   bool IsValid(std::string* why) const;
 };
 

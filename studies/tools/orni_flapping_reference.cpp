@@ -2,7 +2,7 @@
 // wing that produced its loads (docs/theory.md 4.7, "A flapping reference").
 //
 //   orni_flapping_reference VEHICLE.toml [--shapes P1,P2,...] [--modes N] [--rom-cycles N]
-//                           [--full-cycles N] [--steps-per-cycle N] [--csv FILE]
+//                           [--full-cycles N] [--steps-per-cycle N] [--csv FILE] [--tension-field]
 //
 // 1. The tethered run of the vehicle at its design point (the reduced nonlinear wing, the
 //    vehicle's basis, or its modes with the nonlinear static shapes at --shapes) to its periodic
@@ -13,6 +13,8 @@
 //    on the same section nodes with the same chordwise weights and the same apparent air mass
 //    (with the recorded separation fractions), from the reduced wing's state at the cycle's start.
 // 3. The two wings' section twist, mid-chord deflection and tip deflection over the last cycle.
+// --tension-field: the full wing's skin is a tension-field film (structure/tension_field.hpp), which
+//    wrinkles instead of carrying compression; the reduced wing keeps its elastic membrane.
 //
 // If the full wing's response to the reduced orbit's loads is the reduced orbit, that orbit is
 // (to the difference measured) also an orbit of the full model: the loads depend on the wing only
@@ -55,12 +57,14 @@ struct Args {
   int full_cycles = 3;
   int steps = 200;
   std::string csv;
+  bool tension_field = false;  // the full wing's skin a tension-field film (tension_field.hpp)
 };
 
 [[noreturn]] void usage(const std::string& why) {
   std::cerr << "orni_flapping_reference: " << why
             << "\nusage: orni_flapping_reference VEHICLE.toml [--shapes P1,P2,...] [--modes N]"
-               " [--rom-cycles N] [--full-cycles N] [--steps-per-cycle N] [--csv FILE]\n";
+               " [--rom-cycles N] [--full-cycles N] [--steps-per-cycle N] [--csv FILE]"
+               " [--tension-field]\n";
   std::exit(2);
 }
 
@@ -106,6 +110,8 @@ Args parseArgs(int argc, char** argv) {
       a.full_cycles = toInt(s, number(i));
     } else if (s == "--steps-per-cycle") {
       a.steps = toInt(s, number(i));
+    } else if (s == "--tension-field") {
+      a.tension_field = true;
     } else if (s == "--csv") {
       a.csv = number(i);
     } else if (!s.empty() && s[0] == '-') {
@@ -205,7 +211,9 @@ int main(int argc, char** argv) {
     structure::addSkinPretension(ws, mw.mesh, mo.support, &fe);
     const structure::DofPartition part =
         structure::makeDofPartition(fe.active, structure::wingBoundaryDofs(mw.mesh, mo.support));
-    const structure::VonKarmanTerms terms(ws, mw.mesh);
+    const structure::VonKarmanTerms terms(
+        ws, mw.mesh, structure::MemberStretch::kBothTransverse,
+        args.tension_field ? structure::SkinMembrane::kTensionField : structure::SkinMembrane::kElastic);
     std::vector<Eigen::Vector3d> nodes;
     const Eigen::Vector3d p2 = mw.mesh.nodes_W_m[static_cast<std::size_t>(mw.mesh.p2_node)];
     for (const auto& x : mw.mesh.nodes_W_m) nodes.push_back(x - p2);

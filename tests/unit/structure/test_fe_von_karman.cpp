@@ -82,6 +82,26 @@ double timoshenkoDeflectionRatio(double load_parameter) {
   return x;
 }
 
+// Largest errors of the force against central differences of the energy and of the tangent
+// against central differences of the force, over every DOF, at u with step h.
+struct FiniteDifferenceErrors {
+  double force = 0.0, tangent = 0.0;
+};
+FiniteDifferenceErrors finiteDifferenceErrors(const VonKarmanTerms& terms, const Eigen::VectorXd& u,
+                                              const Eigen::VectorXd& f, const Eigen::MatrixXd& k,
+                                              double h) {
+  FiniteDifferenceErrors e;
+  for (int i = 0; i < terms.dofCount(); ++i) {
+    Eigen::VectorXd up = u, um = u;
+    up(i) += h;
+    um(i) -= h;
+    e.force = std::max(e.force, std::abs((terms.energy(up) - terms.energy(um)) / (2 * h) - f(i)));
+    const Eigen::VectorXd col = (terms.internalForce(up) - terms.internalForce(um)) / (2 * h);
+    e.tangent = std::max(e.tangent, (col - k.col(i)).cwiseAbs().maxCoeff());
+  }
+  return e;
+}
+
 // Both member-stretch models (von_karman.hpp, MemberStretch): each force is its energy's gradient
 // and each tangent its force's Jacobian; they differ exactly by the members' in-plane terms.
 TEST(FeVonKarman, ForceIsTheGradientOfTheEnergyAndTheTangentItsHessian) {
@@ -94,23 +114,41 @@ TEST(FeVonKarman, ForceIsTheGradientOfTheEnergyAndTheTangentItsHessian) {
     Eigen::VectorXd u = 1e-3 * Eigen::VectorXd::Random(n);  // deflections ~ 1 mm, slopes ~ 0.1
     const Eigen::VectorXd f = terms.internalForce(u);
     const Eigen::MatrixXd k = Eigen::MatrixXd(terms.tangent(u));
-    const double h = 1e-7;
-    double force_error = 0.0, tangent_error = 0.0;
-    for (int i = 0; i < n; ++i) {
-      Eigen::VectorXd up = u, um = u;
-      up(i) += h;
-      um(i) -= h;
-      force_error = std::max(force_error,
-                             std::abs((terms.energy(up) - terms.energy(um)) / (2 * h) - f(i)));
-      const Eigen::VectorXd col = (terms.internalForce(up) - terms.internalForce(um)) / (2 * h);
-      tangent_error = std::max(tangent_error, (col - k.col(i)).cwiseAbs().maxCoeff());
-    }
+    const FiniteDifferenceErrors e = finiteDifferenceErrors(terms, u, f, k, 1e-7);
     // Central differences: truncation ~ h^2 times the third derivative, round-off ~ 1e-16 |Pi| / h.
-    EXPECT_LT(force_error, 1e-6 * f.cwiseAbs().maxCoeff());
-    EXPECT_LT(tangent_error, 1e-6 * k.cwiseAbs().maxCoeff());
+    EXPECT_LT(e.force, 1e-6 * f.cwiseAbs().maxCoeff());
+    EXPECT_LT(e.tangent, 1e-6 * k.cwiseAbs().maxCoeff());
     EXPECT_LT((k - k.transpose()).cwiseAbs().maxCoeff(), 1e-9 * k.cwiseAbs().maxCoeff());
     // The nonlinear terms vanish at u = 0 (they start at second order).
     EXPECT_EQ(terms.internalForce(Eigen::VectorXd::Zero(n)).cwiseAbs().maxCoeff(), 0.0);
+  }
+  // The tension-field film (tension_field.hpp) through the same assembly: u large enough that
+  // facets are taut, wrinkled and slack.
+  {
+    SCOPED_TRACE("tension field");
+    const VonKarmanTerms terms(w.vehicle, w.mesh, MemberStretch::kBothTransverse,
+                               SkinMembrane::kTensionField);
+    const int n = terms.dofCount();
+    std::srand(3);
+    const Eigen::VectorXd u = 1e-3 * Eigen::VectorXd::Random(n);
+    const Eigen::VectorXd f = terms.internalForce(u);
+    const Eigen::MatrixXd k = Eigen::MatrixXd(terms.tangent(u));
+    // The states met (principal forces of the relaxed stress: both > 0 taut; one ~ 0 wrinkled).
+    const Eigen::Matrix3Xd nf = terms.membraneForces(u);
+    int wrinkled_or_slack = 0;
+    for (Eigen::Index c = 0; c < nf.cols(); ++c) {
+      Eigen::Matrix2d s;
+      s << nf(0, c), nf(2, c), nf(2, c), nf(1, c);
+      const Eigen::Vector2d ev = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(s).eigenvalues();
+      if (ev(0) < 1e-3 * std::abs(ev(1))) ++wrinkled_or_slack;
+    }
+    EXPECT_GT(wrinkled_or_slack, 0);
+    EXPECT_LT(wrinkled_or_slack, nf.cols());
+    // h smaller than for the smooth law: a state boundary within h of a facet's strain is rare.
+    const FiniteDifferenceErrors e = finiteDifferenceErrors(terms, u, f, k, 1e-9);
+    EXPECT_LT(e.force, 1e-5 * f.cwiseAbs().maxCoeff());
+    EXPECT_LT(e.tangent, 1e-5 * k.cwiseAbs().maxCoeff());
+    EXPECT_LT((k - k.transpose()).cwiseAbs().maxCoeff(), 1e-9 * k.cwiseAbs().maxCoeff());
   }
   // With only out-of-plane displacements the two models agree; in-plane ones separate them.
   const VonKarmanTerms both(w.vehicle, w.mesh), out_of_plane(w.vehicle, w.mesh, MemberStretch::kOutOfPlaneOnly);
@@ -176,6 +214,18 @@ TEST(FeVonKarman, ClampedCircularPlateMembraneLimitMatchesHencky) {
   EXPECT_NEAR(w0 / hencky, 1.0, 0.05);
   // The linear answer at this load is ~ 4000 h: absurd.
   EXPECT_GT(q * std::pow(d.radius_m, 4) / (64.0 * d.rigidity()) / w0, 100.0);
+  // A pressurised clamped membrane is taut everywhere (radial and hoop tension): the
+  // tension-field film (tension_field.hpp) gives the same answer, to its residual fraction.
+  const VonKarmanTerms tension_field(d.vehicle, d.mesh, MemberStretch::kBothTransverse,
+                                     SkinMembrane::kTensionField);
+  NonlinearStaticOptions options;
+  options.load_steps = 10;
+  const NonlinearStaticResult r = solveNonlinearStatic(
+      d.fe.stiffness, tension_field, d.part, pressureLoad(d.mesh, q), options);
+  ASSERT_TRUE(r.converged) << r.message;
+  std::printf("clamped disc, tension field: w0/h %.4f (elastic %.4f)\n",
+              r.displacement(globalDof(0, kW)) / d.thickness_m, w0 / d.thickness_m);
+  EXPECT_NEAR(r.displacement(globalDof(0, kW)) / w0, 1.0, 1e-3);
 }
 
 // The condensed modal membrane is exactly the von Karman energy of u = Phi q + U Q(q) with the
