@@ -56,14 +56,11 @@ Eigen::Matrix<double, 3, 2> etaJacobian(const Vec2& g) {
 
 VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh,
                                MemberStretch member_stretch, SkinMembrane skin_membrane,
-                               double residual_stiffness)
-    : dof_count_(kDofsPerNode * mesh.nodeCount()),
-      skin_membrane_(skin_membrane),
-      residual_stiffness_(residual_stiffness) {
+                               const FilmLaw& film)
+    : dof_count_(kDofsPerNode * mesh.nodeCount()), skin_membrane_(skin_membrane), film_(film) {
   if (skin_membrane == SkinMembrane::kTensionField) {
-    if (!(residual_stiffness > 0.0 && residual_stiffness <= 1.0))
-      throw std::invalid_argument("von Karman terms: the tension field's residual stiffness " +
-                                  std::to_string(residual_stiffness) + " is outside (0, 1]");
+    std::string why;
+    if (!film.IsValid(&why)) throw std::invalid_argument("von Karman terms: " + why);
     if (wing_structure.wing.skin.pretension_N_per_m != 0.0)
       throw std::invalid_argument(
           "von Karman terms: a tension-field skin with a pretension is not built (the shrunk "
@@ -120,9 +117,23 @@ VonKarmanTerms::VonKarmanTerms(const WingStructure& wing_structure, const WingMe
   }
 }
 
-RelaxedMembrane VonKarmanTerms::skinLaw(const Vec3& strain) const {
+std::vector<FilmState> VonKarmanTerms::facetStates(const Eigen::VectorXd& u) const {
+  if (u.size() != dof_count_) throw std::invalid_argument("von Karman: displacement size");
+  std::vector<FilmState> states(facets_.size(), FilmState::kTaut);
+  if (skin_membrane_ != SkinMembrane::kTensionField) return states;
+  for (std::size_t i = 0; i < facets_.size(); ++i) {
+    const Facet& e = facets_[i];
+    const Vec9 l = facetLocal(e, u);
+    states[i] = skinLaw(e.b_m * membraneDofs(l) + etaOf(e.grad * normalDofs(l)),
+                        FilmOutput::kEnergyAndStress)
+                    .state;
+  }
+  return states;
+}
+
+RelaxedMembrane VonKarmanTerms::skinLaw(const Vec3& strain, FilmOutput output) const {
   if (skin_membrane_ == SkinMembrane::kTensionField)
-    return relaxedMembrane(strain, skin_et_n_per_m_, skin_nu_, residual_stiffness_);
+    return relaxedMembrane(strain, skin_et_n_per_m_, skin_nu_, film_, output);
   RelaxedMembrane elastic;
   elastic.stress_n_per_m = c_t_ * strain;
   elastic.tangent_n_per_m = c_t_;
@@ -138,7 +149,7 @@ Eigen::VectorXd VonKarmanTerms::internalForce(const Eigen::VectorXd& u) const {
     const Vec2 g = e.grad * normalDofs(l);
     const Vec3 eps0 = e.b_m * membraneDofs(l);
     const Vec3 eta = etaOf(g);
-    const RelaxedMembrane law = skinLaw(eps0 + eta);
+    const RelaxedMembrane law = skinLaw(eps0 + eta, FilmOutput::kEnergyAndStress);
     const Vec3& n_total = law.stress_n_per_m;
     // The linear part C eps0 is K's (CST): only the rest is added here (for the elastic law
     // exactly C eta, without the round-off of N - C eps0 when eta << eps0).
@@ -176,7 +187,8 @@ double VonKarmanTerms::energy(const Eigen::VectorXd& u) const {
     // W(eps0 + eta) less K's linear part 1/2 eps0^T C eps0 (elastic: written out, exact).
     pi += skin_membrane_ == SkinMembrane::kElastic
               ? e.area_m2 * (eps0.dot(c_t_ * eta) + 0.5 * eta.dot(c_t_ * eta))
-              : e.area_m2 * (skinLaw(eps0 + eta).energy_j_per_m2 - 0.5 * eps0.dot(c_t_ * eps0));
+              : e.area_m2 * (skinLaw(eps0 + eta, FilmOutput::kEnergyAndStress).energy_j_per_m2 -
+                             0.5 * eps0.dot(c_t_ * eps0));
   }
   for (const Member& m : members_) {
     const Vec3 du = u.segment<3>(globalDof(m.nodes[1], kU)) - u.segment<3>(globalDof(m.nodes[0], kU));
@@ -194,7 +206,8 @@ Eigen::Matrix3Xd VonKarmanTerms::membraneForces(const Eigen::VectorXd& u) const 
     const Facet& e = facets_[i];
     const Vec9 l = facetLocal(e, u);
     n.col(static_cast<Eigen::Index>(i)) =
-        skinLaw(e.b_m * membraneDofs(l) + etaOf(e.grad * normalDofs(l))).stress_n_per_m;
+        skinLaw(e.b_m * membraneDofs(l) + etaOf(e.grad * normalDofs(l)), FilmOutput::kEnergyAndStress)
+            .stress_n_per_m;
   }
   return n;
 }
@@ -275,6 +288,7 @@ bool NonlinearStaticOptions::IsValid(std::string* why) const {
     return fail("force_tolerance: expected in (0, 1)");
   if (!(displacement_tolerance > 0.0 && displacement_tolerance < 1.0))
     return fail("displacement_tolerance: expected in (0, 1)");
+  if (skin_membrane == SkinMembrane::kTensionField && !film.IsValid(why)) return false;
   return true;
 }
 
@@ -397,7 +411,7 @@ NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const
   addSkinPretension(wing_structure, mesh, support, &fe);
   const DofPartition part = makeDofPartition(fe.active, wingBoundaryDofs(mesh, support));
   const VonKarmanTerms terms(wing_structure, mesh, MemberStretch::kBothTransverse,
-                            options.skin_membrane);
+                            options.skin_membrane, options.film);
   return solveNonlinearStatic(fe.stiffness, terms, part, load, options);
 }
 

@@ -65,14 +65,14 @@ enum class SkinMembrane {
 /// The per-element data of the nonlinear strain terms, built once from a mesh.
 class VonKarmanTerms {
  public:
-  /// `residual_stiffness` is the tension field's kappa (ignored for kElastic). Throws
+  /// `film` is the tension field's law (kappa, compression cap; ignored for kElastic). Throws
   /// std::invalid_argument for a tension field with a skin pretension (a film shrunk onto the
   /// frame, skin_pretension.hpp: its strain is not measured from the flat mesh, not built yet)
-  /// or kappa outside (0, 1].
+  /// or an invalid law (FilmLaw::IsValid).
   VonKarmanTerms(const WingStructure& wing_structure, const WingMesh& mesh,
                  MemberStretch member_stretch = MemberStretch::kBothTransverse,
                  SkinMembrane skin_membrane = SkinMembrane::kElastic,
-                 double residual_stiffness = kTensionFieldResidualStiffness);
+                 const FilmLaw& film = {});
 
   int dofCount() const { return dof_count_; }
 
@@ -87,6 +87,8 @@ class VonKarmanTerms {
   /// triad (N/m), the linear part C B_m d included (the relaxed stress of a tension field):
   /// 3 x facets.
   Eigen::Matrix3Xd membraneForces(const Eigen::VectorXd& u) const;
+  /// The state of each skin facet's film at u (every facet taut for the elastic law).
+  std::vector<FilmState> facetStates(const Eigen::VectorXd& u) const;
 
   // Element data, read by the modal condensation (membrane_rom.cpp).
   struct Facet {
@@ -108,8 +110,10 @@ class VonKarmanTerms {
   const Mat3& membraneStiffness() const { return c_t_; }  ///< C (N/m)
 
  private:
-  /// The skin's membrane law at the membrane strain eps: energy per area, stress, tangent.
-  RelaxedMembrane skinLaw(const Vec3& strain) const;
+  /// The skin's membrane law at the membrane strain eps: energy per area, stress and (with
+  /// kWithTangent) tangent.
+  RelaxedMembrane skinLaw(const Vec3& strain,
+                          FilmOutput output = FilmOutput::kWithTangent) const;
 
   int dof_count_ = 0;
   std::vector<Facet> facets_;
@@ -118,7 +122,7 @@ class VonKarmanTerms {
   SkinMembrane skin_membrane_ = SkinMembrane::kElastic;
   double skin_et_n_per_m_ = 0.0;  ///< E t of the skin
   double skin_nu_ = 0.0;
-  double residual_stiffness_ = kTensionFieldResidualStiffness;
+  FilmLaw film_;
 };
 
 struct NonlinearStaticOptions {
@@ -130,6 +134,7 @@ struct NonlinearStaticOptions {
   /// The skin's membrane law; read by solveWingStatic, which builds the terms (solveNonlinearStatic
   /// takes them built).
   SkinMembrane skin_membrane = SkinMembrane::kElastic;
+  FilmLaw film;  ///< the tension field's law (with kTensionField)
   bool IsValid(std::string* why) const;
 };
 

@@ -3,6 +3,7 @@
 //
 //   orni_flapping_reference VEHICLE.toml [--shapes P1,P2,...] [--modes N] [--rom-cycles N]
 //                           [--full-cycles N] [--steps-per-cycle N] [--csv FILE] [--tension-field]
+//                           [--film-cap NC]
 //
 // 1. The tethered run of the vehicle at its design point (the reduced nonlinear wing, the
 //    vehicle's basis, or its modes with the nonlinear static shapes at --shapes) to its periodic
@@ -15,6 +16,8 @@
 // 3. The two wings' section twist, mid-chord deflection and tip deflection over the last cycle.
 // --tension-field: the full wing's skin is a tension-field film (structure/tension_field.hpp), which
 //    wrinkles instead of carrying compression; the reduced wing keeps its elastic membrane.
+//    --film-cap NC (N/m, with --tension-field): the compression the wrinkled film keeps (its
+//    wrinkles' buckling load, FilmLaw::compression_cap_n_per_m; default 0).
 //
 // If the full wing's response to the reduced orbit's loads is the reduced orbit, that orbit is
 // (to the difference measured) also an orbit of the full model: the loads depend on the wing only
@@ -28,6 +31,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -43,6 +47,7 @@
 #include "core/structure/skin_pretension.hpp"
 #include "core/structure/wing_transient.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
+#include "studies/tools/tool_args.hpp"
 
 namespace {
 
@@ -58,33 +63,24 @@ struct Args {
   int steps = 200;
   std::string csv;
   bool tension_field = false;  // the full wing's skin a tension-field film (tension_field.hpp)
+  double film_cap_npm = 0.0;   // its compression cap
 };
 
 [[noreturn]] void usage(const std::string& why) {
-  std::cerr << "orni_flapping_reference: " << why
-            << "\nusage: orni_flapping_reference VEHICLE.toml [--shapes P1,P2,...] [--modes N]"
-               " [--rom-cycles N] [--full-cycles N] [--steps-per-cycle N] [--csv FILE]"
-               " [--tension-field]\n";
-  std::exit(2);
+  orni::tools::exitWithUsage(
+      "orni_flapping_reference",
+      "orni_flapping_reference VEHICLE.toml [--shapes P1,P2,...] [--modes N] [--rom-cycles N]"
+      " [--full-cycles N] [--steps-per-cycle N] [--csv FILE] [--tension-field] [--film-cap NC]",
+      why);
 }
 
 int toInt(const std::string& option, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const int v = std::stoi(text, &used);
-    if (used == text.size()) return v;
-  } catch (const std::exception&) {
-  }
+  if (const std::optional<int> v = orni::tools::parseInt(text)) return *v;
   usage(option + ": expected an integer, got '" + text + "'");
 }
 
 double toNumber(const std::string& option, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double v = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(v)) return v;
-  } catch (const std::exception&) {
-  }
+  if (const std::optional<double> v = orni::tools::parseNumber(text)) return *v;
   usage(option + ": expected a number, got '" + text + "'");
 }
 
@@ -98,10 +94,10 @@ Args parseArgs(int argc, char** argv) {
     const std::string s = argv[i];
     if (s == "--shapes") {
       a.shapes_given = true;
-      std::stringstream ss(number(i));
-      std::string item;
-      while (std::getline(ss, item, ','))
-        if (!item.empty()) a.shapes.push_back(toNumber(s, item));
+      const std::string list = number(i);
+      const std::optional<std::vector<double>> shapes = orni::tools::parseNumberList(list);
+      if (!shapes) usage(s + ": expected comma-separated numbers, got '" + list + "'");
+      a.shapes = *shapes;
     } else if (s == "--modes") {
       a.modes = toInt(s, number(i));
     } else if (s == "--rom-cycles") {
@@ -112,17 +108,17 @@ Args parseArgs(int argc, char** argv) {
       a.steps = toInt(s, number(i));
     } else if (s == "--tension-field") {
       a.tension_field = true;
+    } else if (s == "--film-cap") {
+      a.film_cap_npm = toNumber(s, number(i));
+      if (a.film_cap_npm < 0.0) usage("--film-cap: expected a compression cap >= 0 N/m");
     } else if (s == "--csv") {
       a.csv = number(i);
-    } else if (!s.empty() && s[0] == '-') {
-      usage("unknown option " + s);
-    } else if (a.vehicle.empty()) {
-      a.vehicle = s;
-    } else {
-      usage("one vehicle file");
+    } else if (const std::string why = orni::tools::takeVehicleArgument(s, &a.vehicle); !why.empty()) {
+      usage(why);
     }
   }
   if (a.vehicle.empty()) usage("no vehicle file");
+  if (a.film_cap_npm > 0.0 && !a.tension_field) usage("--film-cap needs --tension-field");
   if (a.rom_cycles < 1 || a.full_cycles < 1 || a.steps < 8) usage("cycles >= 1, steps >= 8");
   return a;
 }
@@ -211,9 +207,12 @@ int main(int argc, char** argv) {
     structure::addSkinPretension(ws, mw.mesh, mo.support, &fe);
     const structure::DofPartition part =
         structure::makeDofPartition(fe.active, structure::wingBoundaryDofs(mw.mesh, mo.support));
+    structure::FilmLaw film;
+    film.compression_cap_n_per_m = args.film_cap_npm;
     const structure::VonKarmanTerms terms(
         ws, mw.mesh, structure::MemberStretch::kBothTransverse,
-        args.tension_field ? structure::SkinMembrane::kTensionField : structure::SkinMembrane::kElastic);
+        args.tension_field ? structure::SkinMembrane::kTensionField : structure::SkinMembrane::kElastic,
+        film);
     std::vector<Eigen::Vector3d> nodes;
     const Eigen::Vector3d p2 = mw.mesh.nodes_W_m[static_cast<std::size_t>(mw.mesh.p2_node)];
     for (const auto& x : mw.mesh.nodes_W_m) nodes.push_back(x - p2);
