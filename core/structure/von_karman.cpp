@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/structure/beam_element.hpp"
+#include "core/structure/corotational.hpp"
 #include "core/structure/geometric_stiffness.hpp"
 #include "core/structure/product_blocking.hpp"
 #include "core/structure/shell_element.hpp"
@@ -293,7 +294,7 @@ bool NonlinearStaticOptions::IsValid(std::string* why) const {
 }
 
 NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
-                                           const VonKarmanTerms& terms, const DofPartition& part,
+                                           const StaticNonlinearity& terms, const DofPartition& part,
                                            const Eigen::VectorXd& load,
                                            const NonlinearStaticOptions& options) {
   planProductsWithFixedCacheSizes();  // the same bits on every CPU (docs/theory.md 3.7)
@@ -410,6 +411,11 @@ NonlinearStaticResult solveWingStatic(const WingStructure& wing_structure, const
   WingFeModel fe = assembleWingFe(wing_structure, mesh);
   addSkinPretension(wing_structure, mesh, support, &fe);
   const DofPartition part = makeDofPartition(fe.active, wingBoundaryDofs(mesh, support));
+  if (options.kinematics == StrainKinematics::kCoRotational) {
+    const CoRotationalTerms terms(wing_structure, mesh, fe.stiffness, options.skin_membrane,
+                                  options.film);
+    return solveNonlinearStatic(fe.stiffness, terms, part, load, options);
+  }
   const VonKarmanTerms terms(wing_structure, mesh, MemberStretch::kBothTransverse,
                             options.skin_membrane, options.film);
   return solveNonlinearStatic(fe.stiffness, terms, part, load, options);

@@ -19,7 +19,10 @@
 // moderate (the stiffened chord's slopes are of order 0.1), where von Karman's strain is the
 // consistent second-order approximation; it separates the flat wing's in-plane and out-of-plane
 // unknowns, which makes the exact static condensation of the membrane in the modal model possible
-// (membrane_rom.hpp). Checked against CalculiX with NLGEOM (a full large-rotation solution).
+// (membrane_rom.hpp). Checked against CalculiX with NLGEOM (a full large-rotation solution). Where
+// parts of the wing rotate by more than ~10 deg it errs by the rotations' higher powers (2.8 % at
+// 14 deg, 10.5 % at 26 deg on a cantilever): the co-rotational wing (corotational.hpp) is the
+// static reference there.
 #pragma once
 
 #include <string>
@@ -30,6 +33,7 @@
 #include "core/structure/dof_partition.hpp"
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/fe_types.hpp"
+#include "core/structure/static_nonlinearity.hpp"
 #include "core/structure/tension_field.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "core/structure/wing_structure.hpp"
@@ -63,7 +67,7 @@ enum class SkinMembrane {
 };
 
 /// The per-element data of the nonlinear strain terms, built once from a mesh.
-class VonKarmanTerms {
+class VonKarmanTerms final : public StaticNonlinearity {
  public:
   /// `film` is the tension field's law (kappa, compression cap; ignored for kElastic). Throws
   /// std::invalid_argument for a tension field with a skin pretension (a film shrunk onto the
@@ -74,14 +78,14 @@ class VonKarmanTerms {
                  SkinMembrane skin_membrane = SkinMembrane::kElastic,
                  const FilmLaw& film = {});
 
-  int dofCount() const { return dof_count_; }
+  int dofCount() const override { return dof_count_; }
 
   /// grad Pi_NL at the displacement u (6n): the internal force beyond K u (N, N m).
-  Eigen::VectorXd internalForce(const Eigen::VectorXd& u) const;
+  Eigen::VectorXd internalForce(const Eigen::VectorXd& u) const override;
   /// Pi_NL(u) (J).
-  double energy(const Eigen::VectorXd& u) const;
+  double energy(const Eigen::VectorXd& u) const override;
   /// hess Pi_NL at u (6n x 6n, symmetric, translational DOFs only): the tangent beyond K.
-  SparseMatrix tangent(const Eigen::VectorXd& u) const;
+  SparseMatrix tangent(const Eigen::VectorXd& u) const override;
 
   /// Membrane force resultants of the skin facets at u, (N_xx, N_yy, N_xy) per facet in its
   /// triad (N/m), the linear part C B_m d included (the relaxed stress of a tension field):
@@ -125,6 +129,13 @@ class VonKarmanTerms {
   FilmLaw film_;
 };
 
+/// The strain measures of the nonlinear static wing.
+enum class StrainKinematics {
+  kVonKarman,     ///< moderate rotations (this file): what the modal condensation reduces
+  kCoRotational,  ///< large rotations (corotational.hpp): the reference where parts of the
+                  ///< wing rotate by more than about 10 deg (FeVonKarmanValidity)
+};
+
 struct NonlinearStaticOptions {
   bool nonlinear = true;         ///< false: the linear solution K u = F (for comparison)
   int load_steps = 8;            ///< load increments, geometric from 1 % to the full load
@@ -135,6 +146,9 @@ struct NonlinearStaticOptions {
   /// takes them built).
   SkinMembrane skin_membrane = SkinMembrane::kElastic;
   FilmLaw film;  ///< the tension field's law (with kTensionField)
+  /// Read by solveWingStatic: the von Karman terms or the co-rotational wing (whose rotation
+  /// DOFs in the result are rotation vectors of the nodes' total rotations).
+  StrainKinematics kinematics = StrainKinematics::kVonKarman;
   bool IsValid(std::string* why) const;
 };
 
@@ -150,7 +164,7 @@ struct NonlinearStaticResult {
 /// the clamped DOFs held at zero) by Newton's method with load increments and an Armijo line
 /// search on the total potential energy. `stiffness` is the assembled (possibly prestressed) K.
 NonlinearStaticResult solveNonlinearStatic(const SparseMatrix& stiffness,
-                                           const VonKarmanTerms& terms, const DofPartition& part,
+                                           const StaticNonlinearity& terms, const DofPartition& part,
                                            const Eigen::VectorXd& load,
                                            const NonlinearStaticOptions& options = {});
 

@@ -4,7 +4,8 @@
 //
 //   orni_film_static VEHICLE.toml [--pressure PA] [--film elastic|tension-field]
 //                    [--kappa K1,K2,...] [--cap NC1,NC2,...] [--increments N]
-//                    [--max-newton N] [--csv FILE]
+//                    [--max-newton N] [--kinematics von-karman|co-rotational] [--csv FILE]
+//                    [--ccx-deck FILE.inp]
 //
 // One static solution (structure/von_karman.hpp, solveWingStatic: every retained DOF, Newton with
 // load increments) per (kappa, cap) pair of the lists, at --pressure (default 53 Pa, about the
@@ -13,7 +14,14 @@
 // film's facet states (taut, wrinkled, slack) and the largest skin slope |grad w| with the angle it
 // stands for: von Karman's strains keep the squares of the slopes and drop their higher powers, so
 // slopes well below 1 (angles below ~15 deg) are its range; above it the answer is a trend, not a
-// number. The elastic film ignores --kappa and --cap (one solution).
+// number. --kinematics co-rotational solves the large-rotation wing instead (corotational.hpp),
+// and the slope column is then the largest rotation of a facet's plane, as its tangent. The
+// elastic film ignores --kappa and --cap (one solution). Exit status 3 when a solution did not
+// converge (its line says why), 2 for bad arguments, 1 for a file that cannot be read.
+// --ccx-deck also writes the same wing, support and pressure as a CalculiX deck with NLGEOM (S6
+// skin, B32R rods, calculix_deck.hpp; an elastic skin whatever --film says: CalculiX has no
+// wrinkling law), dead load, static steps at 10, 25, 50, 75 and 100 % of the load, printing the
+// mid-span and tip sections' edge nodes (CalculiX node = our node + 1): `ccx -i FILE` runs it.
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include "core/structure/calculix_deck.hpp"
+#include "core/structure/corotational.hpp"
 #include "core/structure/dof_partition.hpp"
 #include "core/structure/fe_assembly.hpp"
 #include "core/structure/modal_wing.hpp"
@@ -48,14 +58,16 @@ struct Args {
   std::vector<double> caps{0.0};
   int increments = 10;
   int max_newton = 400;  // the film's Hessian jumps between states: 80-400 iterations an increment
+  bool corotational = false;
   std::string csv;
+  std::string ccx_deck;
 };
 
 [[noreturn]] void usage(const std::string& why) {
   tools::exitWithUsage("orni_film_static",
                        "orni_film_static VEHICLE.toml [--pressure PA] [--film elastic|tension-field]"
                        " [--kappa K1,K2,...] [--cap NC1,NC2,...] [--increments N] [--max-newton N]"
-                       " [--csv FILE]",
+                       " [--kinematics von-karman|co-rotational] [--csv FILE] [--ccx-deck FILE.inp]",
                        why);
 }
 
@@ -85,6 +97,10 @@ Args parseArgs(int argc, char** argv) {
     const std::string s = argv[i];
     if (s == "--csv") {
       a.csv = value(i);
+    } else if (s == "--ccx-deck") {
+      a.ccx_deck = value(i);
+      if (a.ccx_deck.size() < 5 || a.ccx_deck.substr(a.ccx_deck.size() - 4) != ".inp")
+        usage("--ccx-deck: expected a file name ending in .inp, got '" + a.ccx_deck + "'");
     } else if (s == "--pressure") {
       a.pressure_pa = toNumber(s, value(i));
     } else if (s == "--film") {
@@ -98,6 +114,11 @@ Args parseArgs(int argc, char** argv) {
       a.caps = toList(s, value(i));
     } else if (s == "--increments") {
       a.increments = toInt(s, value(i));
+    } else if (s == "--kinematics") {
+      const std::string k = value(i);
+      if (k != "von-karman" && k != "co-rotational")
+        usage("--kinematics: expected von-karman or co-rotational, got '" + k + "'");
+      a.corotational = k == "co-rotational";
     } else if (s == "--max-newton") {
       a.max_newton = toInt(s, value(i));
     } else if (const std::string why = orni::tools::takeVehicleArgument(s, &a.vehicle); !why.empty()) {
@@ -161,10 +182,35 @@ int main(int argc, char** argv) {
     const ModalWingOptions mo = modalWingOptionsOf(v.wing.fe);
     const Eigen::VectorXd load = uniformLiftLoad(mesh, args.pressure_pa);
     const std::size_t mid = mesh.strip_nodes.size() / 2, tip = mesh.strip_nodes.size() - 1;
-    std::printf("%s: %zu nodes, %zu facets, %zu members; %.2f Pa of lift, %s film, %d increments\n",
+    std::printf("%s: %zu nodes, %zu facets, %zu members; %.2f Pa of lift, %s film, %s, %d "
+                "increments\n",
                 args.vehicle.c_str(), mesh.nodes_W_m.size(), mesh.triangles.size(),
                 mesh.beams.size(), args.pressure_pa,
-                args.tension_field ? "tension-field" : "elastic", args.increments);
+                args.tension_field ? "tension-field" : "elastic",
+                args.corotational ? "co-rotational" : "von Karman", args.increments);
+    if (!args.ccx_deck.empty()) {
+      CalculixDeckOptions d;
+      d.frequency_step = false;
+      d.p3_joint = mo.support.p3_joint;
+      d.p3_cross_axis_normal = mo.support.p3_cross_axis == UniversalJointCrossAxis::kZW;
+      d.root_edge_pinned = mo.support.root_edge_pinned;
+      d.static_steps.nlgeom = true;
+      d.static_steps.load_factors = {0.1, 0.25, 0.5, 0.75, 1.0};
+      d.static_steps.load.skin_pressure_pa = -args.pressure_pa;  // lift acts along -z_W
+      for (const std::size_t strip : {mid, tip}) {
+        d.static_steps.print_nodes.push_back(mesh.strip_nodes[strip].leading_edge);
+        d.static_steps.print_nodes.push_back(mesh.strip_nodes[strip].trailing_edge);
+      }
+      std::ofstream deck(args.ccx_deck);
+      deck << calculixDeck(v, mesh, d);
+      if (!deck.flush()) throw std::runtime_error("cannot write " + args.ccx_deck);
+      std::printf("CalculiX deck %s: mid-span LE / TE nodes %d / %d, tip %d / %d (CalculiX "
+                  "numbering)\n",
+                  args.ccx_deck.c_str(), mesh.strip_nodes[mid].leading_edge + 1,
+                  mesh.strip_nodes[mid].trailing_edge + 1, mesh.strip_nodes[tip].leading_edge + 1,
+                  mesh.strip_nodes[tip].trailing_edge + 1);
+    }
+    int failures = 0;
     std::ofstream csv;
     if (!args.csv.empty()) {
       csv.open(args.csv);
@@ -181,12 +227,24 @@ int main(int argc, char** argv) {
         o.skin_membrane = args.tension_field ? SkinMembrane::kTensionField : SkinMembrane::kElastic;
         o.film.residual_stiffness = kappa;
         o.film.compression_cap_n_per_m = cap;
+        o.kinematics = args.corotational ? StrainKinematics::kCoRotational
+                                         : StrainKinematics::kVonKarman;
         const NonlinearStaticResult r = solveWingStatic(v, mesh, mo.support, load, o);
-        const VonKarmanTerms terms(v, mesh, MemberStretch::kBothTransverse, o.skin_membrane, o.film);
+        if (!r.converged) ++failures;
         int counts[3] = {0, 0, 0};
-        for (const FilmState s : terms.facetStates(r.displacement)) ++counts[static_cast<int>(s)];
+        double slope = 0.0;
+        if (args.corotational) {
+          const CoRotationalTerms terms(v, mesh, assembleWingFe(v, mesh).stiffness,
+                                        o.skin_membrane, o.film);
+          for (const FilmState s : terms.facetStates(r.displacement)) ++counts[static_cast<int>(s)];
+          slope = std::tan(terms.largestFacetTilt(r.displacement));
+        } else {
+          const VonKarmanTerms terms(v, mesh, MemberStretch::kBothTransverse, o.skin_membrane,
+                                     o.film);
+          for (const FilmState s : terms.facetStates(r.displacement)) ++counts[static_cast<int>(s)];
+          slope = largestSlope(terms, r.displacement);
+        }
         const Section m = sectionOf(mesh, r.displacement, mid), t = sectionOf(mesh, r.displacement, tip);
-        const double slope = largestSlope(terms, r.displacement);
         std::printf("kappa %.1e, cap %.1f N/m: %s after %d Newton iterations\n"
                     "  mid-span: LE up %.3f mm, TE up %.3f mm, pitch %.2f deg\n"
                     "  tip:      LE up %.3f mm, TE up %.3f mm, pitch %.2f deg\n"
@@ -207,6 +265,10 @@ int main(int argc, char** argv) {
           csv << line << std::flush;
         }
       }
+    if (failures > 0) {
+      std::fprintf(stderr, "orni_film_static: %d of the solutions did not converge\n", failures);
+      return 3;
+    }
   } catch (const std::exception& e) {
     std::cerr << "orni_film_static: " << e.what() << "\n";
     return 1;
