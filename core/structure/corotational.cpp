@@ -2,8 +2,10 @@
 #include "core/structure/corotational.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <type_traits>
 
 #include "core/structure/beam_element.hpp"
@@ -251,6 +253,35 @@ void facetMembraneExactTangentOf(const CoRotationalTerms::Facet& f, const Lookup
     }
 }
 
+// f(begin, end) over the elements [0, count) in contiguous blocks, one per thread (the first on
+// this one; at most 4, the machine's cores). Every element's result is the same arithmetic on any
+// thread and the callers sum them in element order, so the bits do not depend on the count.
+template <class F>
+void forElementBlocks(std::size_t count, const F& f) {
+  const std::size_t threads =
+      std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 4);
+  const std::size_t blocks = std::max<std::size_t>(1, std::min(threads, count / 64));
+  const std::size_t per = (count + blocks - 1) / std::max<std::size_t>(blocks, 1);
+  std::vector<std::thread> pool;
+  std::vector<std::exception_ptr> errors(blocks);
+  for (std::size_t b = 1; b < blocks; ++b)
+    pool.emplace_back([&f, &errors, b, per, count] {
+      try {
+        f(std::min(count, b * per), std::min(count, (b + 1) * per));
+      } catch (...) {
+        errors[b] = std::current_exception();
+      }
+    });
+  try {
+    f(std::size_t{0}, std::min(count, per));
+  } catch (...) {
+    errors[0] = std::current_exception();
+  }
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+}
+
 template <std::size_t K, class Matrix>
 void scatterBlock(const Matrix& ke, const std::array<int, K>& nodes, std::vector<Triplet>* out) {
   for (std::size_t b = 0; b < K; ++b)
@@ -341,17 +372,22 @@ CoRotationalTerms::CoRotationalTerms(const WingStructure& wing_structure, const 
 double CoRotationalTerms::strainEnergy(const Eigen::VectorXd& u) const {
   if (u.size() != dof_count_) throw std::invalid_argument("co-rotational wing: displacement size");
   const SkinLaw law{skin_membrane_, membrane_c_, skin_et_n_per_m_, skin_nu_, film_};
-  double total = 0.0;
-  for (const Facet& f : facets_) {
-    std::array<V3<double>, 3> x, psi;
-    gather(f.nodes, x0_, u, &x, &psi);
-    total += facetEnergy(f, x, psi, law);
-  }
-  for (const Member& m : members_) {
+  std::vector<double> facet(facets_.size()), member(members_.size());
+  forElementBlocks(facets_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      std::array<V3<double>, 3> x, psi;
+      gather(facets_[i].nodes, x0_, u, &x, &psi);
+      facet[i] = facetEnergy(facets_[i], x, psi, law);
+    }
+  });
+  for (std::size_t i = 0; i < members_.size(); ++i) {
     std::array<V3<double>, 2> x, psi;
-    gather(m.nodes, x0_, u, &x, &psi);
-    total += memberEnergy(m, x, psi);
+    gather(members_[i].nodes, x0_, u, &x, &psi);
+    member[i] = memberEnergy(members_[i], x, psi);
   }
+  double total = 0.0;
+  for (const double e : facet) total += e;
+  for (const double e : member) total += e;
   return total;
 }
 
@@ -364,12 +400,16 @@ Eigen::VectorXd CoRotationalTerms::strainForce(const Eigen::VectorXd& u) const {
   const auto member_energy = [](const Member& m, const auto& x, const auto& psi) {
     return memberEnergy(m, x, psi);
   };
+  std::vector<Eigen::Matrix<double, 18, 1>> facet(facets_.size());
+  forElementBlocks(facets_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      facet[i] = elementGradient<18>(facets_[i], facets_[i].nodes, x0_, u, facet_energy);
+  });
   Eigen::VectorXd force = Eigen::VectorXd::Zero(dof_count_);
-  for (const Facet& f : facets_) {
-    const Eigen::Matrix<double, 18, 1> g = elementGradient<18>(f, f.nodes, x0_, u, facet_energy);
+  for (std::size_t i = 0; i < facets_.size(); ++i)
     for (int a = 0; a < 3; ++a)
-      force.segment<6>(globalDof(f.nodes[static_cast<std::size_t>(a)], 0)) += g.segment<6>(6 * a);
-  }
+      force.segment<6>(globalDof(facets_[i].nodes[static_cast<std::size_t>(a)], 0)) +=
+          facet[i].segment<6>(6 * a);
   for (const Member& m : members_) {
     const Eigen::Matrix<double, 12, 1> g = elementGradient<12>(m, m.nodes, x0_, u, member_energy);
     for (int a = 0; a < 2; ++a)
@@ -407,19 +447,23 @@ SparseMatrix CoRotationalTerms::strainTangent(const Eigen::VectorXd& u) const {
   };
   std::vector<Triplet> triplets;
   triplets.reserve(324 * facets_.size() + 144 * members_.size());
-  Mat18 kf;
-  for (const Facet& f : facets_) {
-    if (facet_tangent_ == FacetTangent::kDifferences)
-      differences(f, f.nodes, f.size_m, facet_energy, &kf);
-    else
-      facetMembraneExactTangent(f, u, law, &kf);
-    scatterBlock(kf, f.nodes, &triplets);
-  }
-  Mat12 km;
-  for (const Member& m : members_) {
-    differences(m, m.nodes, m.length_m, member_energy, &km);
-    scatterBlock(km, m.nodes, &triplets);
-  }
+  std::vector<Mat18> facet(facets_.size());
+  forElementBlocks(facets_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      if (facet_tangent_ == FacetTangent::kDifferences)
+        differences(facets_[i], facets_[i].nodes, facets_[i].size_m, facet_energy, &facet[i]);
+      else
+        facetMembraneExactTangent(facets_[i], u, law, &facet[i]);
+    }
+  });
+  std::vector<Mat12> member(members_.size());
+  forElementBlocks(members_.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      differences(members_[i], members_[i].nodes, members_[i].length_m, member_energy, &member[i]);
+  });
+  for (std::size_t i = 0; i < facets_.size(); ++i) scatterBlock(facet[i], facets_[i].nodes, &triplets);
+  for (std::size_t i = 0; i < members_.size(); ++i)
+    scatterBlock(member[i], members_[i].nodes, &triplets);
   SparseMatrix k(dof_count_, dof_count_);
   k.setFromTriplets(triplets.begin(), triplets.end());
   return k;

@@ -11,6 +11,10 @@
 //     nonlinear within 2x the linear.
 //   BM_TetheredEfwFlexible10CyclesHistories: the linear run recorded at 100 samples a cycle;
 //     target: at most 20 % over the run without histories.
+//   BM_EfwCoRotational: one evaluation of the large-rotation static wing (corotational.hpp) of the
+//     literal EFW at a deflected state (3504 facets, 435 members), what each Newton iteration of
+//     orni_film_static --kinematics co-rotational costs: part 0 the internal force, 1 the tangent;
+//     film 0 the elastic skin, 1 the wrinkling film (20 N/m cap). No target (a reference tool).
 //   BM_FlexibleTetheredRhs: one right-hand side of that run; BM_FlexibleTetheredSample: one
 //     history sample evaluated at the state; BM_FlexibleTetheredSampleFromDerivative: one from
 //     the dense output (the histories' default).
@@ -22,7 +26,10 @@
 #include "core/dynamics/flexible_tethered.hpp"
 #include "core/dynamics/flexible_wing.hpp"
 #include "core/dynamics/tethered_simulation.hpp"
+#include "core/structure/corotational.hpp"
+#include "core/structure/fe_assembly.hpp"
 #include "core/structure/modal_wing.hpp"
+#include "core/structure/static_shapes.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "studies/runner/config/vehicle_file.hpp"
 
@@ -221,5 +228,41 @@ BENCHMARK(BM_FlexibleTetheredSampleFromDerivative)
     ->Arg(0)
     ->Arg(1)
     ->Unit(benchmark::kMicrosecond);
+
+// The co-rotational EFW at a deflected state: the linear answer to 1 Pa of lift, times 10.
+void BM_EfwCoRotational(benchmark::State& state) {
+  const VehicleModel v = efwFile().model;
+  const structure::WingMesh mesh = structure::buildWingMesh(v, v.wing.fe.element_size_m);
+  const structure::WingFeModel fe = structure::assembleWingFe(v, mesh);
+  structure::FilmLaw film;
+  film.compression_cap_n_per_m = 20.0;
+  const structure::CoRotationalTerms terms(
+      v, mesh, fe.stiffness,
+      state.range(1) != 0 ? structure::SkinMembrane::kTensionField : structure::SkinMembrane::kElastic,
+      film);
+  structure::NonlinearStaticOptions linear;
+  linear.nonlinear = false;
+  const Eigen::VectorXd u =
+      10.0 * structure::solveWingStatic(v, mesh, structure::WingSupport::of(v.wing.fe),
+                                        structure::uniformLiftLoad(mesh, 1.0), linear)
+                 .displacement;
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      const Eigen::VectorXd f = terms.strainForce(u);
+      benchmark::DoNotOptimize(f.data());
+    } else {
+      const structure::SparseMatrix k = terms.strainTangent(u);
+      benchmark::DoNotOptimize(k.valuePtr());
+    }
+  }
+  state.counters["elements"] = static_cast<double>(mesh.triangles.size() + mesh.beams.size());
+}
+BENCHMARK(BM_EfwCoRotational)
+    ->ArgNames({"part", "film"})
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
