@@ -51,6 +51,21 @@ awk -v e="$elastic_te" -v c="$corot_te" 'BEGIN { r = c / e; exit !(e > 0 && r > 
   fail "co-rotational mid-span TE '$corot_te' mm against von Karman's $elastic_te mm"
 echo "co-rotational mid-span trailing edge at 1 Pa: $corot_te mm"
 
+# The CalculiX deck of the same wing and load: NLGEOM, five static steps, the four section nodes
+# printed, the load on the skin.
+"$tool" "$vehicle" --pressure 1 --increments 2 --film elastic --ccx-deck "$scratch/efw_nl.inp" \
+  >"$scratch/deck.log" || fail "the run with --ccx-deck failed"
+[[ $(grep -c '^\*STEP, NLGEOM' "$scratch/efw_nl.inp") -eq 5 ]] || fail "expected 5 NLGEOM steps in the deck"
+grep -q '^\*NODE PRINT' "$scratch/efw_nl.inp" || fail "the deck prints no nodes"
+grep -q "CalculiX deck .*efw_nl.inp: mid-span LE / TE nodes" "$scratch/deck.log" ||
+  fail "the run did not name the deck's printed nodes"
+
+# A solution that does not converge is exit 3 with its reason.
+out=$("$tool" "$vehicle" --pressure 1 --increments 1 --max-newton 1 --film elastic 2>&1)
+rc=$?
+[[ $rc -eq 3 ]] || fail "a non-converged solution exited $rc, expected 3"
+grep -q "NOT converged" <<<"$out" || fail "the non-converged solution did not say so: $out"
+
 # Bad arguments: exit 2 and a message naming what is wrong.
 check_refused() {  # <expected text> <args...>
   local expected=$1
@@ -67,4 +82,5 @@ check_refused "unknown option --bogus" "$vehicle" --bogus
 check_refused "nonzero pressure" "$vehicle" --pressure 0
 check_refused "no vehicle file"
 check_refused "expected von-karman or co-rotational" "$vehicle" --kinematics elastica
+check_refused "ending in .inp" "$vehicle" --ccx-deck deck.txt
 echo "PASS"
