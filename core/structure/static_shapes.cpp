@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 #include <Eigen/Eigenvalues>
 
@@ -9,6 +11,19 @@
 #include "core/structure/shell_element.hpp"
 
 namespace orni::structure {
+
+Section sectionOf(const WingMesh& mesh, const Eigen::VectorXd& u, std::size_t strip) {
+  if (strip >= mesh.strip_nodes.size())
+    throw std::invalid_argument("sectionOf: strip " + std::to_string(strip) + " outside the mesh's " +
+                                std::to_string(mesh.strip_nodes.size()));
+  const StripSampleNodes& s = mesh.strip_nodes[strip];
+  const double lead = -u(globalDof(s.leading_edge, kW));
+  const double trail = -u(globalDof(s.trailing_edge, kW));
+  const double chord = (mesh.nodes_W_m[static_cast<std::size_t>(s.leading_edge)] -
+                        mesh.nodes_W_m[static_cast<std::size_t>(s.trailing_edge)])
+                           .norm();
+  return {lead, trail, -std::atan2(trail - lead, chord) * 180.0 / 3.14159265358979323846};
+}
 
 Eigen::VectorXd uniformLiftLoad(const WingMesh& mesh, double pressure_pa) {
   Eigen::VectorXd f = Eigen::VectorXd::Zero(kDofsPerNode * mesh.nodeCount());

@@ -34,6 +34,14 @@ namespace orni::structure {
 /// z_W points down), Pa: a third of each facet's force on each of its nodes.
 Eigen::VectorXd uniformLiftLoad(const WingMesh& mesh, double pressure_pa);
 
+/// A strip's section of a wing deflection u (6n): the upward (-z_W) deflections of the strip's
+/// leading- and trailing-edge sample nodes (m) and the section's nose-up pitch change (deg; the
+/// trailing edge rising relative to the leading edge pitches it nose-down).
+struct Section {
+  double lead_up_m, trail_up_m, pitch_deg;
+};
+Section sectionOf(const WingMesh& mesh, const Eigen::VectorXd& u, std::size_t strip);
+
 /// The out-of-plane part of a displacement field of the flat wing (w, theta_x, theta_y; u, v and
 /// theta_z zeroed).
 Eigen::VectorXd outOfPlanePart(const Eigen::VectorXd& displacement);

@@ -143,22 +143,6 @@ Args parseArgs(int argc, char** argv) {
   return a;
 }
 
-struct Section {
-  double lead_up_mm, trail_up_mm, pitch_deg;
-};
-
-// Upward deflections of a strip's edges and its nose-up pitch change (the trailing edge rising
-// relative to the leading edge pitches the section nose-down).
-Section sectionOf(const WingMesh& mesh, const Eigen::VectorXd& u, std::size_t strip) {
-  const StripSampleNodes& s = mesh.strip_nodes[strip];
-  const double lead = -u(globalDof(s.leading_edge, kW));
-  const double trail = -u(globalDof(s.trailing_edge, kW));
-  const double chord = (mesh.nodes_W_m[static_cast<std::size_t>(s.leading_edge)] -
-                        mesh.nodes_W_m[static_cast<std::size_t>(s.trailing_edge)])
-                           .norm();
-  return {1e3 * lead, 1e3 * trail, -std::atan2(trail - lead, chord) * 180.0 / kPi};
-}
-
 // The largest |grad w| over the skin facets (w normal to each facet's plane).
 double largestSlope(const VonKarmanTerms& terms, const Eigen::VectorXd& u) {
   double largest = 0.0;
@@ -251,16 +235,17 @@ int main(int argc, char** argv) {
                     "  facets taut / wrinkled / slack: %d / %d / %d; largest skin slope %.3f "
                     "(%.1f deg)\n",
                     kappa, cap, r.converged ? "converged" : ("NOT converged: " + r.message).c_str(),
-                    r.newton_iterations, m.lead_up_mm, m.trail_up_mm, m.pitch_deg, t.lead_up_mm,
-                    t.trail_up_mm, t.pitch_deg, counts[0], counts[1], counts[2], slope,
+                    r.newton_iterations, 1e3 * m.lead_up_m, 1e3 * m.trail_up_m, m.pitch_deg,
+                    1e3 * t.lead_up_m, 1e3 * t.trail_up_m, t.pitch_deg, counts[0], counts[1], counts[2], slope,
                     std::atan(slope) * 180.0 / kPi);
         std::fflush(stdout);
         if (csv) {
           char line[512];
           std::snprintf(line, sizeof line,
                         "%.6g,%.6g,%d,%d,%.6f,%.6f,%.4f,%.6f,%.6f,%.4f,%d,%d,%d,%.5f\n", kappa, cap,
-                        r.converged ? 1 : 0, r.newton_iterations, m.lead_up_mm, m.trail_up_mm,
-                        m.pitch_deg, t.lead_up_mm, t.trail_up_mm, t.pitch_deg, counts[0],
+                        r.converged ? 1 : 0, r.newton_iterations, 1e3 * m.lead_up_m,
+                        1e3 * m.trail_up_m, m.pitch_deg, 1e3 * t.lead_up_m, 1e3 * t.trail_up_m,
+                        t.pitch_deg, counts[0],
                         counts[1], counts[2], slope);
           csv << line << std::flush;
         }

@@ -17,7 +17,6 @@
 #include "core/structure/von_karman.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "fe_test_meshes.hpp"
-#include "wing_sections.hpp"
 #include "tests/support/magpie_vehicle.hpp"
 
 namespace orni::structure {
@@ -26,8 +25,6 @@ namespace {
 constexpr double kLiftPressure_Pa = 53.0;
 constexpr double kDeflectionTol = 0.05;   // acceptance: 5 %
 
-using fe_test::Section;
-using fe_test::sectionOf;
 
 // The literal EFW, its modal wing (24 modes, as the nonlinear vehicle files ask for), the full
 // nonlinear static solution and the reduced one under a load.

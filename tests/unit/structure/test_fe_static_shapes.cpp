@@ -14,7 +14,6 @@
 #include "core/structure/von_karman.hpp"
 #include "core/structure/wing_mesh.hpp"
 #include "fe_test_meshes.hpp"
-#include "wing_sections.hpp"
 #include "tests/support/magpie_vehicle.hpp"
 
 namespace orni::structure {
@@ -86,8 +85,6 @@ TEST(FeStaticShapes, OptionsAreChecked) {
   EXPECT_NE(why.find("nonlinear"), std::string::npos) << why;
 }
 
-using fe_test::Section;
-using fe_test::sectionOf;
 
 // The literal EFW (the honest magpie's wing, slack skin) under a uniform lift small enough that
 // the full solution is unique (the same with 10 or 40 load increments, test_fe_membrane_efw.cpp).
